@@ -1,0 +1,42 @@
+# kiln_add_module(NAME DIR DEPS...): one static library per source folder; every .cpp in DIR
+# (not recursing) that is not a *_test.cpp belongs to it.
+function(kiln_add_module name dir)
+    file(GLOB srcs CONFIGURE_DEPENDS "${dir}/*.cpp")
+    list(FILTER srcs EXCLUDE REGEX "_test\\.cpp$")
+    if(srcs)
+        add_library(${name} STATIC ${srcs})
+        target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR}/src)
+        target_link_libraries(${name} PUBLIC kiln_options ${ARGN})
+    else()
+        add_library(${name} INTERFACE)
+        target_include_directories(${name} INTERFACE ${PROJECT_SOURCE_DIR}/src)
+        target_link_libraries(${name} INTERFACE kiln_options ${ARGN})
+    endif()
+endfunction()
+
+# kiln_add_tests(NAME DIR DEPS...): one GoogleTest executable from DIR/*_test.cpp, registered
+# with ctest. KILN_SOURCE_DIR and KILN_SHARED_DIR (../shared beside the checkout) are defined.
+function(kiln_add_tests name dir)
+    file(GLOB srcs CONFIGURE_DEPENDS "${dir}/*_test.cpp")
+    if(NOT srcs)
+        return()
+    endif()
+    add_executable(${name} ${srcs})
+    target_link_libraries(${name} PRIVATE ${ARGN} GTest::gtest GTest::gtest_main)
+    target_compile_definitions(${name} PRIVATE
+        KILN_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+        KILN_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared"
+        KILN_BINARY_DIR="${PROJECT_BINARY_DIR}")
+    gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600)
+endfunction()
+
+# kiln_module_definitions(NAME DEFS...): private compile definitions of a module (public while
+# the module has no sources yet and is an INTERFACE library).
+function(kiln_module_definitions name)
+    get_target_property(type ${name} TYPE)
+    if(type STREQUAL "INTERFACE_LIBRARY")
+        target_compile_definitions(${name} INTERFACE ${ARGN})
+    else()
+        target_compile_definitions(${name} PRIVATE ${ARGN})
+    endif()
+endfunction()
