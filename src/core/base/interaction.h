@@ -60,7 +60,10 @@ struct SurfaceInteraction : Interaction {
     SurfaceInteraction(Point3f p, Point2f uv, Vector3f wo, Vector3f dpdu, Vector3f dpdv,
                        Normal3f dndu, Normal3f dndv, Float time, bool flipNormal)
         : Interaction(p, Normal3f(Normalize(Cross(dpdu, dpdv))), uv, wo, time),
-          dpdu(dpdu), dpdv(dpdv), dndu(dndu), dndv(dndv) {
+          dpdu(dpdu),
+          dpdv(dpdv),
+          dndu(dndu),
+          dndv(dndv) {
         if (flipNormal) n = -n;
         shading.n = n;
         shading.dpdu = dpdu, shading.dpdv = dpdv;

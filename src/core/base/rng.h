@@ -40,7 +40,7 @@ inline uint64_t Hash(Args... args) {
 inline uint64_t HashString(std::string_view s) { return HashBytes(s.data(), s.size()); }
 
 class RNG {
-public:
+  public:
     RNG() = default;
     RNG(uint64_t seqIndex, uint64_t offset) { SetSequence(seqIndex, offset); }
     explicit RNG(uint64_t seqIndex) { SetSequence(seqIndex, MixBits(seqIndex)); }
@@ -74,7 +74,7 @@ public:
     }
     void Advance(int64_t idelta);
 
-private:
+  private:
     uint64_t state = 0x853c49e6748fea9bULL, inc = 0xda3e39cb94b95bdbULL;
 };
 

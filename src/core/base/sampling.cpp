@@ -140,8 +140,7 @@ Float PiecewiseConstant2D::PDF(Point2f p) const {
 AliasTable::AliasTable(std::span<const Float> weights) : bins(weights.size()) {
     double sum = std::accumulate(weights.begin(), weights.end(), 0.0);
     size_t n = bins.size();
-    for (size_t i = 0; i < n; ++i)
-        bins[i].p = sum > 0 ? Float(weights[i] / sum) : Float(1.0 / n);
+    for (size_t i = 0; i < n; ++i) bins[i].p = sum > 0 ? Float(weights[i] / sum) : Float(1.0 / n);
     struct Outcome {
         double pHat;
         size_t index;

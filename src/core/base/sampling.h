@@ -54,7 +54,7 @@ inline Float BalanceHeuristic(int nf, Float fPdf, int ng, Float gPdf) {
 
 // Piecewise-constant density on [min, max] from non-negative function values.
 class PiecewiseConstant1D {
-public:
+  public:
     PiecewiseConstant1D() = default;
     PiecewiseConstant1D(std::span<const Float> f, Float min = 0, Float max = 1);
     // Returns x in [min, max); *pdf is the density at x, *offset the bucket index.
@@ -65,14 +65,14 @@ public:
     Float Min() const { return min; }
     Float Max() const { return max; }
 
-private:
+  private:
     std::vector<Float> func, cdf;
     Float min = 0, max = 1, funcInt = 0;
 };
 
 // Piecewise-constant density on a 2D domain (marginal in v, conditional in u).
 class PiecewiseConstant2D {
-public:
+  public:
     PiecewiseConstant2D() = default;
     // f has nv rows of nu values (row-major, v outer), domain [0,1]^2.
     PiecewiseConstant2D(std::span<const Float> f, int nu, int nv);
@@ -80,14 +80,14 @@ public:
     Float PDF(Point2f p) const;
     Float Integral() const { return marginal.Integral(); }
 
-private:
+  private:
     std::vector<PiecewiseConstant1D> conditional;
     PiecewiseConstant1D marginal;
 };
 
 // Walker/Vose alias table: O(1) sampling of a discrete distribution.
 class AliasTable {
-public:
+  public:
     AliasTable() = default;
     explicit AliasTable(std::span<const Float> weights);
     // Returns an index; *pmf its probability, *uRemapped a fresh uniform from the leftover bits.
@@ -95,7 +95,7 @@ public:
     Float PMF(int index) const { return bins[index].p; }
     size_t Size() const { return bins.size(); }
 
-private:
+  private:
     struct Bin {
         Float q = 0, p = 0;
         int alias = -1;

@@ -20,7 +20,7 @@ SquareMatrix4 operator*(const SquareMatrix4& a, const SquareMatrix4& b);
 std::optional<SquareMatrix4> Inverse(const SquareMatrix4& m);
 
 class Transform {
-public:
+  public:
     Transform() = default;
     explicit Transform(const SquareMatrix4& m);
     Transform(const SquareMatrix4& m, const SquareMatrix4& mInv) : m(m), mInv(mInv) {}
@@ -48,7 +48,7 @@ public:
         return Transform(t.m.Transposed(), t.mInv.Transposed());
     }
 
-private:
+  private:
     SquareMatrix4 m, mInv;
 };
 

@@ -30,7 +30,9 @@ inline constexpr Float OneMinusEpsilon = 0x1.fffffep-1f;
 
 // Scalar helpers
 template <typename T>
-constexpr T Sqr(T v) { return v * v; }
+constexpr T Sqr(T v) {
+    return v * v;
+}
 template <typename T, typename U, typename V>
 constexpr T Clamp(T val, U low, V high) {
     return val < low ? T(low) : (val > high ? T(high) : val);
@@ -48,12 +50,16 @@ inline Float SmoothStep(Float x, Float a, Float b) {
     return t * t * (3 - 2 * t);
 }
 template <typename T>
-inline bool IsNaN(T v) { return std::isnan(v); }
+inline bool IsNaN(T v) {
+    return std::isnan(v);
+}
 inline bool IsFinite(Float v) { return std::isfinite(v); }
 inline Float Sign(Float v) { return std::copysign(Float(1), v); }
 // Polynomial evaluation by Horner's rule: c0 + t (c1 + t (c2 + ...)).
 template <typename F, typename C>
-constexpr F EvaluatePolynomial(F t, C c) { return c; }
+constexpr F EvaluatePolynomial(F t, C c) {
+    return c;
+}
 template <typename F, typename C, typename... Args>
 constexpr F EvaluatePolynomial(F t, C c, Args... cRemaining) {
     return std::fma(t, EvaluatePolynomial(t, cRemaining...), c);
@@ -112,9 +118,13 @@ struct Tuple3 {
     bool HasNaN() const { return std::isnan(x) || std::isnan(y) || std::isnan(z); }
 };
 template <typename C, typename T>
-inline C operator*(T s, const Tuple3<C, T>& t) { return t * s; }
+inline C operator*(T s, const Tuple3<C, T>& t) {
+    return t * s;
+}
 template <typename C, typename T>
-inline C operator*(T s, const Tuple2<C, T>& t) { return t * s; }
+inline C operator*(T s, const Tuple2<C, T>& t) {
+    return t * s;
+}
 
 // 2D types
 struct Vector2f : Tuple2<Vector2f, Float> {
@@ -185,9 +195,13 @@ inline Vector3f::Vector3f(const Point3f& p) : Tuple3(p.x, p.y, p.z) {}
 
 // Geometric operations
 template <typename A, typename B>
-inline Float Dot(const A& a, const B& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline Float Dot(const A& a, const B& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 template <typename A, typename B>
-inline Float AbsDot(const A& a, const B& b) { return std::abs(Dot(a, b)); }
+inline Float AbsDot(const A& a, const B& b) {
+    return std::abs(Dot(a, b));
+}
 inline Vector3f Cross(const Vector3f& a, const Vector3f& b) {
     // Products in double avoid catastrophic cancellation (pbrt-v4 uses DifferenceOfProducts).
     double ax = a.x, ay = a.y, az = a.z, bx = b.x, by = b.y, bz = b.z;
@@ -196,17 +210,27 @@ inline Vector3f Cross(const Vector3f& a, const Vector3f& b) {
 inline Vector3f Cross(const Vector3f& a, const Normal3f& b) { return Cross(a, Vector3f(b)); }
 inline Vector3f Cross(const Normal3f& a, const Vector3f& b) { return Cross(Vector3f(a), b); }
 template <typename T>
-inline Float LengthSquared(const T& v) { return Dot(v, v); }
+inline Float LengthSquared(const T& v) {
+    return Dot(v, v);
+}
 template <typename T>
-inline Float Length(const T& v) { return std::sqrt(LengthSquared(v)); }
+inline Float Length(const T& v) {
+    return std::sqrt(LengthSquared(v));
+}
 template <typename T>
-inline T Normalize(const T& v) { return v / Length(v); }
+inline T Normalize(const T& v) {
+    return v / Length(v);
+}
 inline Float Distance(Point3f a, Point3f b) { return Length(a - b); }
 inline Float DistanceSquared(Point3f a, Point3f b) { return LengthSquared(a - b); }
 template <typename T>
-inline T Abs(const T& v) { return T(std::abs(v.x), std::abs(v.y), std::abs(v.z)); }
+inline T Abs(const T& v) {
+    return T(std::abs(v.x), std::abs(v.y), std::abs(v.z));
+}
 template <typename T>
-inline Float MaxComponentValue(const T& v) { return std::max({v.x, v.y, v.z}); }
+inline Float MaxComponentValue(const T& v) {
+    return std::max({v.x, v.y, v.z});
+}
 template <typename T>
 inline int MaxComponentIndex(const T& v) {
     return (v.x > v.y) ? ((v.x > v.z) ? 0 : 2) : ((v.y > v.z) ? 1 : 2);
@@ -220,7 +244,9 @@ inline T Max(const T& a, const T& b) {
     return T(std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z));
 }
 template <typename T>
-inline T Permute(const T& v, int i, int j, int k) { return T(v[i], v[j], v[k]); }
+inline T Permute(const T& v, int i, int j, int k) {
+    return T(v[i], v[j], v[k]);
+}
 inline Point3f Lerp(Float t, Point3f a, Point3f b) {
     return {Lerp(t, a.x, b.x), Lerp(t, a.y, b.y), Lerp(t, a.z, b.z)};
 }
