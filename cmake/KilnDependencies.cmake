@@ -1,9 +1,35 @@
 # Third-party libraries kiln builds on; all come from Debian 12 packages (see README.md).
+
+# Some Debian 12 CMake package configs name include directories that do not exist (OpenImageIO
+# lists /usr/include/opencv4 without OpenCV installed; OpenColorIO's config, installed directly
+# in /usr/share/cmake, computes "/include"). CMake refuses such targets, so drop those entries
+# and fall back to /usr/include.
+function(kiln_drop_missing_includes target)
+    foreach(prop INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
+        get_target_property(dirs ${target} ${prop})
+        if(NOT dirs)
+            continue()
+        endif()
+        set(kept "")
+        foreach(dir IN LISTS dirs)
+            if(EXISTS "${dir}" OR dir MATCHES "^\\$<")
+                list(APPEND kept "${dir}")
+            endif()
+        endforeach()
+        if(NOT kept AND prop STREQUAL "INTERFACE_INCLUDE_DIRECTORIES")
+            set(kept /usr/include)
+        endif()
+        set_target_properties(${target} PROPERTIES ${prop} "${kept}")
+    endforeach()
+endfunction()
+
 find_package(embree 3 REQUIRED)
 find_package(OpenImageIO REQUIRED)
+kiln_drop_missing_includes(OpenImageIO::OpenImageIO)
 find_package(OpenEXR REQUIRED)
 # Debian installs OpenColorIOConfig.cmake directly in /usr/share/cmake, off the default path.
 find_package(OpenColorIO REQUIRED HINTS /usr/share/cmake)
+kiln_drop_missing_includes(OpenColorIO::OpenColorIO)
 find_package(TBB REQUIRED)
 find_package(Threads REQUIRED)
 find_package(GTest)

@@ -17,7 +17,7 @@ inline constexpr int NSpectrumSamples = 4;
 inline constexpr Float Lambda_min = 360, Lambda_max = 830;
 
 class SampledSpectrum {
-public:
+  public:
     SampledSpectrum() { values.fill(0); }
     explicit SampledSpectrum(Float c) { values.fill(c); }
     explicit SampledSpectrum(const std::array<Float, NSpectrumSamples>& v) : values(v) {}
@@ -32,22 +32,22 @@ public:
     }
     bool IsZero() const { return !bool(*this); }
 
-#define KILN_SS_OP(op)                                                   \
-    SampledSpectrum& operator op##=(const SampledSpectrum & s) {          \
+#define KILN_SS_OP(op)                                                    \
+    SampledSpectrum& operator op##=(const SampledSpectrum& s) {           \
         for (int i = 0; i < NSpectrumSamples; ++i) values[i] op## = s[i]; \
-        return *this;                                                    \
-    }                                                                    \
-    SampledSpectrum operator op(const SampledSpectrum & s) const {       \
-        SampledSpectrum r = *this;                                       \
-        return r op## = s;                                               \
-    }                                                                    \
-    SampledSpectrum& operator op##=(Float a) {                           \
+        return *this;                                                     \
+    }                                                                     \
+    SampledSpectrum operator op(const SampledSpectrum& s) const {         \
+        SampledSpectrum r = *this;                                        \
+        return r op## = s;                                                \
+    }                                                                     \
+    SampledSpectrum& operator op##=(Float a) {                            \
         for (int i = 0; i < NSpectrumSamples; ++i) values[i] op## = a;    \
-        return *this;                                                    \
-    }                                                                    \
-    SampledSpectrum operator op(Float a) const {                         \
-        SampledSpectrum r = *this;                                       \
-        return r op## = a;                                               \
+        return *this;                                                     \
+    }                                                                     \
+    SampledSpectrum operator op(Float a) const {                          \
+        SampledSpectrum r = *this;                                        \
+        return r op## = a;                                                \
     }
     KILN_SS_OP(+)
     KILN_SS_OP(-)
@@ -91,7 +91,7 @@ public:
 
     const std::array<Float, NSpectrumSamples>& Values() const { return values; }
 
-private:
+  private:
     std::array<Float, NSpectrumSamples> values;
 };
 
@@ -130,7 +130,7 @@ inline SampledSpectrum Lerp(Float t, const SampledSpectrum& a, const SampledSpec
 
 // Wavelengths carried by one path, with the density each was sampled with (per nm).
 class SampledWavelengths {
-public:
+  public:
     // Uniform over [lambdaMin, lambdaMax], stratified: one u gives all samples.
     static SampledWavelengths SampleUniform(Float u, Float lambdaMin = Lambda_min,
                                             Float lambdaMax = Lambda_max) {
@@ -181,7 +181,7 @@ public:
         return true;
     }
 
-private:
+  private:
     std::array<Float, NSpectrumSamples> lambda{}, pdf{};
 };
 

@@ -1,0 +1,24 @@
+// Raw tables behind the named spectra (internal to kiln_spectral and its table generator).
+//
+// Each table interleaves wavelength (nm) and value: lambda0, v0, lambda1, v1, ... with
+// strictly increasing wavelengths. Values are dimensionless (n, k) or relative SPDs.
+#pragma once
+
+#include <span>
+
+namespace kiln {
+
+struct NamedSpectrumTable {
+    const char* name;
+    std::span<const float> interleaved;
+    // Illuminants: scaled so that their luminance equals that of a spectrum of constant 1
+    // (pbrt-v4's PiecewiseLinearSpectrum::FromInterleaved with normalize = true).
+    bool normalize;
+};
+
+// pbrt-v4's named spectra (named_spectra_pbrt_data.cpp).
+std::span<const NamedSpectrumTable> PbrtNamedSpectrumTables();
+// kiln's own named spectra of measured optical constants (named_spectra_measured_data.cpp).
+std::span<const NamedSpectrumTable> MeasuredNamedSpectrumTables();
+
+}  // namespace kiln

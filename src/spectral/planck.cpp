@@ -1,0 +1,93 @@
+// Planck's law evaluated without overflow, underflow to NaN, or cancellation.
+#include "spectral/planck.h"
+
+#include <cfloat>
+#include <cmath>
+#include <limits>
+
+namespace kiln {
+
+namespace {
+
+// c1L per nm of wavelength: 2 h c^2 * 1e-9 (the 1e-9 converts "per m" to "per nm").
+constexpr double kC1LPerNm = kFirstRadiationConstantL * 1e-9;
+
+double Pow5(double x) {
+    double x2 = x * x;
+    return x2 * x2 * x;
+}
+
+// log(e^x - 1) for x >= 0, accurate for tiny and huge x; -inf at x = 0.
+double LogExpm1(double x) {
+    if (x > 30) return x + std::log1p(-std::exp(-x));
+    return std::log(std::expm1(x));
+}
+
+// exp(v) clamped to the largest finite double; 0 for v = -inf.
+double SafeExp(double v) {
+    if (v >= std::log(DBL_MAX)) return DBL_MAX;
+    return std::exp(v);
+}
+
+}  // namespace
+
+double planck_radiance(double lambda_nm, double T) {
+    if (!(T > 0) || !(lambda_nm > 0) || std::isinf(lambda_nm)) return 0;
+    if (std::isinf(T)) return DBL_MAX;
+    const double lambda = lambda_nm * 1e-9;  // m
+
+    // Direct form where every intermediate is a normal finite number
+    const double lT = lambda * T;
+    if (lT > 0 && std::isfinite(lT)) {
+        const double x = kSecondRadiationConstant / lT;
+        const double l5 = Pow5(lambda);
+        if (x < 700 && l5 > DBL_MIN && std::isfinite(l5)) {
+            const double em1 = std::expm1(x);
+            if (em1 > DBL_MIN) {
+                const double B = kC1LPerNm / (l5 * em1);
+                if (std::isfinite(B)) return B;
+            }
+        }
+    }
+
+    // Logarithmic form for the extremes (Wien tail underflowing to 0, huge lambda T)
+    const double logLambda = std::log(lambda), logT = std::log(T);
+    const double logX = std::log(kSecondRadiationConstant) - logLambda - logT;
+    const double x = std::exp(logX);
+    const double logEm1 = (x < 1e-8) ? logX + std::log1p(0.5 * x) : LogExpm1(x);
+    return SafeExp(std::log(kC1LPerNm) - 5 * logLambda - logEm1);
+}
+
+SampledSpectrum planck_radiance(const SampledWavelengths& lambda, double T) {
+    SampledSpectrum s;
+    for (int i = 0; i < NSpectrumSamples; ++i) {
+        double B = planck_radiance(lambda[i], T);
+        s[i] = Float(std::min(B, double(std::numeric_limits<Float>::max())));
+    }
+    return s;
+}
+
+double planck_radiance_normalized(double lambda_nm, double T) {
+    if (!(T > 0) || !(lambda_nm > 0) || std::isinf(lambda_nm) || std::isinf(T)) return 0;
+    // B(l) / B(lp) = (lp / l)^5 (e^x5 - 1) / (e^x - 1), x = x5 lp / l, lp = b / T.
+    const double logRatio = std::log(kWienDisplacementConstant) - std::log(T) -
+                            std::log(lambda_nm * 1e-9);  // log(lp / l)
+    const double x = kWienX5 * std::exp(logRatio);
+    const double logEm1 =
+        (x < 1e-8) ? std::log(kWienX5) + logRatio + std::log1p(0.5 * x) : LogExpm1(x);
+    const double v = SafeExp(5 * logRatio + LogExpm1(kWienX5) - logEm1);
+    return std::min(v, 1.0);
+}
+
+double planck_peak_wavelength_nm(double T) {
+    if (!(T > 0)) return std::numeric_limits<double>::infinity();
+    return kWienDisplacementConstant / T * 1e9;
+}
+
+double stefan_boltzmann_radiance(double T) {
+    if (!(T > 0)) return 0;
+    const double T2 = T * T;
+    return std::min(kStefanBoltzmannConstant * T2 * T2 / 3.14159265358979323846, DBL_MAX);
+}
+
+}  // namespace kiln

@@ -1,0 +1,47 @@
+// Planck's law for a blackbody, with the exact SI constants (CODATA 2018).
+//
+// Radiance per unit wavelength is in W m^-2 sr^-1 nm^-1, wavelengths in nm, temperatures in
+// kelvin. Every function is finite and non-negative for any input (never NaN or Inf): T <= 0
+// or NaN gives 0, and so does a wavelength that is not positive.
+#pragma once
+
+#include "spectral/sampled_spectrum.h"
+
+namespace kiln {
+
+// CODATA 2018 (Tiesinga et al., Rev. Mod. Phys. 93, 025010 (2021)); exact since the 2019 SI.
+inline constexpr double kPlanckConstant = 6.62607015e-34;   // h, J s
+inline constexpr double kSpeedOfLight = 299792458.0;        // c, m s^-1
+inline constexpr double kBoltzmannConstant = 1.380649e-23;  // k_B, J K^-1
+// Derived (exact): second radiation constant c2 = h c / k_B, m K; first radiation constant
+// for spectral radiance c1L = 2 h c^2, W m^2 sr^-1; Stefan-Boltzmann sigma, W m^-2 K^-4.
+inline constexpr double kSecondRadiationConstant =
+    kPlanckConstant * kSpeedOfLight / kBoltzmannConstant;
+inline constexpr double kFirstRadiationConstantL =
+    2 * kPlanckConstant * kSpeedOfLight * kSpeedOfLight;
+inline constexpr double kStefanBoltzmannConstant = 5.670374419184429e-8;
+// Wien's displacement constant b = c2 / x5, m K, where x5 solves x = 5 (1 - e^-x).
+inline constexpr double kWienX5 = 4.9651142317442763;
+inline constexpr double kWienDisplacementConstant = 2.897771955185173e-3;
+
+// Spectral radiance of a blackbody at lambda_nm (nm) and T_kelvin (K), W m^-2 sr^-1 nm^-1.
+// Evaluated with expm1 directly where that is exact, in logarithms where the direct form would
+// overflow or underflow, so it keeps full double precision over 1 nm - 1 mm and any T >= 0.
+double planck_radiance(double lambda_nm, double T_kelvin);
+
+// The same at each of the path's wavelengths, W m^-2 sr^-1 nm^-1 (clamped to the largest
+// finite Float).
+SampledSpectrum planck_radiance(const SampledWavelengths& lambda, double T_kelvin);
+
+// Radiance relative to its peak over wavelength: B(lambda, T) / B(lambda_peak, T), in [0, 1]
+// (dimensionless). pbrt-v4's BlackbodySpectrum; computed as a ratio, so it is exact for tiny
+// and huge T alike.
+double planck_radiance_normalized(double lambda_nm, double T_kelvin);
+
+// Wavelength of peak spectral radiance per unit wavelength (Wien), nm: b / T. +Inf for T <= 0.
+double planck_peak_wavelength_nm(double T_kelvin);
+
+// Radiance integrated over all wavelengths, sigma T^4 / pi, W m^-2 sr^-1 (exitance / pi).
+double stefan_boltzmann_radiance(double T_kelvin);
+
+}  // namespace kiln
