@@ -1,0 +1,226 @@
+// RGBFilm: creation from scene parameters, sample accumulation and output.
+#include "core/film/film.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/parser/parameter_dictionary.h"
+
+namespace kiln {
+
+namespace {
+
+ColorMatrix MulM(const ColorMatrix& a, const ColorMatrix& b) {
+    ColorMatrix r{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            for (int k = 0; k < 3; ++k) r[i][j] += a[i][k] * b[k][j];
+    return r;
+}
+
+}  // namespace
+
+// RGBFilm Creation
+RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& params,
+                         Float exposureTime, const Filter& filter, const RGBColorSpace* colorSpace,
+                         const FileLoc& loc, ObjectArena& arena, Diagnostics& diag) {
+    if (!colorSpace) colorSpace = &RGBColorSpace::sRGB();
+    Options o;
+    if (type != "rgb" && type != "gbuffer")
+        diag.Warn(loc, "film \"" + type + "\" is not supported; using \"rgb\"");
+    o.filename = params.GetOneString("filename", "pbrt.exr");
+    o.fullResolution =
+        Point2i(params.GetOneInt("xresolution", 1280), params.GetOneInt("yresolution", 720));
+    if (o.fullResolution.x <= 0 || o.fullResolution.y <= 0)
+        throw SceneError(params.Has("xresolution") ? params.Loc("xresolution") : loc,
+                         "film resolution must be positive", "xresolution");
+    Point2i full = o.fullResolution;
+    Bounds2i bounds{{0, 0}, full};
+    auto clampToFull = [&](Bounds2i b, const FileLoc& at) {
+        Bounds2i c{{std::max(b.pMin.x, 0), std::max(b.pMin.y, 0)},
+                   {std::min(b.pMax.x, full.x), std::min(b.pMax.y, full.y)}};
+        if (c.pMin != b.pMin || c.pMax != b.pMax)
+            diag.Warn(at, "Supplied pixel bounds extend beyond image resolution. Clamping.");
+        return c;
+    };
+
+    // Pixel bounds: "pixelbounds", then "cropwindow" (which wins, as in pbrt-v4).
+    std::vector<int> pb = params.GetIntArray("pixelbounds");
+    if (!pb.empty()) {
+        if (pb.size() != 4)
+            throw SceneError(
+                params.Loc("pixelbounds"),
+                std::to_string(pb.size()) + " values supplied for \"pixelbounds\". Expected 4.",
+                "pixelbounds");
+        bounds = clampToFull(Bounds2i{{pb[0], pb[2]}, {pb[1], pb[3]}}, params.Loc("pixelbounds"));
+    }
+    std::vector<Float> cr = params.GetFloatArray("cropwindow");
+    if (!cr.empty()) {
+        FileLoc at = params.Loc("cropwindow");
+        if (cr.size() != 4)
+            throw SceneError(
+                at, std::to_string(cr.size()) + " values supplied for \"cropwindow\". Expected 4.",
+                "cropwindow");
+        if (!pb.empty())
+            diag.Warn(at,
+                      "Both pixel bounds and crop window were specified. Using the crop "
+                      "window.");
+        Float x0 = std::min(cr[0], cr[1]), x1 = std::max(cr[0], cr[1]);
+        Float y0 = std::min(cr[2], cr[3]), y1 = std::max(cr[2], cr[3]);
+        if (x0 < 0 || y0 < 0 || x1 > 1 || y1 > 1) {
+            diag.Warn(at,
+                      "Film crop window is not in [0,1] range; did you mean to use "
+                      "\"pixelbounds\"? Clamping to valid range.");
+            x0 = Clamp(x0, 0, 1), x1 = Clamp(x1, 0, 1), y0 = Clamp(y0, 0, 1), y1 = Clamp(y1, 0, 1);
+        }
+        bounds = Bounds2i{{int(std::ceil(full.x * x0)), int(std::ceil(full.y * y0))},
+                          {int(std::ceil(full.x * x1)), int(std::ceil(full.y * y1))}};
+    }
+    if (bounds.IsEmpty())
+        throw SceneError(!cr.empty()   ? params.Loc("cropwindow")
+                         : !pb.empty() ? params.Loc("pixelbounds")
+                                       : loc,
+                         "Degenerate pixel bounds provided to film",
+                         !cr.empty() ? "cropwindow" : "pixelbounds");
+    o.pixelBounds = bounds;
+
+    o.savefp16 = params.GetOneBool("savefp16", true);
+    o.maxComponentValue = params.GetOneFloat("maxcomponentvalue", Infinity);
+    o.diagonal = params.GetOneFloat("diagonal", 35) * 0.001f;
+    o.exposureEV = params.GetOneFloat("exposure", 0);
+    o.view = params.GetOneString("view", "Standard");
+    if (o.view != "Standard" && o.view != "Filmic" && o.view != "ACES" && o.view != "Raw")
+        throw SceneError(params.Loc("view"),
+                         "unknown view \"" + o.view +
+                             "\" (expected \"Standard\", \"Filmic\", \"ACES\" or \"Raw\")",
+                         o.view);
+    o.writeAOVs = params.GetOneBool("writeaovs", type == "gbuffer");
+    PixelSensor sensor = PixelSensor::Create(params, colorSpace, exposureTime, loc, diag);
+    return arena.New<RGBFilm>(o, sensor, filter, colorSpace);
+}
+
+// RGBFilm Method Definitions
+RGBFilm::RGBFilm(const Options& options, const PixelSensor& sensor, const Filter& filter,
+                 const RGBColorSpace* cs)
+    : opts(options), sensor(sensor), filter(filter), colorSpace(cs ? cs : &RGBColorSpace::sRGB()) {
+    outputRGBFromSensorRGB = MulM(colorSpace->RGBFromXYZ(), sensor.XYZFromSensorRGB);
+    size_t n = size_t(std::max(0, opts.pixelBounds.Area()));
+    pixels.resize(n);
+    if (opts.writeAOVs) aovs.resize(n);
+}
+
+Bounds2f RGBFilm::SampleBounds() const {
+    Vector2f r = filter.Radius();
+    const Bounds2i& b = opts.pixelBounds;
+    return Bounds2f{Point2f(b.pMin.x - r.x + 0.5f, b.pMin.y - r.y + 0.5f),
+                    Point2f(b.pMax.x + r.x - 0.5f, b.pMax.y + r.y - 0.5f)};
+}
+
+size_t RGBFilm::PixelIndex(Point2i p) const {
+    const Bounds2i& b = opts.pixelBounds;
+    return size_t(p.y - b.pMin.y) * size_t(b.pMax.x - b.pMin.x) + size_t(p.x - b.pMin.x);
+}
+
+void RGBFilm::AddSample(Point2i pPixel, const SampledSpectrum& L, const SampledWavelengths& lambda,
+                        const VisibleSurface* visibleSurface, Float weight) {
+    // Reject NaN/Inf radiance (and weights): count them, remember the first pixel.
+    bool finite = std::isfinite(weight);
+    for (int i = 0; i < NSpectrumSamples; ++i) finite = finite && std::isfinite(L[i]);
+    size_t idx = PixelIndex(pPixel);
+    if (!finite) {
+        nonFiniteCount.fetch_add(1, std::memory_order_relaxed);
+        int64_t expected = -1;
+        firstNonFinite.compare_exchange_strong(expected, int64_t(idx));
+        return;
+    }
+    // Sensor response, clamped to maxComponentValue preserving ratios (pbrt-v4).
+    RGB rgb = sensor.ToSensorRGB(L, lambda);
+    Float m = std::max({rgb.r, rgb.g, rgb.b});
+    if (m > opts.maxComponentValue) rgb = rgb * (opts.maxComponentValue / m);
+    Pixel& px = pixels[idx];
+    for (int c = 0; c < 3; ++c) px.rgbSum[c] += double(weight) * rgb[c];
+    px.weightSum += weight;
+
+    if (!aovs.empty() && visibleSurface && visibleSurface->set) {
+        // Albedo as the colour of the reflectance under the colour space's illuminant (an
+        // albedo of 1 gives RGB (1, 1, 1)).
+        SampledSpectrum lit = visibleSurface->albedo * colorSpace->Illuminant().Sample(lambda);
+        RGB a = colorSpace->ToRGB(SpectrumToXYZ(lit, lambda));
+        AOVPixel& ap = aovs[idx];
+        for (int c = 0; c < 3; ++c) {
+            ap.albedo[c] += double(weight) * a[c];
+            ap.n[c] += double(weight) * visibleSurface->ns[c];
+        }
+        ap.depth += double(weight) * visibleSurface->depth;
+        ap.weightSum += weight;
+    }
+}
+
+RGB RGBFilm::GetPixelRGB(Point2i p) const {
+    const Pixel& px = pixels[PixelIndex(p)];
+    if (px.weightSum == 0) return RGB(0, 0, 0);
+    RGB rgb(Float(px.rgbSum[0] / px.weightSum), Float(px.rgbSum[1] / px.weightSum),
+            Float(px.rgbSum[2] / px.weightSum));
+    return Mul(outputRGBFromSensorRGB, rgb) * std::exp2(opts.exposureEV);
+}
+
+std::optional<Point2i> RGBFilm::FirstNonFinitePixel() const {
+    int64_t i = firstNonFinite.load();
+    if (i < 0) return std::nullopt;
+    int w = opts.pixelBounds.pMax.x - opts.pixelBounds.pMin.x;
+    return Point2i(opts.pixelBounds.pMin.x + int(i % w), opts.pixelBounds.pMin.y + int(i / w));
+}
+
+Image RGBFilm::GetImage(ImageMetadata* metadata) const {
+    const Bounds2i& b = opts.pixelBounds;
+    Point2i res(b.pMax.x - b.pMin.x, b.pMax.y - b.pMin.y);
+    std::vector<std::string> names = {"R", "G", "B"};
+    if (!aovs.empty())
+        names.insert(names.end(), {"albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z", "Z"});
+    Image image(PixelFormat::Float, res, names);
+    for (int y = 0; y < res.y; ++y)
+        for (int x = 0; x < res.x; ++x) {
+            Point2i p(x + b.pMin.x, y + b.pMin.y);
+            RGB rgb = GetPixelRGB(p);
+            for (int c = 0; c < 3; ++c) image.SetChannel({x, y}, c, rgb[c]);
+            if (aovs.empty()) continue;
+            const AOVPixel& ap = aovs[PixelIndex(p)];
+            double w = ap.weightSum != 0 ? 1 / ap.weightSum : 0;
+            for (int c = 0; c < 3; ++c) {
+                image.SetChannel({x, y}, 3 + c, Float(ap.albedo[c] * w));
+                image.SetChannel({x, y}, 6 + c, Float(ap.n[c] * w));
+            }
+            image.SetChannel({x, y}, 9, Float(ap.depth * w));
+        }
+    if (metadata) {
+        metadata->pixelBounds = b;
+        metadata->fullResolution = opts.fullResolution;
+        metadata->colorSpace = colorSpace;
+    }
+    return image;
+}
+
+void RGBFilm::WriteImage(const std::string& filename, ImageMetadata metadata,
+                         const std::string& viewOverride) const {
+    Image image = GetImage(&metadata);
+    std::string ext = FileExtension(filename);
+    if (ext == "exr") {
+        if (opts.savefp16) image = image.ConvertToFormat(PixelFormat::Half);
+        image.Write(filename, metadata);
+    } else if (ext == "pfm" || ext == "hdr") {
+        image.SelectChannels({"R", "G", "B"}).Write(filename, metadata);
+    } else {
+        DisplaySettings settings;
+        settings.view = viewOverride.empty() ? opts.view : viewOverride;
+        ToDisplayImage(image, *colorSpace, settings).Write(filename, metadata);
+    }
+}
+
+void RGBFilm::Clear() {
+    std::fill(pixels.begin(), pixels.end(), Pixel());
+    std::fill(aovs.begin(), aovs.end(), AOVPixel());
+    nonFiniteCount = 0;
+    firstNonFinite = -1;
+}
+
+}  // namespace kiln

@@ -1,0 +1,162 @@
+// The film: pixel sensor, accumulation of filtered radiance samples into RGB pixels, auxiliary
+// (AOV) layers and image output (pbrt-v4's PixelSensor and RGBFilm).
+//
+// Radiometric convention (pbrt-v4): with the default sensor ("cie1931", iso 100, exposure time
+// 1, whitebalance 0) and exposure 0 EV, an output pixel's luminance Y equals
+//   integral(L(l) ybar(l) dl) / integral(ybar(l) dl),
+// L the spectral radiance reaching the pixel in W m^-2 sr^-1 nm^-1; so a constant L = 1 gives
+// Y = 1, and the colour space's illuminant spectrum (normalised to Y = 1) gives RGB (1, 1, 1).
+// Pixel RGB values are linear in the film's output colour space.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/base/object_arena.h"
+#include "core/base/vecmath.h"
+#include "core/film/filter.h"
+#include "core/film/visible_surface.h"
+#include "core/image/display.h"
+#include "core/image/image.h"
+#include "core/parser/diagnostics.h"
+#include "core/parser/file_loc.h"
+#include "spectral/color.h"
+#include "spectral/sampled_spectrum.h"
+
+namespace kiln {
+
+class ParameterDictionary;
+
+// PixelSensor Definition
+// pbrt-v4's "cie1931" sensor: the sensor responds with the CIE 1931 matching functions, so its
+// "RGB" is XYZ scaled by imagingRatio = exposureTime (s) * iso / 100. With whitebalance T > 0
+// (K) a von Kries (Bradford) adaptation maps the CIE daylight illuminant of temperature T to
+// the output colour space's white. Other pbrt-v4 sensors (measured camera curves) are not
+// available in kiln: Create warns and uses cie1931.
+class PixelSensor {
+  public:
+    PixelSensor() = default;
+    // whiteBalanceTemp: K, 0 = no white balance.
+    PixelSensor(const RGBColorSpace* outputColorSpace, Float whiteBalanceTemp, Float imagingRatio);
+    static PixelSensor Create(const ParameterDictionary& params, const RGBColorSpace* colorSpace,
+                              Float exposureTime, const FileLoc& loc, Diagnostics& diag);
+
+    // Sensor response to the path's radiance samples (Monte Carlo estimate over lambda).
+    RGB ToSensorRGB(const SampledSpectrum& L, const SampledWavelengths& lambda) const;
+
+    ColorMatrix XYZFromSensorRGB;  // identity unless white balancing
+    Float imagingRatio = 1;
+};
+
+// Chromaticity (CIE 1931 xy) of CIE daylight at correlated colour temperature T in K,
+// 4000 K <= T <= 25000 K (CIE 015:2018, eq. 4.1-4.3; T is clamped to that range).
+Point2f DaylightChromaticity(Float T);
+// Bradford von Kries chromatic adaptation matrix (XYZ -> XYZ) from white srcW to white dstW.
+ColorMatrix WhiteBalance(Point2f srcW, Point2f dstW);
+
+// RGBFilm Definition
+class RGBFilm {
+  public:
+    // pbrt-v4 RGBFilm parameters: "integer xresolution" (1280), "yresolution" (720),
+    // "float cropwindow" [x0 x1 y0 y1] (NDC; pixel bounds = ceil(NDC * resolution)),
+    // "integer pixelbounds" [x0 x1 y0 y1], "string filename" ("pbrt.exr"), "bool savefp16"
+    // (true), "float iso" (100), "float whitebalance" (0 = none, K), "string sensor"
+    // ("cie1931"), "float maxcomponentvalue" (infinity), "float diagonal" (35 mm).
+    // kiln additions: "float exposure" (EV stops, default 0: pixel values times 2^exposure),
+    // "string view" ("Standard" | "Filmic" | "ACES" | "Raw", for display formats), "bool writeaovs"
+    // (false; film type "gbuffer" sets it: the EXR gains albedo.{R,G,B}, N.{X,Y,Z} and Z layers).
+    // type: "rgb" | "gbuffer"; others warn and use "rgb". exposureTime: camera shutter
+    // interval, s. colorSpace: output colour space (nullptr: sRGB). Throws SceneError.
+    static RGBFilm* Create(const std::string& type, const ParameterDictionary& params,
+                           Float exposureTime, const Filter& filter,
+                           const RGBColorSpace* colorSpace, const FileLoc& loc, ObjectArena& arena,
+                           Diagnostics& diag);
+
+    struct Options {
+        Point2i fullResolution{1280, 720};
+        Bounds2i pixelBounds{{0, 0}, {1280, 720}};
+        std::string filename = "pbrt.exr";
+        bool savefp16 = true;
+        Float maxComponentValue = Infinity;
+        Float diagonal = 0.035f;  // m
+        Float exposureEV = 0;
+        std::string view = "Standard";
+        bool writeAOVs = false;
+    };
+    RGBFilm(const Options& options, const PixelSensor& sensor, const Filter& filter,
+            const RGBColorSpace* colorSpace);
+
+    Point2i FullResolution() const { return opts.fullResolution; }
+    Bounds2i PixelBounds() const { return opts.pixelBounds; }
+    // Raster-space area over which samples contribute (pixel bounds grown by the filter
+    // radius minus half a pixel, pbrt-v4).
+    Bounds2f SampleBounds() const;
+    const std::string& Filename() const { return opts.filename; }
+    const Filter& GetFilter() const { return filter; }
+    const RGBColorSpace* ColorSpace() const { return colorSpace; }
+    // Length of the film diagonal, m.
+    Float Diagonal() const { return opts.diagonal; }
+    const PixelSensor& Sensor() const { return sensor; }
+    const Options& GetOptions() const { return opts; }
+
+    SampledWavelengths SampleWavelengths(Float u) const {
+        return SampledWavelengths::SampleVisible(u);
+    }
+
+    // Adds a radiance sample L (W m^-2 sr^-1 nm^-1 at lambda) to pixel pPixel (inside the
+    // pixel bounds) with filter weight `weight` (f / pdf of the importance-sampled filter).
+    // The sensor RGB is scaled down to maxComponentValue if brighter. Non-finite L (NaN/Inf)
+    // is counted and dropped. visibleSurface (may be null) feeds the AOV layers.
+    // Thread-safe as long as one pixel is only written by one thread at a time (tiles).
+    void AddSample(Point2i pPixel, const SampledSpectrum& L, const SampledWavelengths& lambda,
+                   const VisibleSurface* visibleSurface, Float weight);
+
+    // Pixel value in the output colour space with exposure applied (black if no weight).
+    RGB GetPixelRGB(Point2i p) const;
+
+    int64_t NonFiniteSampleCount() const { return nonFiniteCount.load(); }
+    std::optional<Point2i> FirstNonFinitePixel() const;
+
+    // Linear image of the pixel bounds: channels R, G, B (+ albedo.R/G/B, N.X/Y/Z, Z with
+    // AOVs), PixelFormat::Float. Fills *metadata (if not null) with pixel bounds, full
+    // resolution and colour space.
+    Image GetImage(ImageMetadata* metadata) const;
+    // By extension: .exr (linear; half when savefp16, with the AOV layers), .pfm/.hdr (linear
+    // float), any other OIIO format through ToDisplayImage with the "view" parameter (or
+    // viewOverride if not empty). Atomic (see Image::Write). Throws std::runtime_error.
+    void WriteImage(const std::string& filename, ImageMetadata metadata,
+                    const std::string& viewOverride = "") const;
+
+    // Resets all pixels to black and the non-finite counters to zero.
+    void Clear();
+
+  private:
+    // RGBFilm Private Members
+    struct Pixel {
+        double rgbSum[3] = {0, 0, 0};  // sensor RGB, weighted
+        double weightSum = 0;
+    };
+    struct AOVPixel {
+        double albedo[3] = {0, 0, 0};  // output-colour-space RGB of the albedo, weighted
+        double n[3] = {0, 0, 0};       // shading normal, weighted
+        double depth = 0;              // weighted
+        double weightSum = 0;          // of samples with a visible surface
+    };
+    size_t PixelIndex(Point2i p) const;
+
+    Options opts;
+    PixelSensor sensor;
+    Filter filter;
+    const RGBColorSpace* colorSpace;
+    ColorMatrix outputRGBFromSensorRGB;
+    std::vector<Pixel> pixels;
+    std::vector<AOVPixel> aovs;  // empty unless writeAOVs
+    std::atomic<int64_t> nonFiniteCount{0};
+    std::atomic<int64_t> firstNonFinite{-1};  // pixel index
+};
+
+}  // namespace kiln

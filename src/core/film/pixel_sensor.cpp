@@ -1,0 +1,74 @@
+// PixelSensor (pbrt-v4's "cie1931" sensor), daylight chromaticity and white balance.
+#include <algorithm>
+#include <cmath>
+
+#include "core/film/film.h"
+#include "core/parser/parameter_dictionary.h"
+
+namespace kiln {
+
+namespace {
+
+ColorMatrix Identity3() { return ColorMatrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}; }
+
+ColorMatrix MulM(const ColorMatrix& a, const ColorMatrix& b) {
+    ColorMatrix r{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            for (int k = 0; k < 3; ++k) r[i][j] += a[i][k] * b[k][j];
+    return r;
+}
+
+}  // namespace
+
+// CIE 015:2018, section 4.1: the CIE daylight locus.
+Point2f DaylightChromaticity(Float T) {
+    double t = Clamp(double(T), 4000.0, 25000.0);
+    double x = t <= 7000 ? -4.6070e9 / (t * t * t) + 2.9678e6 / (t * t) + 0.09911e3 / t + 0.244063
+                         : -2.0064e9 / (t * t * t) + 1.9018e6 / (t * t) + 0.24748e3 / t + 0.237040;
+    double y = -3.000 * x * x + 2.870 * x - 0.275;
+    return Point2f(Float(x), Float(y));
+}
+
+// Bradford cone response matrix (Lam 1985, as used by pbrt-v4's WhiteBalance) and its inverse.
+ColorMatrix WhiteBalance(Point2f srcW, Point2f dstW) {
+    const ColorMatrix lmsFromXYZ{
+        {{0.8951f, 0.2664f, -0.1614f}, {-0.7502f, 1.7135f, 0.0367f}, {0.0389f, -0.0685f, 1.0296f}}};
+    const ColorMatrix xyzFromLMS{{{0.986993f, -0.147054f, 0.159963f},
+                                  {0.432305f, 0.51836f, 0.0492912f},
+                                  {-0.00852866f, 0.0400428f, 0.968487f}}};
+    XYZ src = Mul(lmsFromXYZ, XYZ::FromxyY(srcW)), dst = Mul(lmsFromXYZ, XYZ::FromxyY(dstW));
+    ColorMatrix d{{{dst.X / src.X, 0, 0}, {0, dst.Y / src.Y, 0}, {0, 0, dst.Z / src.Z}}};
+    return MulM(xyzFromLMS, MulM(d, lmsFromXYZ));
+}
+
+// PixelSensor Method Definitions
+PixelSensor::PixelSensor(const RGBColorSpace* outputColorSpace, Float whiteBalanceTemp,
+                         Float imagingRatio)
+    : XYZFromSensorRGB(Identity3()), imagingRatio(imagingRatio) {
+    if (whiteBalanceTemp > 0) {
+        const RGBColorSpace* cs = outputColorSpace ? outputColorSpace : &RGBColorSpace::sRGB();
+        XYZFromSensorRGB = WhiteBalance(DaylightChromaticity(whiteBalanceTemp), cs->w);
+    }
+}
+
+PixelSensor PixelSensor::Create(const ParameterDictionary& params, const RGBColorSpace* colorSpace,
+                                Float exposureTime, const FileLoc& loc, Diagnostics& diag) {
+    Float iso = params.GetOneFloat("iso", 100);
+    Float whiteBalance = params.GetOneFloat("whitebalance", 0);
+    std::string sensorName = params.GetOneString("sensor", "cie1931");
+    if (sensorName != "cie1931")
+        diag.Warn(loc, "sensor \"" + sensorName +
+                           "\" is not available in kiln (no measured camera curves); using "
+                           "\"cie1931\"");
+    if (whiteBalance < 0) throw SceneError(loc, "whitebalance must be >= 0 K", "whitebalance");
+    Float imagingRatio = exposureTime * iso / 100;
+    return PixelSensor(colorSpace, whiteBalance, imagingRatio);
+}
+
+RGB PixelSensor::ToSensorRGB(const SampledSpectrum& L, const SampledWavelengths& lambda) const {
+    XYZ xyz = SpectrumToXYZ(L, lambda) * imagingRatio;
+    return RGB(xyz.X, xyz.Y, xyz.Z);
+}
+
+}  // namespace kiln
