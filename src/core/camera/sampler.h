@@ -1,0 +1,76 @@
+// Sampler: the closed set of sample generators, held by value (each thread owns a copy), and
+// pbrt-v4's GetCameraSample.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <variant>
+
+#include "core/camera/camera_sample.h"
+#include "core/camera/samplers.h"
+#include "core/film/filter.h"
+#include "core/parser/diagnostics.h"
+#include "core/parser/file_loc.h"
+
+namespace kiln {
+
+class ParameterDictionary;
+
+class Sampler {
+  public:
+    using Variant =
+        std::variant<IndependentSampler, StratifiedSampler, ZSobolSampler, PaddedSobolSampler>;
+    Sampler() : v(IndependentSampler(1)) {}
+    template <typename T>
+    requires(!std::is_same_v<std::decay_t<T>, Sampler>) Sampler(T s) : v(std::move(s)) {}
+
+    int SamplesPerPixel() const {
+        return std::visit([](const auto& s) { return s.SamplesPerPixel(); }, v);
+    }
+    // Restarts the stream at sample `sampleIndex` of pixel p, at dimension `dimension`.
+    void StartPixelSample(Point2i p, int sampleIndex, int dimension = 0) {
+        std::visit([&](auto& s) { s.StartPixelSample(p, sampleIndex, dimension); }, v);
+    }
+    // Values in [0, 1).
+    Float Get1D() {
+        return std::visit([](auto& s) { return s.Get1D(); }, v);
+    }
+    Point2f Get2D() {
+        return std::visit([](auto& s) { return s.Get2D(); }, v);
+    }
+    // The 2D sample for the position within the pixel (film plane).
+    Point2f GetPixel2D() {
+        return std::visit([](auto& s) { return s.GetPixel2D(); }, v);
+    }
+    Sampler Clone() const { return *this; }
+    const Variant& Get() const { return v; }
+
+    // pbrt-v4 names "independent", "stratified", "zsobol" (default in pbrt-v4),
+    // "paddedsobol"; "halton", "pmj02bn" and "sobol" warn and use zsobol. Parameters
+    // "pixelsamples" (16), "seed" (0), stratified "xsamples"/"ysamples" (4)/"jitter" (true),
+    // Sobol' "randomization" ("fastowen"; "none", "permutedigits", "owen"). sppOverride and
+    // seedOverride (command line) win over the parameters. Unknown name: SceneError.
+    static Sampler Create(const std::string& name, const ParameterDictionary& params,
+                          Point2i fullResolution, const FileLoc& loc, Diagnostics& diag,
+                          std::optional<int> sppOverride = {},
+                          std::optional<int> seedOverride = {});
+
+  private:
+    Variant v;
+};
+
+// pbrt-v4 GetCameraSample: a filter-importance-sampled film position in pixel pPixel
+// (pFilm = pPixel + (0.5, 0.5) + filter offset, raster units), the filter weight, then time
+// and lens samples, in that order of sampler dimensions.
+inline CameraSample GetCameraSample(Sampler& sampler, Point2i pPixel, const Filter& filter) {
+    FilterSample fs = filter.Sample(sampler.GetPixel2D());
+    CameraSample cs;
+    cs.pFilm = Point2f(pPixel.x + 0.5f + fs.p.x, pPixel.y + 0.5f + fs.p.y);
+    cs.filterWeight = fs.weight;
+    cs.time = sampler.Get1D();
+    cs.pLens = sampler.Get2D();
+    return cs;
+}
+
+}  // namespace kiln

@@ -1,0 +1,105 @@
+// Sampler implementations (pbrt-v4 semantics).
+#include "core/camera/samplers.h"
+
+namespace kiln {
+
+// StratifiedSampler
+uint64_t StratifiedSampler::DimensionHash() const {
+    return MixBits((uint64_t(uint32_t(pixel.x)) << 48) ^ (uint64_t(uint32_t(pixel.y)) << 32) ^
+                   (uint64_t(dimension) << 16) ^ uint64_t(uint32_t(seed)));
+}
+
+Float StratifiedSampler::Get1D() {
+    int stratum = PermutationElement(sampleIndex, SamplesPerPixel(), uint32_t(DimensionHash()));
+    ++dimension;
+    Float delta = jitter ? rng.UniformFloat() : 0.5f;
+    return std::min((stratum + delta) / SamplesPerPixel(), OneMinusEpsilon);
+}
+
+Point2f StratifiedSampler::Get2D() {
+    int stratum = PermutationElement(sampleIndex, SamplesPerPixel(), uint32_t(DimensionHash()));
+    dimension += 2;
+    int x = stratum % xPixelSamples, y = stratum / xPixelSamples;
+    Float dx = jitter ? rng.UniformFloat() : 0.5f;
+    Float dy = jitter ? rng.UniformFloat() : 0.5f;
+    return {std::min((x + dx) / xPixelSamples, OneMinusEpsilon),
+            std::min((y + dy) / yPixelSamples, OneMinusEpsilon)};
+}
+
+// PaddedSobolSampler
+uint64_t PaddedSobolSampler::DimensionHash() const {
+    return MixBits((uint64_t(uint32_t(pixel.x)) << 48) ^ (uint64_t(uint32_t(pixel.y)) << 32) ^
+                   (uint64_t(dimension) << 16) ^ uint64_t(uint32_t(seed)));
+}
+
+Float PaddedSobolSampler::Get1D() {
+    uint64_t hash = DimensionHash();
+    int index = PermutationElement(sampleIndex, samplesPerPixel, uint32_t(hash));
+    ++dimension;
+    return SobolSample(uint64_t(index), 0, randomize, uint32_t(hash >> 32));
+}
+
+Point2f PaddedSobolSampler::Get2D() {
+    uint64_t hash = DimensionHash();
+    int index = PermutationElement(sampleIndex, samplesPerPixel, uint32_t(hash));
+    dimension += 2;
+    return {SobolSample(uint64_t(index), 0, randomize, uint32_t(hash)),
+            SobolSample(uint64_t(index), 1, randomize, uint32_t(hash >> 32))};
+}
+
+// ZSobolSampler
+ZSobolSampler::ZSobolSampler(int samplesPerPixel, Point2i fullResolution,
+                             RandomizeStrategy randomize, int seed)
+    : randomize(randomize), seed(seed) {
+    log2SamplesPerPixel = Log2Int(uint64_t(RoundUpPow2(std::max(1, samplesPerPixel))));
+    int res = RoundUpPow2(std::max({fullResolution.x, fullResolution.y, 1}));
+    int log4SamplesPerPixel = (log2SamplesPerPixel + 1) / 2;
+    nBase4Digits = Log2Int(uint64_t(res)) + log4SamplesPerPixel;
+}
+
+uint64_t ZSobolSampler::GetSampleIndex() const {
+    // All 24 permutations of four digits.
+    static constexpr uint8_t permutations[24][4] = {
+        {0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 1, 3}, {0, 2, 3, 1}, {0, 3, 2, 1}, {0, 3, 1, 2},
+        {1, 0, 2, 3}, {1, 0, 3, 2}, {1, 2, 0, 3}, {1, 2, 3, 0}, {1, 3, 2, 0}, {1, 3, 0, 2},
+        {2, 1, 0, 3}, {2, 1, 3, 0}, {2, 0, 1, 3}, {2, 0, 3, 1}, {2, 3, 0, 1}, {2, 3, 1, 0},
+        {3, 1, 2, 0}, {3, 1, 0, 2}, {3, 2, 1, 0}, {3, 2, 0, 1}, {3, 0, 2, 1}, {3, 0, 1, 2}};
+
+    uint64_t sampleIndex = 0;
+    // Permute each full base-4 digit by a permutation chosen from the digits above it, so the
+    // permutation is consistent within every subtree of the Morton hierarchy.
+    bool pow2Samples = log2SamplesPerPixel & 1;
+    int lastDigit = pow2Samples ? 1 : 0;
+    for (int i = nBase4Digits - 1; i >= lastDigit; --i) {
+        int digitShift = 2 * i - (pow2Samples ? 1 : 0);
+        int digit = int((mortonIndex >> digitShift) & 3);
+        uint64_t higherDigits = mortonIndex >> (digitShift + 2);
+        int p = int((MixBits(higherDigits ^ (0x55555555ULL * uint64_t(dimension))) >> 24) % 24);
+        digit = permutations[p][digit];
+        sampleIndex |= uint64_t(digit) << digitShift;
+    }
+    // An odd power of two leaves one base-2 digit, flipped at random.
+    if (pow2Samples) {
+        uint64_t digit = mortonIndex & 1;
+        sampleIndex |=
+            digit ^ (MixBits((mortonIndex >> 1) ^ (0x55555555ULL * uint64_t(dimension))) & 1);
+    }
+    return sampleIndex;
+}
+
+Float ZSobolSampler::Get1D() {
+    uint64_t sampleIndex = GetSampleIndex();
+    ++dimension;
+    uint32_t sampleHash = uint32_t(MixBits(uint64_t(dimension) ^ uint64_t(uint32_t(seed))));
+    return SobolSample(sampleIndex, 0, randomize, sampleHash);
+}
+
+Point2f ZSobolSampler::Get2D() {
+    uint64_t sampleIndex = GetSampleIndex();
+    dimension += 2;
+    uint64_t bits = MixBits(uint64_t(dimension) ^ uint64_t(uint32_t(seed)));
+    return {SobolSample(sampleIndex, 0, randomize, uint32_t(bits)),
+            SobolSample(sampleIndex, 1, randomize, uint32_t(bits >> 32))};
+}
+
+}  // namespace kiln

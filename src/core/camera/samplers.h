@@ -1,0 +1,118 @@
+// Sample generators (pbrt-v4 samplers): independent, stratified, padded Sobol' and
+// Morton-ordered ("z") Sobol'.
+//
+// Each is a small value type; every rendering thread owns a copy. Values depend only on
+// (pixel, sample index, dimension, seed), never on call order across pixels or threads:
+// StartPixelSample(p, i, d) fully resets the stream. Get1D/Get2D/GetPixel2D return values in
+// [0, 1) and advance the dimension by 1 or 2.
+#pragma once
+
+#include "core/base/rng.h"
+#include "core/base/vecmath.h"
+#include "core/camera/low_discrepancy.h"
+
+namespace kiln {
+
+// IndependentSampler: uniform random values from a PCG32 stream per (pixel, seed).
+class IndependentSampler {
+  public:
+    IndependentSampler(int samplesPerPixel, int seed = 0)
+        : samplesPerPixel(samplesPerPixel), seed(seed) {}
+    int SamplesPerPixel() const { return samplesPerPixel; }
+    void StartPixelSample(Point2i p, int sampleIndex, int dimension) {
+        rng.SetSequence(Hash(p.x, p.y, seed));
+        rng.Advance(int64_t(sampleIndex) * 65536 + dimension);
+    }
+    Float Get1D() { return rng.UniformFloat(); }
+    Point2f Get2D() {
+        Float x = rng.UniformFloat();
+        return {x, rng.UniformFloat()};
+    }
+    Point2f GetPixel2D() { return Get2D(); }
+
+  private:
+    int samplesPerPixel, seed;
+    RNG rng;
+};
+
+// StratifiedSampler: xPixelSamples x yPixelSamples strata, visited in a hashed order that
+// differs per pixel and dimension (padding), optionally jittered within each stratum.
+class StratifiedSampler {
+  public:
+    StratifiedSampler(int xPixelSamples, int yPixelSamples, bool jitter, int seed = 0)
+        : xPixelSamples(xPixelSamples), yPixelSamples(yPixelSamples), seed(seed), jitter(jitter) {}
+    int SamplesPerPixel() const { return xPixelSamples * yPixelSamples; }
+    void StartPixelSample(Point2i p, int index, int dim) {
+        pixel = p;
+        sampleIndex = index;
+        dimension = dim;
+        rng.SetSequence(Hash(p.x, p.y, seed));
+        rng.Advance(int64_t(sampleIndex) * 65536 + dimension);
+    }
+    Float Get1D();
+    Point2f Get2D();
+    Point2f GetPixel2D() { return Get2D(); }
+
+  private:
+    uint64_t DimensionHash() const;
+    int xPixelSamples, yPixelSamples, seed;
+    bool jitter;
+    RNG rng;
+    Point2i pixel;
+    int sampleIndex = 0, dimension = 0;
+};
+
+// PaddedSobolSampler: the first two Sobol' dimensions, with the sample index permuted
+// independently per pixel and dimension and each value scrambled.
+class PaddedSobolSampler {
+  public:
+    PaddedSobolSampler(int samplesPerPixel, RandomizeStrategy randomize, int seed = 0)
+        : samplesPerPixel(samplesPerPixel), seed(seed), randomize(randomize) {}
+    int SamplesPerPixel() const { return samplesPerPixel; }
+    void StartPixelSample(Point2i p, int index, int dim) {
+        pixel = p;
+        sampleIndex = index;
+        dimension = dim;
+    }
+    Float Get1D();
+    Point2f Get2D();
+    Point2f GetPixel2D() { return Get2D(); }
+
+  private:
+    uint64_t DimensionHash() const;
+    int samplesPerPixel, seed;
+    RandomizeStrategy randomize;
+    Point2i pixel;
+    int sampleIndex = 0, dimension = 0;
+};
+
+// ZSobolSampler (Ahmed & Wonka 2020, "Screen-Space Blue-Noise Diffusion of Monte Carlo
+// Sampling Error via Hierarchical Ordering of Pixels", as in pbrt-v4): one global (0,2)
+// Sobol' sequence indexed by the Morton code of the pixel followed by the sample index, with
+// base-4 digits permuted per dimension, so each pixel's spp samples form a (0,m,2)-net in
+// every dimension pair while neighbouring pixels' errors decorrelate.
+class ZSobolSampler {
+  public:
+    ZSobolSampler(int samplesPerPixel, Point2i fullResolution, RandomizeStrategy randomize,
+                  int seed = 0);
+    // Rounded up to a power of two.
+    int SamplesPerPixel() const { return 1 << log2SamplesPerPixel; }
+    void StartPixelSample(Point2i p, int index, int dim) {
+        dimension = dim;
+        mortonIndex =
+            (EncodeMorton2(uint32_t(p.x), uint32_t(p.y)) << log2SamplesPerPixel) | uint64_t(index);
+    }
+    Float Get1D();
+    Point2f Get2D();
+    Point2f GetPixel2D() { return Get2D(); }
+    // The Sobol' index of the current sample in the current dimension.
+    uint64_t GetSampleIndex() const;
+
+  private:
+    RandomizeStrategy randomize;
+    int seed, log2SamplesPerPixel, nBase4Digits;
+    uint64_t mortonIndex = 0;
+    int dimension = 0;
+};
+
+}  // namespace kiln
