@@ -1,0 +1,310 @@
+#include "core/geometry/accelerator.h"
+
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "core/geometry/shape_util.h"
+
+namespace kiln {
+
+// Accelerator data
+namespace {
+
+// What one Embree geometry stands for; the geometry's user data points at it.
+struct GeomRecord {
+    enum class Kind { Triangles, User, Instance } kind = Kind::User;
+    const TriangleMesh* mesh = nullptr;
+    std::vector<int> triIndices;  // primID -> triangle index; empty when the identity
+    std::vector<Shape> shapes;    // User: primID -> shape
+    const Material* material = nullptr;
+    std::vector<const Light*> lights;  // primID -> area light; empty when none
+    Transform renderFromInstance;      // Instance
+};
+
+struct SceneBVH {
+    RTCScene scene = nullptr;
+    std::vector<std::unique_ptr<GeomRecord>> records;  // indexed by geomID
+};
+
+// Intersection context carrying the closest user-geometry hit back from the callbacks.
+struct KilnContext {
+    RTCIntersectContext context;
+    std::optional<ShapeIntersection> userHit;
+};
+
+void UserBounds(const RTCBoundsFunctionArguments* args) {
+    auto* rec = static_cast<const GeomRecord*>(args->geometryUserPtr);
+    Bounds3f b = rec->shapes[args->primID].Bounds();
+    // Pad by a few ulps so reprojected hits on the boundary are not culled.
+    Vector3f pad = 1e-6f * Abs(Vector3f(b.pMax) - Vector3f(b.pMin)) +
+                   1e-6f * Max(Abs(Vector3f(b.pMin)), Abs(Vector3f(b.pMax)));
+    args->bounds_o->lower_x = b.pMin.x - pad.x;
+    args->bounds_o->lower_y = b.pMin.y - pad.y;
+    args->bounds_o->lower_z = b.pMin.z - pad.z;
+    args->bounds_o->upper_x = b.pMax.x + pad.x;
+    args->bounds_o->upper_y = b.pMax.y + pad.y;
+    args->bounds_o->upper_z = b.pMax.z + pad.z;
+}
+
+Ray RayFromEmbree(const RTCRay& r) {
+    return Ray(Point3f(r.org_x, r.org_y, r.org_z), Vector3f(r.dir_x, r.dir_y, r.dir_z), r.time);
+}
+
+void UserIntersect(const RTCIntersectFunctionNArguments* args) {
+    if (args->N != 1 || !args->valid[0]) return;
+    auto* rec = static_cast<const GeomRecord*>(args->geometryUserPtr);
+    auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
+    Ray ray = RayFromEmbree(rh->ray);
+    auto si = rec->shapes[args->primID].Intersect(ray, rh->ray.tfar);
+    if (!si || si->tHit <= rh->ray.tnear) return;
+    rh->ray.tfar = si->tHit;
+    rh->hit.Ng_x = si->intr.n.x, rh->hit.Ng_y = si->intr.n.y, rh->hit.Ng_z = si->intr.n.z;
+    rh->hit.u = si->intr.uv.x, rh->hit.v = si->intr.uv.y;
+    rh->hit.primID = args->primID;
+    rh->hit.geomID = args->geomID;
+    for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l)
+        rh->hit.instID[l] = args->context->instID[l];
+    reinterpret_cast<KilnContext*>(args->context)->userHit = std::move(si);
+}
+
+void UserOccluded(const RTCOccludedFunctionNArguments* args) {
+    if (args->N != 1 || !args->valid[0]) return;
+    auto* rec = static_cast<const GeomRecord*>(args->geometryUserPtr);
+    auto* r = reinterpret_cast<RTCRay*>(args->ray);
+    if (rec->shapes[args->primID].IntersectP(RayFromEmbree(*r), r->tfar))
+        r->tfar = -std::numeric_limits<float>::infinity();
+}
+
+void ErrorCallback(void*, RTCError code, const char* message) {
+    std::fprintf(stderr, "kiln: Embree error %d: %s\n", int(code), message ? message : "");
+}
+
+}  // namespace
+
+struct Accelerator::Impl {
+    RTCDevice device = nullptr;
+    SceneBVH top;
+    std::vector<SceneBVH> definitions;
+    bool committed = false;
+
+    SceneBVH NewScene() {
+        SceneBVH s;
+        s.scene = rtcNewScene(device);
+        rtcSetSceneFlags(s.scene, RTC_SCENE_FLAG_ROBUST);
+        rtcSetSceneBuildQuality(s.scene, RTC_BUILD_QUALITY_HIGH);
+        return s;
+    }
+    void Attach(SceneBVH& s, RTCGeometry g, std::unique_ptr<GeomRecord> rec) {
+        rtcSetGeometryUserData(g, rec.get());
+        rtcCommitGeometry(g);
+        rtcAttachGeometryByID(s.scene, g, unsigned(s.records.size()));
+        rtcReleaseGeometry(g);
+        s.records.push_back(std::move(rec));
+    }
+    void AddShapes(SceneBVH& s, std::span<const Shape> shapes, const Material* material,
+                   std::span<const Light* const> areaLights);
+};
+
+// Adding shapes
+void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
+                                  const Material* material,
+                                  std::span<const Light* const> areaLights) {
+    bool haveLights = !areaLights.empty();
+    // Triangles grouped by mesh (first-seen order), everything else as one user geometry.
+    std::vector<std::pair<const TriangleMesh*, std::vector<size_t>>> meshes;
+    std::vector<size_t> others;
+    for (size_t i = 0; i < shapes.size(); ++i) {
+        if (const Triangle* t = shapes[i].Get<Triangle>()) {
+            auto it = std::find_if(meshes.begin(), meshes.end(),
+                                   [&](auto& m) { return m.first == t->GetMesh(); });
+            if (it == meshes.end()) {
+                meshes.push_back({t->GetMesh(), {}});
+                it = meshes.end() - 1;
+            }
+            it->second.push_back(i);
+        } else {
+            others.push_back(i);
+        }
+    }
+    for (auto& [mesh, idx] : meshes) {
+        auto rec = std::make_unique<GeomRecord>();
+        rec->kind = GeomRecord::Kind::Triangles;
+        rec->mesh = mesh;
+        rec->material = material;
+        bool identity = int(idx.size()) == mesh->nTriangles;
+        for (size_t k = 0; k < idx.size(); ++k) {
+            int tri = shapes[idx[k]].Get<Triangle>()->TriangleIndex();
+            rec->triIndices.push_back(tri);
+            identity = identity && tri == int(k);
+            if (haveLights) rec->lights.push_back(areaLights[idx[k]]);
+        }
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh->p.data(),
+                                   0, sizeof(Point3f), mesh->nVertices);
+        if (identity) {
+            rec->triIndices.clear();
+            rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                       mesh->vertexIndices.data(), 0, 3 * sizeof(int),
+                                       mesh->nTriangles);
+        } else {
+            auto* ib = static_cast<unsigned*>(
+                rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                        3 * sizeof(unsigned), rec->triIndices.size()));
+            for (size_t k = 0; k < rec->triIndices.size(); ++k) {
+                auto v = mesh->VertexIndices(rec->triIndices[k]);
+                for (int j = 0; j < 3; ++j) ib[3 * k + j] = unsigned(v[j]);
+            }
+        }
+        Attach(s, g, std::move(rec));
+    }
+    if (!others.empty()) {
+        auto rec = std::make_unique<GeomRecord>();
+        rec->kind = GeomRecord::Kind::User;
+        rec->material = material;
+        for (size_t i : others) {
+            rec->shapes.push_back(shapes[i]);
+            if (haveLights) rec->lights.push_back(areaLights[i]);
+        }
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(g, unsigned(rec->shapes.size()));
+        rtcSetGeometryBoundsFunction(g, UserBounds, nullptr);
+        rtcSetGeometryIntersectFunction(g, UserIntersect);
+        rtcSetGeometryOccludedFunction(g, UserOccluded);
+        Attach(s, g, std::move(rec));
+    }
+}
+
+// Accelerator
+Accelerator::Accelerator() : impl(std::make_unique<Impl>()) {
+    impl->device = rtcNewDevice(nullptr);
+    rtcSetDeviceErrorFunction(impl->device, ErrorCallback, nullptr);
+    impl->top = impl->NewScene();
+}
+
+Accelerator::~Accelerator() {
+    for (SceneBVH& d : impl->definitions) rtcReleaseScene(d.scene);
+    rtcReleaseScene(impl->top.scene);
+    rtcReleaseDevice(impl->device);
+}
+
+void Accelerator::Add(std::span<const Shape> shapes, const Material* material,
+                      std::span<const Light* const> areaLights) {
+    if (!areaLights.empty() && areaLights.size() != shapes.size())
+        throw std::invalid_argument("Accelerator::Add: need one area light per shape or none");
+    impl->AddShapes(impl->top, shapes, material, areaLights);
+}
+
+int Accelerator::NewInstanceDefinition() {
+    impl->definitions.push_back(impl->NewScene());
+    return int(impl->definitions.size()) - 1;
+}
+
+void Accelerator::AddToInstanceDefinition(int definition, std::span<const Shape> shapes,
+                                          const Material* material) {
+    impl->AddShapes(impl->definitions.at(definition), shapes, material, {});
+}
+
+void Accelerator::AddInstance(int definition, const Transform& renderFromInstance) {
+    SceneBVH& def = impl->definitions.at(definition);
+    if (def.records.empty()) return;
+    auto rec = std::make_unique<GeomRecord>();
+    rec->kind = GeomRecord::Kind::Instance;
+    rec->renderFromInstance = renderFromInstance;
+    RTCGeometry g = rtcNewGeometry(impl->device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(g, def.scene);
+    // Column-major 3x4 affine part.
+    const SquareMatrix4& m = renderFromInstance.Matrix();
+    float xfm[12];
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 3; ++r) xfm[3 * c + r] = m.m[r][c];
+    rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+    rec->triIndices.push_back(definition);  // the definition this instance places
+    impl->Attach(impl->top, g, std::move(rec));
+}
+
+void Accelerator::Commit() {
+    for (SceneBVH& d : impl->definitions) rtcCommitScene(d.scene);
+    rtcCommitScene(impl->top.scene);
+    impl->committed = true;
+}
+
+// Ray queries
+std::optional<ShapeIntersection> Accelerator::Intersect(const Ray& ray, Float tMax) const {
+    KilnContext ctx;
+    rtcInitIntersectContext(&ctx.context);
+    RTCRayHit rh;
+    rh.ray.org_x = ray.o.x, rh.ray.org_y = ray.o.y, rh.ray.org_z = ray.o.z;
+    rh.ray.dir_x = ray.d.x, rh.ray.dir_y = ray.d.y, rh.ray.dir_z = ray.d.z;
+    rh.ray.tnear = 0;
+    rh.ray.tfar = tMax;
+    rh.ray.time = ray.time;
+    rh.ray.mask = ~0u;
+    rh.ray.id = 0;
+    rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l)
+        rh.hit.instID[l] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(impl->top.scene, &ctx.context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+
+    const GeomRecord* rec;
+    const Transform* renderFromInstance = nullptr;
+    Vector3f d = ray.d;
+    if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
+        const GeomRecord* inst = impl->top.records[rh.hit.instID[0]].get();
+        renderFromInstance = &inst->renderFromInstance;
+        rec = impl->definitions[inst->triIndices[0]].records[rh.hit.geomID].get();
+        d = renderFromInstance->ApplyInverse(ray.d);
+    } else {
+        rec = impl->top.records[rh.hit.geomID].get();
+    }
+    unsigned prim = rh.hit.primID;
+    ShapeIntersection si;
+    if (rec->kind == GeomRecord::Kind::Triangles) {
+        int tri = rec->triIndices.empty() ? int(prim) : rec->triIndices[prim];
+        Float b1 = Clamp(rh.hit.u, 0, 1), b2 = Clamp(rh.hit.v, 0, 1);
+        if (b1 + b2 > 1) b1 /= (b1 + b2), b2 = 1 - b1;
+        si.intr = Triangle(rec->mesh, tri)
+                      .InteractionFromBarycentrics({1 - b1 - b2, b1, b2}, ray.time, -d);
+        si.tHit = rh.ray.tfar;
+    } else {
+        if (!ctx.userHit) return std::nullopt;
+        si = *ctx.userHit;
+    }
+    if (renderFromInstance) si.intr = TransformInteraction(*renderFromInstance, si.intr);
+    si.intr.material = rec->material;
+    si.intr.areaLight = rec->lights.empty() ? nullptr : rec->lights[prim];
+    return si;
+}
+
+bool Accelerator::IntersectP(const Ray& ray, Float tMax) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay r;
+    r.org_x = ray.o.x, r.org_y = ray.o.y, r.org_z = ray.o.z;
+    r.dir_x = ray.d.x, r.dir_y = ray.d.y, r.dir_z = ray.d.z;
+    r.tnear = 0;
+    r.tfar = tMax;
+    r.time = ray.time;
+    r.mask = ~0u;
+    r.id = 0;
+    r.flags = 0;
+    rtcOccluded1(impl->top.scene, &context, &r);
+    return r.tfar < 0;
+}
+
+Bounds3f Accelerator::Bounds() const {
+    if (impl->top.records.empty()) return Bounds3f();
+    RTCBounds b;
+    rtcGetSceneBounds(impl->top.scene, &b);
+    if (b.lower_x > b.upper_x) return Bounds3f();
+    return Bounds3f(Point3f(b.lower_x, b.lower_y, b.lower_z),
+                    Point3f(b.upper_x, b.upper_y, b.upper_z));
+}
+
+RTCScene Accelerator::EmbreeScene() const { return impl->top.scene; }
+
+}  // namespace kiln

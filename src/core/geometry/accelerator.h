@@ -1,0 +1,56 @@
+// Accelerator: Embree 3 BVH over every primitive of the scene. Triangle meshes are native
+// Embree triangle geometries sharing the meshes' buffers; quadrics and bilinear patches are
+// user geometries whose callbacks call Shape::Intersect. Object instances are Embree instance
+// geometries over one scene per definition.
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <memory>
+#include <optional>
+#include <span>
+
+#include "core/base/transform.h"
+#include "core/base/vecmath.h"
+#include "core/geometry/shape.h"
+#include "core/geometry/shape_sample.h"
+
+namespace kiln {
+
+class Material;
+class Light;
+
+class Accelerator {
+  public:
+    Accelerator();
+    ~Accelerator();
+    Accelerator(const Accelerator&) = delete;
+    Accelerator& operator=(const Accelerator&) = delete;
+
+    // The shapes of one Shape directive with their material (nullptr = interface) and area
+    // lights (empty, or one per shape in the same order). Shapes and lights must outlive the
+    // accelerator.
+    void Add(std::span<const Shape> shapes, const Material* material,
+             std::span<const Light* const> areaLights);
+    // Object instancing: a definition's shapes are given in the definition's own space.
+    int NewInstanceDefinition();
+    void AddToInstanceDefinition(int definition, std::span<const Shape> shapes,
+                                 const Material* material);
+    void AddInstance(int definition, const Transform& renderFromInstance);
+    // Builds the BVHs; call once after everything has been added.
+    void Commit();
+
+    // Closest hit with t in (0, tMax), t in the parametric units of ray.
+    std::optional<ShapeIntersection> Intersect(const Ray& ray, Float tMax = Infinity) const;
+    // Any hit in (0, tMax), for shadow rays.
+    bool IntersectP(const Ray& ray, Float tMax = Infinity) const;
+    Bounds3f Bounds() const;
+    RTCScene EmbreeScene() const;
+
+    struct Impl;
+
+  private:
+    std::unique_ptr<Impl> impl;
+};
+
+}  // namespace kiln

@@ -1,0 +1,31 @@
+#include "core/geometry/shape.h"
+
+namespace kiln {
+
+// Shape dispatch
+Bounds3f Shape::Bounds() const {
+    return Dispatch([](auto s) { return s->Bounds(); });
+}
+Float Shape::Area() const {
+    return Dispatch([](auto s) { return s->Area(); });
+}
+std::optional<ShapeSample> Shape::Sample(Point2f u) const {
+    return Dispatch([&](auto s) { return s->Sample(u); });
+}
+Float Shape::PDF(const Interaction& intr) const {
+    return Dispatch([&](auto s) { return s->PDF(intr); });
+}
+std::optional<ShapeSample> Shape::Sample(const ShapeSampleContext& ctx, Point2f u) const {
+    return Dispatch([&](auto s) { return s->Sample(ctx, u); });
+}
+Float Shape::PDF(const ShapeSampleContext& ctx, Vector3f wi) const {
+    return Dispatch([&](auto s) { return s->PDF(ctx, wi); });
+}
+std::optional<ShapeIntersection> Shape::Intersect(const Ray& ray, Float tMax) const {
+    return Dispatch([&](auto s) { return s->Intersect(ray, tMax); });
+}
+bool Shape::IntersectP(const Ray& ray, Float tMax) const {
+    return Dispatch([&](auto s) { return s->IntersectP(ray, tMax); });
+}
+
+}  // namespace kiln

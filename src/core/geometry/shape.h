@@ -1,0 +1,68 @@
+// Shape: the closed set of geometric shapes (pbrt-v4's Shape interface), and their creation
+// from scene-description parameters.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "core/base/object_arena.h"
+#include "core/base/transform.h"
+#include "core/base/vecmath.h"
+#include "core/geometry/bilinear_patch.h"
+#include "core/geometry/quadrics.h"
+#include "core/geometry/shape_sample.h"
+#include "core/geometry/triangle.h"
+
+namespace kiln {
+
+class ParameterDictionary;
+class Diagnostics;
+struct FileLoc;
+
+class Shape {
+  public:
+    using Variant = std::variant<const Sphere*, const Disk*, const Cylinder*, const Triangle*,
+                                 const BilinearPatch*>;
+    Shape() = default;
+    template <typename T>
+    requires std::is_constructible_v<Variant, const T*> Shape(const T* s) : v(s) {}
+
+    // Bounds in render space (scene units), surface area (scene units^2).
+    Bounds3f Bounds() const;
+    Float Area() const;
+    // A point uniformly (or nearly so) distributed over the area; pdf per unit area.
+    std::optional<ShapeSample> Sample(Point2f u) const;
+    Float PDF(const Interaction& intr) const;
+    // A point sampled from the viewpoint ctx; pdf per steradian.
+    std::optional<ShapeSample> Sample(const ShapeSampleContext& ctx, Point2f u) const;
+    Float PDF(const ShapeSampleContext& ctx, Vector3f wi) const;
+    // tMax in the parametric units of ray (ray.d need not be unit).
+    std::optional<ShapeIntersection> Intersect(const Ray& ray, Float tMax = Infinity) const;
+    bool IntersectP(const Ray& ray, Float tMax = Infinity) const;
+
+    // The shapes of a "Shape" directive (pbrt-v4 names and defaults). Unsupported shapes are
+    // warned about and yield nothing; malformed parameters throw SceneError.
+    static std::vector<Shape> Create(const std::string& name, const Transform* renderFromObject,
+                                     const Transform* objectFromRender, bool reverseOrientation,
+                                     const ParameterDictionary& params, const FileLoc& loc,
+                                     ObjectArena& arena, Diagnostics& diag);
+
+    template <typename T>
+    const T* Get() const {
+        auto p = std::get_if<const T*>(&v);
+        return p ? *p : nullptr;
+    }
+    template <typename F>
+    decltype(auto) Dispatch(F&& f) const {
+        return std::visit([&](auto p) -> decltype(auto) { return f(p); }, v);
+    }
+    bool operator==(const Shape& o) const { return v == o.v; }
+
+  private:
+    Variant v;
+};
+
+}  // namespace kiln

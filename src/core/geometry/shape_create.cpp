@@ -1,0 +1,223 @@
+// Shape::Create: shapes from "Shape" directives, with pbrt-v4 parameter names and defaults.
+#include <string>
+
+#include "core/geometry/ply_reader.h"
+#include "core/geometry/shape.h"
+#include "core/parser/diagnostics.h"
+#include "core/parser/parameter_dictionary.h"
+
+namespace kiln {
+
+namespace {
+
+FileLoc LocOf(const ParameterDictionary& params, const std::string& name, const FileLoc& def) {
+    FileLoc l = params.Loc(name);
+    return l.line > 0 || !l.filename.empty() ? l : def;
+}
+
+void CheckIndices(const std::vector<int>& indices, size_t nVertices,
+                  const ParameterDictionary& params, const FileLoc& loc) {
+    for (int i : indices)
+        if (i < 0 || size_t(i) >= nVertices)
+            throw SceneError(LocOf(params, "indices", loc),
+                             "vertex index " + std::to_string(i) + " out of range [0, " +
+                                 std::to_string(nVertices) + ")",
+                             "indices");
+}
+
+// Triangle shapes of a mesh, stored in one arena-owned array.
+void AddTriangles(const TriangleMesh* mesh, ObjectArena& arena, std::vector<Shape>* shapes,
+                  const FileLoc& loc, Diagnostics& diag) {
+    if (mesh->nDegenerate > 0)
+        diag.Warn(
+            loc, std::to_string(mesh->nDegenerate) + " degenerate (zero-area) triangle(s) skipped");
+    auto* tris = arena.New<std::vector<Triangle>>(Triangle::FromMesh(mesh));
+    for (const Triangle& t : *tris) shapes->push_back(Shape(&t));
+}
+
+void AddPatches(const BilinearPatchMesh* mesh, ObjectArena& arena, std::vector<Shape>* shapes) {
+    auto* patches = arena.New<std::vector<BilinearPatch>>(BilinearPatch::FromMesh(mesh));
+    for (const BilinearPatch& b : *patches) shapes->push_back(Shape(&b));
+}
+
+template <typename T>
+void CheckPerVertex(const std::vector<T>& v, size_t nP, const char* name,
+                    const ParameterDictionary& params, const FileLoc& loc) {
+    if (!v.empty() && v.size() != nP)
+        throw SceneError(LocOf(params, name, loc),
+                         std::string("number of \"") + name + "\" values (" +
+                             std::to_string(v.size()) + ") must match the number of \"P\" (" +
+                             std::to_string(nP) + ")",
+                         name);
+}
+
+std::vector<Shape> CreateTriangleMesh(const Transform* renderFromObject, bool reverseOrientation,
+                                      const ParameterDictionary& params, const FileLoc& loc,
+                                      ObjectArena& arena, Diagnostics& diag) {
+    std::vector<int> indices = params.GetIntArray("indices");
+    std::vector<Point3f> P = params.GetPoint3fArray("P");
+    std::vector<Point2f> uv = params.GetPoint2fArray("uv");
+    std::vector<Normal3f> N = params.GetNormal3fArray("N");
+    std::vector<Vector3f> S = params.GetVector3fArray("S");
+    std::vector<int> faceIndices = params.GetIntArray("faceIndices");
+    std::vector<Float> temperature = params.GetFloatArray("temperature");
+    if (P.empty()) throw SceneError(loc, "vertex positions \"P\" must be provided", "trianglemesh");
+    if (indices.empty()) {
+        if (P.size() != 3)
+            throw SceneError(loc,
+                             "vertex indices \"indices\" must be provided with a triangle "
+                             "mesh of more than one triangle",
+                             "trianglemesh");
+        indices = {0, 1, 2};
+    }
+    if (indices.size() % 3 != 0)
+        throw SceneError(LocOf(params, "indices", loc),
+                         "number of vertex indices (" + std::to_string(indices.size()) +
+                             ") is not a multiple of 3",
+                         "indices");
+    CheckIndices(indices, P.size(), params, loc);
+    CheckPerVertex(uv, P.size(), "uv", params, loc);
+    CheckPerVertex(N, P.size(), "N", params, loc);
+    CheckPerVertex(S, P.size(), "S", params, loc);
+    CheckPerVertex(temperature, P.size(), "temperature", params, loc);
+    if (!faceIndices.empty() && faceIndices.size() != indices.size() / 3)
+        throw SceneError(LocOf(params, "faceIndices", loc),
+                         "number of \"faceIndices\" must match the number of triangles",
+                         "faceIndices");
+    std::map<std::string, std::vector<Float>> attributes;
+    if (!temperature.empty()) attributes["temperature"] = std::move(temperature);
+    auto* mesh = arena.New<TriangleMesh>(*renderFromObject, reverseOrientation, std::move(indices),
+                                         std::move(P), std::move(N), std::move(S), std::move(uv),
+                                         std::move(faceIndices), std::move(attributes));
+    std::vector<Shape> shapes;
+    AddTriangles(mesh, arena, &shapes, loc, diag);
+    return shapes;
+}
+
+std::vector<Shape> CreateBilinearMesh(const Transform* renderFromObject, bool reverseOrientation,
+                                      const ParameterDictionary& params, const FileLoc& loc,
+                                      ObjectArena& arena) {
+    std::vector<int> indices = params.GetIntArray("indices");
+    std::vector<Point3f> P = params.GetPoint3fArray("P");
+    std::vector<Point2f> uv = params.GetPoint2fArray("uv");
+    std::vector<Normal3f> N = params.GetNormal3fArray("N");
+    std::vector<int> faceIndices = params.GetIntArray("faceIndices");
+    if (P.empty()) throw SceneError(loc, "vertex positions \"P\" must be provided", "bilinearmesh");
+    if (indices.empty()) {
+        if (P.size() != 4)
+            throw SceneError(loc,
+                             "vertex indices \"indices\" must be provided with a bilinear "
+                             "mesh of more than one patch",
+                             "bilinearmesh");
+        indices = {0, 1, 2, 3};
+    }
+    if (indices.size() % 4 != 0)
+        throw SceneError(LocOf(params, "indices", loc),
+                         "number of vertex indices (" + std::to_string(indices.size()) +
+                             ") is not a multiple of 4",
+                         "indices");
+    CheckIndices(indices, P.size(), params, loc);
+    CheckPerVertex(uv, P.size(), "uv", params, loc);
+    CheckPerVertex(N, P.size(), "N", params, loc);
+    if (!faceIndices.empty() && faceIndices.size() != indices.size() / 4)
+        throw SceneError(LocOf(params, "faceIndices", loc),
+                         "number of \"faceIndices\" must match the number of patches",
+                         "faceIndices");
+    auto* mesh = arena.New<BilinearPatchMesh>(*renderFromObject, reverseOrientation,
+                                              std::move(indices), std::move(P), std::move(N),
+                                              std::move(uv), std::move(faceIndices));
+    std::vector<Shape> shapes;
+    AddPatches(mesh, arena, &shapes);
+    return shapes;
+}
+
+std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverseOrientation,
+                                 const ParameterDictionary& params, const FileLoc& loc,
+                                 ObjectArena& arena, Diagnostics& diag) {
+    std::string filename = params.GetOneFilename("filename", "");
+    if (filename.empty())
+        throw SceneError(loc, "\"filename\" must be provided for a plymesh", "plymesh");
+    if (!params.GetTexture("displacement").empty() || params.Has("displacement")) {
+        diag.Warn(LocOf(params, "displacement", loc),
+                  "plymesh displacement is not supported; rendering without it");
+        params.GetOneFloat("edgelength", 1);
+    }
+    TriQuadMesh ply;
+    try {
+        ply = TriQuadMesh::ReadPLY(filename);
+    } catch (const SceneError& e) {
+        // Report at the directive, naming the PLY file and the problem.
+        throw SceneError(LocOf(params, "filename", loc), e.Loc().ToString() + ": " + e.Message(),
+                         filename);
+    }
+    std::vector<Shape> shapes;
+    if (!ply.triIndices.empty()) {
+        auto* mesh = arena.New<TriangleMesh>(
+            *renderFromObject, reverseOrientation, std::move(ply.triIndices), ply.p, ply.n,
+            std::vector<Vector3f>(), ply.uv, std::move(ply.triFaceIndices), ply.vertexAttributes);
+        AddTriangles(mesh, arena, &shapes, loc, diag);
+    }
+    if (!ply.quadIndices.empty()) {
+        auto* mesh = arena.New<BilinearPatchMesh>(
+            *renderFromObject, reverseOrientation, std::move(ply.quadIndices), std::move(ply.p),
+            std::move(ply.n), std::move(ply.uv), std::move(ply.quadFaceIndices));
+        AddPatches(mesh, arena, &shapes);
+    }
+    return shapes;
+}
+
+}  // namespace
+
+// Shape creation
+std::vector<Shape> Shape::Create(const std::string& name, const Transform* renderFromObject,
+                                 const Transform* objectFromRender, bool reverseOrientation,
+                                 const ParameterDictionary& params, const FileLoc& loc,
+                                 ObjectArena& arena, Diagnostics& diag) {
+    if (name == "sphere") {
+        Float radius = params.GetOneFloat("radius", 1);
+        Float zMin = params.GetOneFloat("zmin", -radius);
+        Float zMax = params.GetOneFloat("zmax", radius);
+        Float phiMax = params.GetOneFloat("phimax", 360);
+        if (radius <= 0)
+            throw SceneError(LocOf(params, "radius", loc),
+                             "sphere radius must be "
+                             "positive",
+                             "radius");
+        return {Shape(arena.New<Sphere>(renderFromObject, objectFromRender, reverseOrientation,
+                                        radius, zMin, zMax, phiMax))};
+    }
+    if (name == "disk") {
+        Float height = params.GetOneFloat("height", 0);
+        Float radius = params.GetOneFloat("radius", 1);
+        Float innerRadius = params.GetOneFloat("innerradius", 0);
+        Float phiMax = params.GetOneFloat("phimax", 360);
+        if (radius <= 0 || innerRadius < 0 || innerRadius >= radius)
+            throw SceneError(loc, "disk needs 0 <= innerradius < radius", "disk");
+        return {Shape(arena.New<Disk>(renderFromObject, objectFromRender, reverseOrientation,
+                                      height, radius, innerRadius, phiMax))};
+    }
+    if (name == "cylinder") {
+        Float radius = params.GetOneFloat("radius", 1);
+        Float zMin = params.GetOneFloat("zmin", -1);
+        Float zMax = params.GetOneFloat("zmax", 1);
+        Float phiMax = params.GetOneFloat("phimax", 360);
+        if (radius <= 0 || zMin == zMax)
+            throw SceneError(loc, "cylinder needs radius > 0 and zmin != zmax", "cylinder");
+        return {Shape(arena.New<Cylinder>(renderFromObject, objectFromRender, reverseOrientation,
+                                          radius, zMin, zMax, phiMax))};
+    }
+    if (name == "trianglemesh")
+        return CreateTriangleMesh(renderFromObject, reverseOrientation, params, loc, arena, diag);
+    if (name == "bilinearmesh")
+        return CreateBilinearMesh(renderFromObject, reverseOrientation, params, loc, arena);
+    if (name == "plymesh")
+        return CreatePLYMesh(renderFromObject, reverseOrientation, params, loc, arena, diag);
+    if (name == "loopsubdiv" || name == "curve") {
+        diag.Warn(loc, "shape \"" + name + "\" is not supported; skipped");
+        return {};
+    }
+    diag.Warn(loc, "unknown shape \"" + name + "\"; skipped");
+    return {};
+}
+
+}  // namespace kiln

@@ -1,0 +1,148 @@
+// Accelerator: nearest hits over mixed shapes, instancing, shadow rays, material and area
+// light pointers, and self-intersection-free re-spawning far from the origin.
+#include "core/geometry/accelerator.h"
+
+#include <gtest/gtest.h>
+
+#include "test_util.h"
+
+namespace kiln {
+namespace {
+
+// Opaque tags standing in for materials and lights (only their addresses are used).
+const Material* Tag(int i) {
+    static const int tags[8] = {};
+    return reinterpret_cast<const Material*>(&tags[i]);
+}
+const Light* LightTag(int i) {
+    static const int tags[8] = {};
+    return reinterpret_cast<const Light*>(&tags[i]);
+}
+
+struct Scene {
+    Transform id, sphereXf = Translate(Vector3f(0, 0, 5)), sphereInv = Inverse(sphereXf);
+    Transform diskXf = Translate(Vector3f(0, 0, 10)), diskInv = Inverse(diskXf);
+    Sphere sphere{&sphereXf, &sphereInv, false, 1, -1, 1, 360};
+    Disk disk{&diskXf, &diskInv, false, 0, 3, 0, 360};
+    TriangleMesh mesh{Translate(Vector3f(0, 0, 3)),
+                      false,
+                      {0, 1, 2, 0, 2, 3},
+                      {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}},
+                      {},
+                      {},
+                      {},
+                      {}};
+    std::vector<Triangle> tris = Triangle::FromMesh(&mesh);
+};
+
+TEST(Accelerator, NearestHitMaterialsAndLights) {
+    Scene s;
+    Accelerator accel;
+    std::vector<Shape> quadric = {Shape(&s.sphere), Shape(&s.disk)};
+    const Light* lights[2] = {LightTag(1), LightTag(2)};
+    accel.Add(quadric, Tag(1), lights);
+    std::vector<Shape> tris = {Shape(&s.tris[0]), Shape(&s.tris[1])};
+    accel.Add(tris, Tag(2), {});
+    accel.Commit();
+
+    // Nearest along +z from the origin: the triangles at z = 3.
+    auto h = accel.Intersect(Ray(Point3f(0.5f, 0.2f, 0), Vector3f(0, 0, 2)));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->tHit, 1.5f, 1e-6f);
+    EXPECT_EQ(h->intr.material, Tag(2));
+    EXPECT_EQ(h->intr.areaLight, nullptr);
+    // Outside the quad: the sphere (z = 4), then the disk.
+    h = accel.Intersect(Ray(Point3f(0, 0.5f, 3.5f), Vector3f(0, 0, 1)));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->intr.p.z, 5 - std::sqrt(0.75f), 1e-5f);
+    EXPECT_EQ(h->intr.material, Tag(1));
+    EXPECT_EQ(h->intr.areaLight, LightTag(1));
+    h = accel.Intersect(Ray(Point3f(2, 0, 0), Vector3f(0, 0, 1)));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->tHit, 10, 1e-5f);
+    EXPECT_EQ(h->intr.areaLight, LightTag(2));
+    // tMax and shadow rays.
+    EXPECT_FALSE(accel.Intersect(Ray(Point3f(2, 0, 0), Vector3f(0, 0, 1)), 9.9f));
+    EXPECT_TRUE(accel.IntersectP(Ray(Point3f(2, 0, 0), Vector3f(0, 0, 1))));
+    EXPECT_FALSE(accel.IntersectP(Ray(Point3f(2, 0, 0), Vector3f(0, 0, 1)), 9.9f));
+    EXPECT_FALSE(accel.IntersectP(Ray(Point3f(5, 0, 0), Vector3f(0, 0, 1))));
+    Bounds3f b = accel.Bounds();
+    EXPECT_LE(b.pMin.x, -3);
+    EXPECT_GE(b.pMax.z, 10);
+}
+
+TEST(Accelerator, InstancesArePlaced) {
+    Scene s;
+    Accelerator accel;
+    int def = accel.NewInstanceDefinition();
+    Transform id;
+    Sphere unit(&id, &id, false, 1, -1, 1, 360);
+    std::vector<Shape> shapes = {Shape(&unit), Shape(&s.tris[0]), Shape(&s.tris[1])};
+    accel.AddToInstanceDefinition(def, shapes, Tag(3));
+    accel.AddInstance(def, Translate(Vector3f(10, 0, 0)));
+    accel.AddInstance(def, Translate(Vector3f(-10, 0, 0)) * Scale(2, 2, 2));
+    accel.Commit();
+    // Sphere of the first instance, centred at (10, 0, 0).
+    auto h = accel.Intersect(Ray(Point3f(10, 0, -5), Vector3f(0, 0, 1)));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->intr.p.z, -1, 1e-5f);
+    test::ExpectNearV(h->intr.n, Normal3f(0, 0, -1), 1e-5f);
+    EXPECT_EQ(h->intr.material, Tag(3));
+    // Triangles of the scaled instance: z = 2 * 3 = 6, beyond the sphere of radius 2 -> the
+    // sphere is hit first at z = -2.
+    h = accel.Intersect(Ray(Point3f(-10, 0, -5), Vector3f(0, 0, 1)));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->intr.p.z, -2, 1e-4f);
+    // Off the sphere but on the scaled quad (half-size 2 at z = 6).
+    h = accel.Intersect(Ray(Point3f(-8.5f, 1.5f, -5), Vector3f(0, 0, 1)));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->intr.p.z, 6, 1e-4f);
+    EXPECT_NEAR(h->tHit, 11, 1e-4f);
+    test::ExpectNearV(h->intr.n, Normal3f(0, 0, 1), 1e-5f);
+    EXPECT_FALSE(accel.Intersect(Ray(Point3f(0, 0, -5), Vector3f(0, 0, 1))));
+    EXPECT_TRUE(accel.IntersectP(Ray(Point3f(-8.5f, 1.5f, -5), Vector3f(0, 0, 1))));
+}
+
+TEST(Accelerator, NoSelfIntersectionFarFromOrigin) {
+    const Float far = 1e6f;
+    Transform xf = Translate(Vector3f(far, far, far)), inv = Inverse(xf);
+    // Feature sizes are large compared to the ray offset there (256 ulps of 1e6 = 16 units).
+    Sphere sphere(&xf, &inv, false, 300, -300, 300, 360);
+    TriangleMesh mesh(
+        Translate(Vector3f(far, far, far)), false, {0, 1, 2, 0, 2, 3},
+        {{-4000, -4000, -500}, {4000, -4000, -500}, {4000, 4000, -400}, {-4000, 4000, -500}}, {},
+        {}, {}, {});
+    auto tris = Triangle::FromMesh(&mesh);
+    Accelerator accel;
+    std::vector<Shape> shapes = {Shape(&sphere), Shape(&tris[0]), Shape(&tris[1])};
+    accel.Add(shapes, nullptr, {});
+    accel.Commit();
+    RNG rng(17);
+    int nHits = 0, nSelf = 0;
+    for (int i = 0; i < 2000; ++i) {
+        Point3f o(far + 4000 * (rng.UniformFloat() - 0.5f),
+                  far + 4000 * (rng.UniformFloat() - 0.5f), far + 3000);
+        Point3f target(far + 600 * (rng.UniformFloat() - 0.5f),
+                       far + 600 * (rng.UniformFloat() - 0.5f), far);
+        auto h = accel.Intersect(Ray(o, target - o));
+        if (!h) continue;
+        ++nHits;
+        // Re-spawn into the hemisphere of the normal (reflection) and below (transmission
+        // for the sphere): neither may hit the same surface at the origin.
+        Vector3f w = SampleUniformSphere(Point2f(rng.UniformFloat(), rng.UniformFloat()));
+        if (Dot(w, h->intr.n) < 0) w = -w;
+        auto h2 = accel.Intersect(h->intr.SpawnRay(w));
+        if (h2 && h2->tHit < 1) ++nSelf;
+        auto h3 = accel.Intersect(h->intr.SpawnRay(-w));
+        if (h3 && h3->tHit < 1) ++nSelf;
+        // Shadow ray back towards the ray origin: no hit next to its start. (Rays that graze
+        // the sphere may legitimately hit it, the origin having moved by up to 16 units.)
+        auto hs = accel.Intersect(h->intr.SpawnRayTo(o), 1 - ShadowEpsilon);
+        if (hs && Distance(hs->intr.p, h->intr.p) < 1) ++nSelf;
+    }
+    EXPECT_GT(nHits, 1000);
+    EXPECT_EQ(nSelf, 0);
+}
+
+}  // namespace
+}  // namespace kiln
