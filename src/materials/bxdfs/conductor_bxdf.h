@@ -1,0 +1,42 @@
+// Metals: Fresnel reflection from a smooth or Trowbridge-Reitz rough conductor.
+#pragma once
+
+#include <optional>
+
+#include "materials/bxdfs/bxdf_types.h"
+#include "materials/bxdfs/microfacet.h"
+
+namespace kiln {
+
+// eta, k: real and imaginary parts of the conductor's IOR relative to the outside medium, per
+// sampled wavelength (dimensionless). Reflection only, on the side of +z (wo and wi with
+// negative z are treated by symmetry through |cos|, as pbrt-v4).
+class ConductorBxDF {
+  public:
+    ConductorBxDF() = default;
+    ConductorBxDF(const TrowbridgeReitzDistribution& mfDistrib, SampledSpectrum eta,
+                  SampledSpectrum k)
+        : mfDistrib(mfDistrib), eta(eta), k(k) {}
+
+    SampledSpectrum f(Vector3f wo, Vector3f wi, TransportMode mode) const;
+    std::optional<BSDFSample> Sample_f(
+        Vector3f wo, Float uc, Point2f u, TransportMode mode = TransportMode::Radiance,
+        BxDFReflTransFlags sampleFlags = BxDFReflTransFlags::All) const;
+    Float PDF(Vector3f wo, Vector3f wi, TransportMode mode,
+              BxDFReflTransFlags sampleFlags = BxDFReflTransFlags::All) const;
+    BxDFFlags Flags() const {
+        return mfDistrib.EffectivelySmooth() ? BxDFFlags::SpecularReflection
+                                             : BxDFFlags::GlossyReflection;
+    }
+    void Regularize() { mfDistrib.Regularize(); }
+
+    const TrowbridgeReitzDistribution& Distribution() const { return mfDistrib; }
+    const SampledSpectrum& Eta() const { return eta; }
+    const SampledSpectrum& K() const { return k; }
+
+  private:
+    TrowbridgeReitzDistribution mfDistrib;
+    SampledSpectrum eta, k;
+};
+
+}  // namespace kiln

@@ -1,0 +1,42 @@
+// Interface between two dielectrics: smooth or Trowbridge-Reitz rough, reflection and
+// refraction.
+#pragma once
+
+#include <optional>
+
+#include "materials/bxdfs/bxdf_types.h"
+#include "materials/bxdfs/microfacet.h"
+
+namespace kiln {
+
+// eta: IOR of the inside (-z side) over the outside (+z side), dimensionless. In Radiance mode
+// transmitted radiance is scaled by 1/eta'^2 (non-symmetric scattering, Veach 1997 Sec. 5.2).
+// eta == 1 is an index-matched interface: pure specular transmission.
+class DielectricBxDF {
+  public:
+    DielectricBxDF() = default;
+    DielectricBxDF(Float eta, const TrowbridgeReitzDistribution& mfDistrib)
+        : eta(eta), mfDistrib(mfDistrib) {}
+
+    SampledSpectrum f(Vector3f wo, Vector3f wi, TransportMode mode) const;
+    std::optional<BSDFSample> Sample_f(
+        Vector3f wo, Float uc, Point2f u, TransportMode mode = TransportMode::Radiance,
+        BxDFReflTransFlags sampleFlags = BxDFReflTransFlags::All) const;
+    Float PDF(Vector3f wo, Vector3f wi, TransportMode mode,
+              BxDFReflTransFlags sampleFlags = BxDFReflTransFlags::All) const;
+    BxDFFlags Flags() const {
+        BxDFFlags flags = (eta == 1) ? BxDFFlags::Transmission
+                                     : (BxDFFlags::Reflection | BxDFFlags::Transmission);
+        return flags | (mfDistrib.EffectivelySmooth() ? BxDFFlags::Specular : BxDFFlags::Glossy);
+    }
+    void Regularize() { mfDistrib.Regularize(); }
+
+    Float Eta() const { return eta; }
+    const TrowbridgeReitzDistribution& Distribution() const { return mfDistrib; }
+
+  private:
+    Float eta = 1;
+    TrowbridgeReitzDistribution mfDistrib;
+};
+
+}  // namespace kiln

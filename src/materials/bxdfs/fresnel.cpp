@@ -1,0 +1,99 @@
+#include "materials/bxdfs/fresnel.h"
+
+namespace kiln {
+
+// Refraction
+bool Refract(Vector3f wi, Normal3f n, Float eta, Float* etap, Vector3f* wt) {
+    Float cosTheta_i = Dot(n, wi);
+    // Incidence from below n: swap the media.
+    if (cosTheta_i < 0) {
+        eta = 1 / eta;
+        cosTheta_i = -cosTheta_i;
+        n = -n;
+    }
+    // Snell's law: sin^2 theta_t = sin^2 theta_i / eta^2.
+    Float sin2Theta_i = std::max<Float>(0, 1 - Sqr(cosTheta_i));
+    Float sin2Theta_t = sin2Theta_i / Sqr(eta);
+    if (sin2Theta_t >= 1) return false;
+    Float cosTheta_t = SafeSqrt(1 - sin2Theta_t);
+    *wt = -wi / eta + (cosTheta_i / eta - cosTheta_t) * Vector3f(n);
+    if (etap) *etap = eta;
+    return true;
+}
+
+// Dielectric Fresnel equations
+namespace {
+
+// Real relative IOR: *Rs, *Rp in double precision; both 1 under total internal reflection.
+void DielectricRsRp(double cosTheta_i, double eta, double* Rs, double* Rp) {
+    cosTheta_i = std::clamp(cosTheta_i, -1.0, 1.0);
+    if (cosTheta_i < 0) {
+        eta = 1 / eta;
+        cosTheta_i = -cosTheta_i;
+    }
+    // 1 - cos^2 written as (1 - cos)(1 + cos) keeps precision near normal incidence.
+    double sin2Theta_i = (1 - cosTheta_i) * (1 + cosTheta_i);
+    double sin2Theta_t = sin2Theta_i / (eta * eta);
+    if (sin2Theta_t >= 1) {
+        *Rs = *Rp = 1;
+        return;
+    }
+    double cosTheta_t = std::sqrt(1 - sin2Theta_t);
+    double r_parl = (eta * cosTheta_i - cosTheta_t) / (eta * cosTheta_i + cosTheta_t);
+    double r_perp = (cosTheta_i - eta * cosTheta_t) / (cosTheta_i + eta * cosTheta_t);
+    *Rs = r_perp * r_perp;
+    *Rp = r_parl * r_parl;
+}
+
+}  // namespace
+
+Float FrDielectric(Float cosTheta_i, Float eta) {
+    double Rs, Rp;
+    DielectricRsRp(cosTheta_i, eta, &Rs, &Rp);
+    return Float(std::clamp(0.5 * (Rs + Rp), 0.0, 1.0));
+}
+
+FresnelRsRp FrDielectricPolarized(Float cosTheta_i, Float eta) {
+    double Rs, Rp;
+    DielectricRsRp(cosTheta_i, eta, &Rs, &Rp);
+    return {Float(std::clamp(Rs, 0.0, 1.0)), Float(std::clamp(Rp, 0.0, 1.0))};
+}
+
+// Complex Fresnel equations
+FresnelAmplitudes FrComplexAmplitudes(Float cosTheta_i, std::complex<Float> etaf) {
+    using C = std::complex<double>;
+    double cosi = std::clamp(double(cosTheta_i), 0.0, 1.0);
+    C eta(etaf.real(), etaf.imag());
+    // eta = 0 (no medium data): the limit of a perfect reflector.
+    if (std::norm(eta) == 0) return {C(-1), C(1)};
+    // Grazing incidence: total reflection (the limit of both coefficients is -1).
+    if (cosi == 0) return {C(-1), C(-1)};
+    double sin2Theta_i = (1 - cosi) * (1 + cosi);
+    C sin2Theta_t = sin2Theta_i / (eta * eta);
+    // Principal square root: Im(eta cos_t) >= 0 for absorbing media (the transmitted wave
+    // decays) and cos_t purely imaginary (evanescent) under total internal reflection.
+    C cosTheta_t = std::sqrt(1.0 - sin2Theta_t);
+    C rp = (eta * cosi - cosTheta_t) / (eta * cosi + cosTheta_t);
+    C rs = (cosi - eta * cosTheta_t) / (cosi + eta * cosTheta_t);
+    return {rs, rp};
+}
+
+FresnelRsRp FrComplexPolarized(Float cosTheta_i, std::complex<Float> eta) {
+    FresnelAmplitudes r = FrComplexAmplitudes(cosTheta_i, eta);
+    return {Float(std::clamp(std::norm(r.rs), 0.0, 1.0)),
+            Float(std::clamp(std::norm(r.rp), 0.0, 1.0))};
+}
+
+Float FrComplex(Float cosTheta_i, std::complex<Float> eta) {
+    FresnelAmplitudes r = FrComplexAmplitudes(cosTheta_i, eta);
+    return Float(std::clamp(0.5 * (std::norm(r.rs) + std::norm(r.rp)), 0.0, 1.0));
+}
+
+SampledSpectrum FrComplex(Float cosTheta_i, SampledSpectrum eta, SampledSpectrum k) {
+    SampledSpectrum r;
+    for (int i = 0; i < NSpectrumSamples; ++i)
+        r[i] = FrComplex(cosTheta_i, std::complex<Float>(eta[i], k[i]));
+    return r;
+}
+
+}  // namespace kiln

@@ -1,0 +1,124 @@
+// Layered BSDFs: two interfaces with an optional scattering medium between them, evaluated by
+// stochastic random walks (Guo et al. 2018, "Position-Free Monte Carlo Simulation for
+// Arbitrary Layered BSDFs"; pbrt-v4 Sec. 14.3).
+//
+// f and PDF are unbiased stochastic estimates. They are deterministic for given arguments: the
+// random walk is seeded by a hash of the directions (and of the sample values in Sample_f),
+// as pbrt-v4 does. The layer thickness is in units of the medium's mean free path (sigma_t =
+// 1); albedo is the medium's single-scattering albedo (0 = no medium, only attenuation-free
+// inter-reflection) and g its Henyey-Greenstein asymmetry.
+#pragma once
+
+#include <limits>
+#include <optional>
+
+#include "core/base/rng.h"
+#include "core/base/sampling.h"
+#include "materials/bxdfs/conductor_bxdf.h"
+#include "materials/bxdfs/dielectric_bxdf.h"
+#include "materials/bxdfs/diffuse_bxdf.h"
+#include "materials/bxdfs/hg_phase_function.h"
+
+namespace kiln {
+
+namespace layered_detail {
+inline TransportMode Flip(TransportMode m) {
+    return m == TransportMode::Radiance ? TransportMode::Importance : TransportMode::Radiance;
+}
+}  // namespace layered_detail
+
+// Refers to either the top or the bottom interface of a LayeredBxDF.
+template <typename TopBxDF, typename BottomBxDF>
+class TopOrBottomBxDF {
+  public:
+    TopOrBottomBxDF() = default;
+    TopOrBottomBxDF& operator=(const TopBxDF* t) {
+        top = t;
+        bottom = nullptr;
+        return *this;
+    }
+    TopOrBottomBxDF& operator=(const BottomBxDF* b) {
+        bottom = b;
+        top = nullptr;
+        return *this;
+    }
+    SampledSpectrum f(Vector3f wo, Vector3f wi, TransportMode mode) const {
+        return top ? top->f(wo, wi, mode) : bottom->f(wo, wi, mode);
+    }
+    std::optional<BSDFSample> Sample_f(
+        Vector3f wo, Float uc, Point2f u, TransportMode mode,
+        BxDFReflTransFlags sampleFlags = BxDFReflTransFlags::All) const {
+        return top ? top->Sample_f(wo, uc, u, mode, sampleFlags)
+                   : bottom->Sample_f(wo, uc, u, mode, sampleFlags);
+    }
+    Float PDF(Vector3f wo, Vector3f wi, TransportMode mode,
+              BxDFReflTransFlags sampleFlags = BxDFReflTransFlags::All) const {
+        return top ? top->PDF(wo, wi, mode, sampleFlags) : bottom->PDF(wo, wi, mode, sampleFlags);
+    }
+    BxDFFlags Flags() const { return top ? top->Flags() : bottom->Flags(); }
+
+  private:
+    const TopBxDF* top = nullptr;
+    const BottomBxDF* bottom = nullptr;
+};
+
+template <typename TopBxDF, typename BottomBxDF, bool twoSided>
+class LayeredBxDF {
+  public:
+    LayeredBxDF() = default;
+    // thickness in mean free paths; maxDepth bounds the random walk; nSamples walks per f/PDF.
+    LayeredBxDF(TopBxDF top, BottomBxDF bottom, Float thickness, const SampledSpectrum& albedo,
+                Float g, int maxDepth, int nSamples)
+        : top(top),
+          bottom(bottom),
+          thickness(std::max(thickness, std::numeric_limits<Float>::min())),
+          g(g),
+          albedo(albedo),
+          maxDepth(maxDepth),
+          nSamples(nSamples) {}
+
+    void Regularize() {
+        top.Regularize();
+        bottom.Regularize();
+    }
+    BxDFFlags Flags() const;
+    SampledSpectrum f(Vector3f wo, Vector3f wi, TransportMode mode) const;
+    std::optional<BSDFSample> Sample_f(
+        Vector3f wo, Float uc, Point2f u, TransportMode mode = TransportMode::Radiance,
+        BxDFReflTransFlags sampleFlags = BxDFReflTransFlags::All) const;
+    Float PDF(Vector3f wo, Vector3f wi, TransportMode mode,
+              BxDFReflTransFlags sampleFlags = BxDFReflTransFlags::All) const;
+
+    const TopBxDF& Top() const { return top; }
+    const BottomBxDF& Bottom() const { return bottom; }
+
+  private:
+    using Interface = TopOrBottomBxDF<TopBxDF, BottomBxDF>;
+    // Transmittance through a slab of height dz along w (sigma_t = 1).
+    static Float Tr(Float dz, Vector3f w) {
+        if (std::abs(dz) <= std::numeric_limits<Float>::min()) return 1;
+        return std::exp(-std::abs(dz / w.z));
+    }
+
+    TopBxDF top;
+    BottomBxDF bottom;
+    Float thickness = 0.01f, g = 0;
+    SampledSpectrum albedo;
+    int maxDepth = 10, nSamples = 1;
+};
+
+// pbrt-v4's "coateddiffuse" and "coatedconductor" BxDFs.
+class CoatedDiffuseBxDF : public LayeredBxDF<DielectricBxDF, DiffuseBxDF, true> {
+  public:
+    using LayeredBxDF::LayeredBxDF;
+};
+class CoatedConductorBxDF : public LayeredBxDF<DielectricBxDF, ConductorBxDF, true> {
+  public:
+    using LayeredBxDF::LayeredBxDF;
+};
+
+// Member definitions live in layered_bxdf.cpp, instantiated for these two configurations.
+extern template class LayeredBxDF<DielectricBxDF, DiffuseBxDF, true>;
+extern template class LayeredBxDF<DielectricBxDF, ConductorBxDF, true>;
+
+}  // namespace kiln
