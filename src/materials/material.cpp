@@ -1,0 +1,182 @@
+#include "materials/material.h"
+
+#include "materials/materials.h"
+#include "spectral/named_spectra.h"
+#include "textures/basic_textures.h"
+#include "textures/texture_parameter_dictionary.h"
+
+namespace kiln {
+
+// Material Method Definitions
+const Material* Material::ChooseMaterial(const MaterialEvalContext& ctx) const {
+    const Material* m = this;
+    for (uint64_t depth = 0; m->IsMix(); ++depth)
+        m = m->GetIf<MixMaterial>()->ChooseMaterial(ctx, depth);
+    return m;
+}
+
+BSDF Material::GetBSDF(const MaterialEvalContext& ctx, SampledWavelengths& lambda) const {
+    const Material* m = ChooseMaterial(ctx);
+    return std::visit(
+        [&](const auto* mtl) -> BSDF {
+            using T = std::remove_cv_t<std::remove_pointer_t<decltype(mtl)>>;
+            if constexpr (std::is_same_v<T, InterfaceMaterial> || std::is_same_v<T, MixMaterial>)
+                return BSDF();
+            else
+                return BSDF(ctx.ns, ctx.dpdus, BxDF(mtl->GetBxDF(ctx, lambda)));
+        },
+        m->Variant());
+}
+
+// Material creation
+namespace {
+
+Spectrum Constant(Float c) { return Spectrum(ConstantSpectrum(c)); }
+
+// "prefix.uroughness"/"prefix.vroughness", each defaulting to "prefix.roughness" (0).
+std::pair<FloatTexture, FloatTexture> GetRoughness(const TextureParameterDictionary& params,
+                                                   const std::string& prefix, ObjectArena& arena) {
+    std::optional<FloatTexture> u = params.GetFloatTextureOrNull(prefix + "uroughness", arena);
+    std::optional<FloatTexture> v = params.GetFloatTextureOrNull(prefix + "vroughness", arena);
+    if (!u || !v) {
+        FloatTexture r = params.GetFloatTexture(prefix + "roughness", 0, arena);
+        if (!u) u = r;
+        if (!v) v = r;
+    }
+    return {*u, *v};
+}
+
+// A dielectric's IOR: "float name" or a spectrum (named glass, pairs, file), else def.
+Spectrum GetEta(const TextureParameterDictionary& params, const std::string& name, Float def) {
+    std::vector<Float> etaArray = params.GetFloatArray(name);
+    if (!etaArray.empty()) return Constant(etaArray[0]);
+    std::optional<Spectrum> eta =
+        params.GetOneSpectrum(name, std::nullopt, SpectrumType::Unbounded);
+    return eta ? *eta : Constant(def);
+}
+
+// A conductor's eta/k (Cu by default) or "reflectance"; SceneError when both are given.
+struct ConductorSpec {
+    std::optional<SpectrumTexture> eta, k, reflectance;
+};
+ConductorSpec GetConductor(const TextureParameterDictionary& params, const std::string& prefix,
+                           const FileLoc& loc, ObjectArena& arena) {
+    ConductorSpec c;
+    c.eta = params.GetSpectrumTextureOrNull(prefix + "eta", SpectrumType::Unbounded, arena);
+    c.k = params.GetSpectrumTextureOrNull(prefix + "k", SpectrumType::Unbounded, arena);
+    c.reflectance = params.GetSpectrumTextureOrNull("reflectance", SpectrumType::Albedo, arena);
+    if (c.reflectance && (c.eta || c.k))
+        throw SceneError(params.Loc("reflectance"),
+                         "both \"reflectance\" and \"" + prefix + "eta\"/\"" + prefix +
+                             "k\" given for a conductor",
+                         "reflectance");
+    if (!c.reflectance) {
+        if (!c.eta) c.eta = arena.New<SpectrumConstantTexture>(*GetNamedSpectrum("metal-Cu-eta"));
+        if (!c.k) c.k = arena.New<SpectrumConstantTexture>(*GetNamedSpectrum("metal-Cu-k"));
+    }
+    return c;
+}
+
+Material CreateDiffuse(const TextureParameterDictionary& params, ObjectArena& arena) {
+    return arena.New<DiffuseMaterial>(
+        params.GetSpectrumTexture("reflectance", Constant(0.5f), SpectrumType::Albedo, arena));
+}
+
+Material CreateMix(const TextureParameterDictionary& params,
+                   const std::map<std::string, Material>& namedMaterials, const FileLoc& loc,
+                   ObjectArena& arena) {
+    std::vector<std::string> names = params.GetStringArray("materials");
+    FileLoc at = params.Has("materials") ? params.Loc("materials") : loc;
+    if (names.size() != 2)
+        throw SceneError(at, "mix material needs two values for \"string materials\"", "materials");
+    std::optional<Material> m[2];
+    for (int i = 0; i < 2; ++i) {
+        if (names[i].empty() || names[i] == "none" || names[i] == "interface") {
+            m[i] = arena.New<InterfaceMaterial>();
+            continue;
+        }
+        auto it = namedMaterials.find(names[i]);
+        if (it == namedMaterials.end())
+            throw SceneError(at, "named material \"" + names[i] + "\" not defined", names[i]);
+        m[i] = it->second;
+    }
+    return arena.New<MixMaterial>(*m[0], *m[1], params.GetFloatTexture("amount", 0.5f, arena));
+}
+
+}  // namespace
+
+Material Material::Create(const std::string& type, const TextureParameterDictionary& params,
+                          const std::map<std::string, Material>& namedMaterials, const FileLoc& loc,
+                          ObjectArena& arena, Diagnostics& diag) {
+    if (type.empty() || type == "none" || type == "interface")
+        return arena.New<InterfaceMaterial>();
+    if (type == "mix") return CreateMix(params, namedMaterials, loc, arena);
+
+    // Unsupported shading modifiers: warn, and read them so they are not reported as unused
+    if (params.Has("displacement")) {
+        params.GetFloatTextureOrNull("displacement", arena);
+        diag.Warn(params.Loc("displacement"), "\"displacement\" is not supported; ignored");
+    }
+    if (params.Has("normalmap")) {
+        params.GetOneString("normalmap", "");
+        diag.Warn(params.Loc("normalmap"), "\"normalmap\" is not supported; ignored");
+    }
+
+    auto remap = [&] { return params.GetOneBool("remaproughness", true); };
+    if (type == "diffuse") return CreateDiffuse(params, arena);
+    if (type == "conductor") {
+        ConductorSpec c = GetConductor(params, "", loc, arena);
+        auto [u, v] = GetRoughness(params, "", arena);
+        return arena.New<ConductorMaterial>(c.eta, c.k, c.reflectance, u, v, remap());
+    }
+    if (type == "dielectric") {
+        Spectrum eta = GetEta(params, "eta", 1.5f);
+        auto [u, v] = GetRoughness(params, "", arena);
+        return arena.New<DielectricMaterial>(eta, u, v, remap());
+    }
+    if (type == "thindielectric")
+        return arena.New<ThinDielectricMaterial>(GetEta(params, "eta", 1.5f));
+    if (type == "coateddiffuse") {
+        SpectrumTexture reflectance =
+            params.GetSpectrumTexture("reflectance", Constant(0.5f), SpectrumType::Albedo, arena);
+        auto [u, v] = GetRoughness(params, "", arena);
+        FloatTexture thickness = params.GetFloatTexture("thickness", 0.01f, arena);
+        Spectrum eta = GetEta(params, "eta", 1.5f);
+        int maxDepth = params.GetOneInt("maxdepth", 10);
+        int nSamples = params.GetOneInt("nsamples", 1);
+        FloatTexture g = params.GetFloatTexture("g", 0, arena);
+        SpectrumTexture albedo =
+            params.GetSpectrumTexture("albedo", Constant(0), SpectrumType::Albedo, arena);
+        return arena.New<CoatedDiffuseMaterial>(reflectance, albedo, u, v, thickness, g, eta,
+                                                maxDepth, nSamples, remap());
+    }
+    if (type == "coatedconductor") {
+        auto [iu, iv] = GetRoughness(params, "interface.", arena);
+        ConductorSpec c = GetConductor(params, "conductor.", loc, arena);
+        auto [cu, cv] = GetRoughness(params, "conductor.", arena);
+        CoatedConductorMaterial::Params p{
+            iu,
+            iv,
+            params.GetFloatTexture("thickness", 0.01f, arena),
+            params.GetFloatTexture("g", 0, arena),
+            GetEta(params, "interface.eta", 1.5f),
+            c.eta,
+            c.k,
+            c.reflectance,
+            cu,
+            cv,
+            params.GetSpectrumTexture("albedo", Constant(0), SpectrumType::Albedo, arena),
+            params.GetOneInt("maxdepth", 10),
+            params.GetOneInt("nsamples", 1),
+            remap()};
+        return arena.New<CoatedConductorMaterial>(std::move(p));
+    }
+    if (type == "measured" || type == "hair" || type == "subsurface" ||
+        type == "diffusetransmission") {
+        diag.Warn(loc, "\"" + type + "\" material is not supported; using diffuse 0.5");
+        return arena.New<DiffuseMaterial>(arena.New<SpectrumConstantTexture>(Constant(0.5f)));
+    }
+    throw SceneError(loc, "unknown material type \"" + type + "\"", type);
+}
+
+}  // namespace kiln

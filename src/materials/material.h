@@ -1,0 +1,76 @@
+// Material: the closed set of surface materials (pbrt-v4's Material). A material evaluates its
+// textures at a surface point and returns the BSDF there.
+#pragma once
+
+#include <map>
+#include <string>
+#include <variant>
+
+#include "core/base/object_arena.h"
+#include "core/parser/diagnostics.h"
+#include "materials/bxdfs/bsdf.h"
+#include "spectral/sampled_spectrum.h"
+#include "textures/texture_eval_context.h"
+
+namespace kiln {
+
+class DiffuseMaterial;
+class ConductorMaterial;
+class DielectricMaterial;
+class ThinDielectricMaterial;
+class CoatedDiffuseMaterial;
+class CoatedConductorMaterial;
+class MixMaterial;
+class InterfaceMaterial;
+class TextureParameterDictionary;
+
+// Material Definition
+class Material {
+  public:
+    using Kind =
+        std::variant<const DiffuseMaterial*, const ConductorMaterial*, const DielectricMaterial*,
+                     const ThinDielectricMaterial*, const CoatedDiffuseMaterial*,
+                     const CoatedConductorMaterial*, const MixMaterial*, const InterfaceMaterial*>;
+
+    template <typename T>
+    requires std::is_constructible_v<Kind, const T*> Material(const T* m) : v(m) {}
+
+    // The BSDF at the point, in the shading frame (ctx.ns, ctx.dpdus). Materials whose index
+    // of refraction varies with wavelength call lambda.TerminateSecondary(). The interface
+    // material returns an invalid BSDF (BSDF()); a mix material first resolves to one of its
+    // components with ChooseMaterial.
+    BSDF GetBSDF(const MaterialEvalContext& ctx, SampledWavelengths& lambda) const;
+
+    // Resolves mix materials (recursively) to a non-mix material, chosen deterministically
+    // from a hash of ctx.p and ctx.wo in proportion to the mix amount (pbrt-v4). Returns this
+    // material for non-mix materials.
+    const Material* ChooseMaterial(const MaterialEvalContext& ctx) const;
+
+    bool IsInterface() const { return Is<InterfaceMaterial>(); }
+    bool IsMix() const { return Is<MixMaterial>(); }
+
+    template <typename T>
+    const T* GetIf() const {
+        auto p = std::get_if<const T*>(&v);
+        return p ? *p : nullptr;
+    }
+    template <typename T>
+    bool Is() const {
+        return std::holds_alternative<const T*>(v);
+    }
+    const Kind& Variant() const { return v; }
+
+    // Creates a material of pbrt-v4 type `type` ("diffuse", "conductor", "dielectric",
+    // "thindielectric", "coateddiffuse", "coatedconductor", "mix", "interface"; "" and "none"
+    // give interface).
+    // Other pbrt-v4 types are replaced by diffuse with a warning at loc; unknown types throw
+    // SceneError. namedMaterials resolves the components of "mix".
+    static Material Create(const std::string& type, const TextureParameterDictionary& params,
+                           const std::map<std::string, Material>& namedMaterials,
+                           const FileLoc& loc, ObjectArena& arena, Diagnostics& diag);
+
+  private:
+    Kind v;
+};
+
+}  // namespace kiln

@@ -1,0 +1,188 @@
+// The materials of pbrt-v4 that kiln supports. Each holds the textures and spectra its BxDF is
+// built from (reachable through accessors, e.g. to derive emissivity = 1 - reflectance) and
+// builds that BxDF at a surface point with GetBxDF.
+//
+// Roughness parameters are pbrt-v4's: "roughness" (or "uroughness"/"vroughness") in the units
+// of the user-facing roughness, turned into Trowbridge-Reitz alpha with RoughnessToAlpha when
+// remaproughness is true (the default), used as alpha directly otherwise.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "materials/bxdfs/bxdf.h"
+#include "materials/material.h"
+#include "spectral/spectrum.h"
+#include "textures/texture.h"
+
+namespace kiln {
+
+// Trowbridge-Reitz distribution from roughness textures evaluated at ctx.
+TrowbridgeReitzDistribution RoughnessDistribution(FloatTexture uRoughness, FloatTexture vRoughness,
+                                                  bool remapRoughness,
+                                                  const TextureEvalContext& ctx);
+// A dielectric's relative IOR at the hero wavelength lambda[0]; terminates the secondary
+// wavelengths if eta varies with wavelength (is not a ConstantSpectrum). 0 is taken as 1.
+Float SampleEta(const Spectrum& eta, SampledWavelengths& lambda);
+
+// DiffuseMaterial Definition
+// Lambertian reflection; reflectance (albedo) clamped to [0, 1].
+class DiffuseMaterial {
+  public:
+    explicit DiffuseMaterial(SpectrumTexture reflectance) : reflectance(reflectance) {}
+    DiffuseBxDF GetBxDF(const MaterialEvalContext& ctx, const SampledWavelengths& lambda) const;
+    const SpectrumTexture& Reflectance() const { return reflectance; }
+
+  private:
+    SpectrumTexture reflectance;
+};
+
+// ConductorMaterial Definition
+// Either eta and k (complex IOR relative to the outside) or, pbrt-v4's alternative, an albedo
+// "reflectance" r giving eta = 1, k = 2 sqrt(r) / sqrt(1 - r).
+class ConductorMaterial {
+  public:
+    ConductorMaterial(std::optional<SpectrumTexture> eta, std::optional<SpectrumTexture> k,
+                      std::optional<SpectrumTexture> reflectance, FloatTexture uRoughness,
+                      FloatTexture vRoughness, bool remapRoughness)
+        : eta(eta),
+          k(k),
+          reflectance(reflectance),
+          uRoughness(uRoughness),
+          vRoughness(vRoughness),
+          remapRoughness(remapRoughness) {}
+    ConductorBxDF GetBxDF(const MaterialEvalContext& ctx, const SampledWavelengths& lambda) const;
+
+    // eta and k are set exactly when reflectance is not.
+    const std::optional<SpectrumTexture>& Eta() const { return eta; }
+    const std::optional<SpectrumTexture>& K() const { return k; }
+    const std::optional<SpectrumTexture>& Reflectance() const { return reflectance; }
+    const FloatTexture& URoughness() const { return uRoughness; }
+    const FloatTexture& VRoughness() const { return vRoughness; }
+    bool RemapRoughness() const { return remapRoughness; }
+
+  private:
+    std::optional<SpectrumTexture> eta, k, reflectance;
+    FloatTexture uRoughness, vRoughness;
+    bool remapRoughness;
+};
+
+// DielectricMaterial Definition
+// Smooth or rough glass-like interface; eta is the IOR inside relative to outside.
+class DielectricMaterial {
+  public:
+    DielectricMaterial(Spectrum eta, FloatTexture uRoughness, FloatTexture vRoughness,
+                       bool remapRoughness)
+        : eta(eta),
+          uRoughness(uRoughness),
+          vRoughness(vRoughness),
+          remapRoughness(remapRoughness) {}
+    DielectricBxDF GetBxDF(const MaterialEvalContext& ctx, SampledWavelengths& lambda) const;
+
+    const Spectrum& Eta() const { return eta; }
+    const FloatTexture& URoughness() const { return uRoughness; }
+    const FloatTexture& VRoughness() const { return vRoughness; }
+    bool RemapRoughness() const { return remapRoughness; }
+
+  private:
+    Spectrum eta;
+    FloatTexture uRoughness, vRoughness;
+    bool remapRoughness;
+};
+
+// ThinDielectricMaterial Definition
+// A thin smooth slab (window pane): reflection and straight-through transmission.
+class ThinDielectricMaterial {
+  public:
+    explicit ThinDielectricMaterial(Spectrum eta) : eta(eta) {}
+    ThinDielectricBxDF GetBxDF(const MaterialEvalContext& ctx, SampledWavelengths& lambda) const;
+    const Spectrum& Eta() const { return eta; }
+
+  private:
+    Spectrum eta;
+};
+
+// CoatedDiffuseMaterial Definition
+// A dielectric coating over a diffuse base, with an optional scattering medium of the given
+// thickness (mean free paths), single-scattering albedo and HG asymmetry g in between.
+class CoatedDiffuseMaterial {
+  public:
+    CoatedDiffuseMaterial(SpectrumTexture reflectance, SpectrumTexture albedo,
+                          FloatTexture uRoughness, FloatTexture vRoughness, FloatTexture thickness,
+                          FloatTexture g, Spectrum eta, int maxDepth, int nSamples,
+                          bool remapRoughness)
+        : reflectance(reflectance),
+          albedo(albedo),
+          uRoughness(uRoughness),
+          vRoughness(vRoughness),
+          thickness(thickness),
+          g(g),
+          eta(eta),
+          maxDepth(maxDepth),
+          nSamples(nSamples),
+          remapRoughness(remapRoughness) {}
+    CoatedDiffuseBxDF GetBxDF(const MaterialEvalContext& ctx, SampledWavelengths& lambda) const;
+
+    const SpectrumTexture& Reflectance() const { return reflectance; }
+    const SpectrumTexture& Albedo() const { return albedo; }
+    const FloatTexture& URoughness() const { return uRoughness; }
+    const FloatTexture& VRoughness() const { return vRoughness; }
+    const FloatTexture& Thickness() const { return thickness; }
+    const FloatTexture& G() const { return g; }
+    const Spectrum& Eta() const { return eta; }
+    int MaxDepth() const { return maxDepth; }
+    int NSamples() const { return nSamples; }
+    bool RemapRoughness() const { return remapRoughness; }
+
+  private:
+    SpectrumTexture reflectance, albedo;
+    FloatTexture uRoughness, vRoughness, thickness, g;
+    Spectrum eta;
+    int maxDepth, nSamples;
+    bool remapRoughness;
+};
+
+// CoatedConductorMaterial Definition
+// A dielectric coating ("interface.*") over a conductor ("conductor.*" or "reflectance"); the
+// conductor's eta and k are taken relative to the coating.
+class CoatedConductorMaterial {
+  public:
+    struct Params {
+        FloatTexture interfaceURoughness, interfaceVRoughness, thickness, g;
+        Spectrum interfaceEta;
+        std::optional<SpectrumTexture> conductorEta, k, reflectance;
+        FloatTexture conductorURoughness, conductorVRoughness;
+        SpectrumTexture albedo;
+        int maxDepth, nSamples;
+        bool remapRoughness;
+    };
+    explicit CoatedConductorMaterial(Params p) : p(std::move(p)) {}
+    CoatedConductorBxDF GetBxDF(const MaterialEvalContext& ctx, SampledWavelengths& lambda) const;
+    const Params& Parameters() const { return p; }
+
+  private:
+    Params p;
+};
+
+// MixMaterial Definition
+// Stochastic selection between two materials: materials[1] with probability amount.
+class MixMaterial {
+  public:
+    MixMaterial(Material m0, Material m1, FloatTexture amount)
+        : materials{m0, m1}, amount(amount) {}
+    // The component used at this point (may itself be a mix), chosen from a hash of ctx.p,
+    // ctx.wo and the nesting depth of this mix (0 for the outermost).
+    const Material* ChooseMaterial(const MaterialEvalContext& ctx, uint64_t depth = 0) const;
+    const Material& GetMaterial(int i) const { return materials[i]; }
+    const FloatTexture& Amount() const { return amount; }
+
+  private:
+    Material materials[2];
+    FloatTexture amount;
+};
+
+// InterfaceMaterial Definition
+// No scattering: marks the boundary of a participating medium.
+class InterfaceMaterial {};
+
+}  // namespace kiln

@@ -1,0 +1,20 @@
+// Perlin noise and its sums over octaves (pbrt-v4's Noise, FBm and Turbulence), used by the
+// procedural textures. Values are dimensionless; Noise is in about [-1, 1] and 0 at integer
+// lattice points.
+#pragma once
+
+#include "core/base/vecmath.h"
+
+namespace kiln {
+
+// Improved Perlin noise (Perlin 2002) at a point.
+Float Noise(Float x, Float y = Float(0.5), Float z = Float(0.5));
+inline Float Noise(Point3f p) { return Noise(p.x, p.y, p.z); }
+
+// Fractional Brownian motion: octaves of noise at frequencies 1.99^i with amplitudes omega^i,
+// truncated where the footprint (dpdx, dpdy) would alias; at most maxOctaves octaves.
+Float FBm(Point3f p, Vector3f dpdx, Vector3f dpdy, Float omega, int maxOctaves);
+// Like FBm with |noise| per octave; aliased octaves are replaced by their mean 0.2.
+Float Turbulence(Point3f p, Vector3f dpdx, Vector3f dpdy, Float omega, int maxOctaves);
+
+}  // namespace kiln

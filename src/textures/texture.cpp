@@ -1,0 +1,101 @@
+#include "textures/texture.h"
+
+#include "textures/basic_textures.h"
+#include "textures/checkerboard_texture.h"
+#include "textures/image_texture.h"
+#include "textures/noise_textures.h"
+#include "textures/texture_parameter_dictionary.h"
+
+namespace kiln {
+
+// Texture dispatch
+Float FloatTexture::Evaluate(const TextureEvalContext& ctx) const {
+    return std::visit([&](const auto* t) { return t->Evaluate(ctx); }, v);
+}
+
+SampledSpectrum SpectrumTexture::Evaluate(const TextureEvalContext& ctx,
+                                          const SampledWavelengths& lambda) const {
+    return std::visit([&](const auto* t) { return t->Evaluate(ctx, lambda); }, v);
+}
+
+// NamedTextures Method Definitions
+NamedTextures::NamedTextures() : imageCache(std::make_shared<ImageTextureCache>()) {}
+
+const std::map<std::string, SpectrumTexture>& NamedTextures::SpectrumTextures(
+    SpectrumType type) const {
+    switch (type) {
+        case SpectrumType::Albedo:
+            return albedoSpectrumTextures;
+        case SpectrumType::Unbounded:
+            return unboundedSpectrumTextures;
+        default:
+            return illuminantSpectrumTextures;
+    }
+}
+
+std::map<std::string, SpectrumTexture>& NamedTextures::SpectrumTextures(SpectrumType type) {
+    const NamedTextures& self = *this;
+    return const_cast<std::map<std::string, SpectrumTexture>&>(self.SpectrumTextures(type));
+}
+
+// Texture creation
+namespace {
+
+// pbrt-v4 texture classes that kiln (or this kind of texture) lacks: ptex, and the noise
+// textures that exist only as float or only as spectrum textures.
+bool IsUnsupportedTexture(const std::string& name) {
+    return name == "fbm" || name == "wrinkled" || name == "windy" || name == "marble" ||
+           name == "ptex";
+}
+
+}  // namespace
+
+FloatTexture CreateFloatTexture(const std::string& name, const Transform& renderFromTexture,
+                                const TextureParameterDictionary& params, const FileLoc& loc,
+                                ObjectArena& arena, Diagnostics& diag) {
+    if (name == "constant") return FloatConstantTexture::Create(params, arena);
+    if (name == "scale") return FloatScaledTexture::Create(params, arena);
+    if (name == "mix") return FloatMixTexture::Create(params, arena);
+    if (name == "directionmix")
+        return FloatDirectionMixTexture::Create(params, renderFromTexture, arena);
+    if (name == "bilerp") return FloatBilerpTexture::Create(params, renderFromTexture, loc, arena);
+    if (name == "checkerboard")
+        return FloatCheckerboardTexture::Create(params, renderFromTexture, loc, arena);
+    if (name == "imagemap") return FloatImageTexture::Create(params, renderFromTexture, loc, arena);
+    if (name == "dots") return FloatDotsTexture::Create(params, renderFromTexture, loc, arena);
+    if (name == "fbm") return FBmTexture::Create(params, renderFromTexture, arena);
+    if (name == "wrinkled") return WrinkledTexture::Create(params, renderFromTexture, arena);
+    if (name == "windy")
+        return arena.New<WindyTexture>(TextureMapping3D::Create(renderFromTexture));
+    if (IsUnsupportedTexture(name)) {
+        diag.Warn(loc, "\"" + name + "\" float texture is not supported; using constant 0.5");
+        return arena.New<FloatConstantTexture>(0.5f);
+    }
+    throw SceneError(loc, "unknown float texture type \"" + name + "\"", name);
+}
+
+SpectrumTexture CreateSpectrumTexture(const std::string& name, const Transform& renderFromTexture,
+                                      const TextureParameterDictionary& params, SpectrumType type,
+                                      const FileLoc& loc, ObjectArena& arena, Diagnostics& diag) {
+    if (name == "constant") return SpectrumConstantTexture::Create(params, type, arena);
+    if (name == "scale") return SpectrumScaledTexture::Create(params, type, arena);
+    if (name == "mix") return SpectrumMixTexture::Create(params, type, arena);
+    if (name == "directionmix")
+        return SpectrumDirectionMixTexture::Create(params, renderFromTexture, type, arena);
+    if (name == "bilerp")
+        return SpectrumBilerpTexture::Create(params, renderFromTexture, type, loc, arena);
+    if (name == "checkerboard")
+        return SpectrumCheckerboardTexture::Create(params, renderFromTexture, type, loc, arena);
+    if (name == "imagemap")
+        return SpectrumImageTexture::Create(params, renderFromTexture, type, loc, arena);
+    if (name == "dots")
+        return SpectrumDotsTexture::Create(params, renderFromTexture, type, loc, arena);
+    if (name == "marble") return MarbleTexture::Create(params, renderFromTexture, arena);
+    if (IsUnsupportedTexture(name)) {
+        diag.Warn(loc, "\"" + name + "\" spectrum texture is not supported; using grey 0.5");
+        return arena.New<SpectrumConstantTexture>(Spectrum(ConstantSpectrum(0.5f)));
+    }
+    throw SceneError(loc, "unknown spectrum texture type \"" + name + "\"", name);
+}
+
+}  // namespace kiln

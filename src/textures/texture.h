@@ -1,0 +1,135 @@
+// Textures: closed sets of float- and spectrum-valued textures (pbrt-v4's FloatTexture and
+// SpectrumTexture) and their creation from "Texture" directives.
+//
+// A FloatTexture returns a dimensionless value (roughness, amount, bump height...) at a
+// surface point. A SpectrumTexture returns a SampledSpectrum at the path's wavelengths; its
+// unit follows the SpectrumType it was created for: albedo (reflectance, in [0, 1]),
+// unbounded (e.g. index of refraction) or illuminant (relative emitted radiance).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <variant>
+
+#include "core/base/object_arena.h"
+#include "core/base/transform.h"
+#include "core/parser/diagnostics.h"
+#include "core/parser/parameter_dictionary.h"
+#include "spectral/sampled_spectrum.h"
+#include "textures/texture_eval_context.h"
+
+namespace kiln {
+
+class FloatConstantTexture;
+class FloatBilerpTexture;
+class FloatCheckerboardTexture;
+class FloatDirectionMixTexture;
+class FloatImageTexture;
+class FloatMixTexture;
+class FloatScaledTexture;
+class FBmTexture;
+class WrinkledTexture;
+class WindyTexture;
+class FloatDotsTexture;
+class MarbleTexture;
+class SpectrumDotsTexture;
+class SpectrumConstantTexture;
+class SpectrumBilerpTexture;
+class SpectrumCheckerboardTexture;
+class SpectrumDirectionMixTexture;
+class SpectrumImageTexture;
+class SpectrumMixTexture;
+class SpectrumScaledTexture;
+class TextureParameterDictionary;
+class ImageTextureCache;
+
+// FloatTexture Definition
+class FloatTexture {
+  public:
+    using Kind = std::variant<const FloatConstantTexture*, const FloatBilerpTexture*,
+                              const FloatCheckerboardTexture*, const FloatDirectionMixTexture*,
+                              const FloatImageTexture*, const FloatMixTexture*,
+                              const FloatScaledTexture*, const FBmTexture*, const WrinkledTexture*,
+                              const WindyTexture*, const FloatDotsTexture*>;
+
+    template <typename T>
+    requires std::is_constructible_v<Kind, const T*> FloatTexture(const T* t) : v(t) {}
+
+    // Dimensionless value at the point.
+    Float Evaluate(const TextureEvalContext& ctx) const;
+
+    template <typename T>
+    const T* GetIf() const {
+        auto p = std::get_if<const T*>(&v);
+        return p ? *p : nullptr;
+    }
+    template <typename T>
+    bool Is() const {
+        return std::holds_alternative<const T*>(v);
+    }
+    const Kind& Variant() const { return v; }
+
+  private:
+    Kind v;
+};
+
+// SpectrumTexture Definition
+class SpectrumTexture {
+  public:
+    using Kind = std::variant<const SpectrumConstantTexture*, const SpectrumBilerpTexture*,
+                              const SpectrumCheckerboardTexture*,
+                              const SpectrumDirectionMixTexture*, const SpectrumImageTexture*,
+                              const SpectrumMixTexture*, const SpectrumScaledTexture*,
+                              const MarbleTexture*, const SpectrumDotsTexture*>;
+
+    template <typename T>
+    requires std::is_constructible_v<Kind, const T*> SpectrumTexture(const T* t) : v(t) {}
+
+    // Values at the wavelengths lambda (unit per the texture's SpectrumType).
+    SampledSpectrum Evaluate(const TextureEvalContext& ctx, const SampledWavelengths& lambda) const;
+
+    template <typename T>
+    const T* GetIf() const {
+        auto p = std::get_if<const T*>(&v);
+        return p ? *p : nullptr;
+    }
+    template <typename T>
+    bool Is() const {
+        return std::holds_alternative<const T*>(v);
+    }
+    const Kind& Variant() const { return v; }
+
+  private:
+    Kind v;
+};
+
+// NamedTextures Definition
+// Textures declared so far, by name; spectrum textures are created once per SpectrumType a
+// material may ask for (pbrt-v4 does the same). imageCache shares MIP maps between image
+// textures with the same file and options; it holds pointers into the scene's ObjectArena and
+// must not outlive it.
+struct NamedTextures {
+    NamedTextures();
+    std::map<std::string, FloatTexture> floatTextures;
+    std::map<std::string, SpectrumTexture> albedoSpectrumTextures, unboundedSpectrumTextures,
+        illuminantSpectrumTextures;
+    std::shared_ptr<ImageTextureCache> imageCache;
+
+    const std::map<std::string, SpectrumTexture>& SpectrumTextures(SpectrumType type) const;
+    std::map<std::string, SpectrumTexture>& SpectrumTextures(SpectrumType type);
+};
+
+// Texture creation from `Texture "name" "float"|"spectrum" "class" ...`. Classes: constant,
+// scale, mix, directionmix, checkerboard, bilerp, imagemap, dots; float only: fbm, wrinkled,
+// windy; spectrum only: marble. ptex (and the float-only/spectrum-only classes asked for the
+// other kind) warn and give a constant 0.5. An unknown class throws SceneError at loc.
+FloatTexture CreateFloatTexture(const std::string& className, const Transform& renderFromTexture,
+                                const TextureParameterDictionary& params, const FileLoc& loc,
+                                ObjectArena& arena, Diagnostics& diag);
+SpectrumTexture CreateSpectrumTexture(const std::string& className,
+                                      const Transform& renderFromTexture,
+                                      const TextureParameterDictionary& params, SpectrumType type,
+                                      const FileLoc& loc, ObjectArena& arena, Diagnostics& diag);
+
+}  // namespace kiln

@@ -1,0 +1,48 @@
+// Where textures are evaluated: the surface point and its screen-space footprint (pbrt-v4's
+// TextureEvalContext and MaterialEvalContext).
+#pragma once
+
+#include "core/base/interaction.h"
+#include "core/base/vecmath.h"
+
+namespace kiln {
+
+// Render-space point p with geometric normal n, surface coordinates uv, and the screen-space
+// derivatives used to filter image textures (zero when unknown: the finest MIP level is used).
+struct TextureEvalContext {
+    Point3f p;
+    Vector3f dpdx, dpdy;
+    Normal3f n;
+    Point2f uv;
+    Float dudx = 0, dudy = 0, dvdx = 0, dvdy = 0;
+    int faceIndex = 0;
+    Float time = 0;  // shutter time in [0, 1]
+
+    TextureEvalContext() = default;
+    TextureEvalContext(const SurfaceInteraction& si)
+        : p(si.p),
+          dpdx(si.dpdx),
+          dpdy(si.dpdy),
+          n(si.n),
+          uv(si.uv),
+          dudx(si.dudx),
+          dudy(si.dudy),
+          dvdx(si.dvdx),
+          dvdy(si.dvdy),
+          faceIndex(si.faceIndex),
+          time(si.time) {}
+};
+
+// What a material needs besides the texture context: the outgoing direction and the shading
+// frame (shading normal ns and tangent dpdus).
+struct MaterialEvalContext : TextureEvalContext {
+    Vector3f wo;
+    Normal3f ns;
+    Vector3f dpdus;
+
+    MaterialEvalContext() = default;
+    MaterialEvalContext(const SurfaceInteraction& si)
+        : TextureEvalContext(si), wo(si.wo), ns(si.shading.n), dpdus(si.shading.dpdu) {}
+};
+
+}  // namespace kiln
