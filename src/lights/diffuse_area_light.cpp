@@ -1,0 +1,72 @@
+#include "lights/diffuse_area_light.h"
+
+#include "core/geometry/shape.h"
+#include "spectral/color.h"
+
+namespace kiln {
+
+DiffuseAreaLight::DiffuseAreaLight(const Transform&, Spectrum Lemit, Float scale,
+                                   const Shape* shape, bool twoSided, Image image,
+                                   const RGBColorSpace* imageColorSpace)
+    : shape(shape),
+      area(shape->Area()),
+      twoSided(twoSided),
+      Lemit(std::move(Lemit)),
+      scale(scale),
+      image(std::move(image)),
+      imageColorSpace(imageColorSpace ? imageColorSpace : &RGBColorSpace::sRGB()) {}
+
+// Emission
+SampledSpectrum DiffuseAreaLight::L(Point3f, Normal3f n, Point2f uv, Vector3f w,
+                                    const SampledWavelengths& lambda) const {
+    if (!twoSided && Dot(n, w) < 0) return SampledSpectrum(0);
+    if (image) {
+        // Image rows run top to bottom while v runs up (pbrt-v4 flips v)
+        Point2f st(uv.x, 1 - uv.y);
+        RGB rgb;
+        for (int c = 0; c < 3; ++c) rgb[c] = std::max<Float>(0, image.BilerpChannel(st, c));
+        return scale * RGBIlluminantSpectrum(*imageColorSpace, rgb).Sample(lambda);
+    }
+    return scale * Lemit.Sample(lambda);
+}
+
+// Sampling
+std::optional<LightLiSample> DiffuseAreaLight::SampleLi(const LightSampleContext& ctx, Point2f u,
+                                                        const SampledWavelengths& lambda,
+                                                        bool) const {
+    ShapeSampleContext shapeCtx(ctx.p, ctx.n, ctx.ns, 0);
+    std::optional<ShapeSample> ss = shape->Sample(shapeCtx, u);
+    if (!ss || !(ss->pdf > 0) || LengthSquared(ss->intr.p - ctx.p) == 0) return {};
+    Vector3f wi = Normalize(ss->intr.p - ctx.p);
+    SampledSpectrum Le = L(ss->intr.p, ss->intr.n, ss->intr.uv, -wi, lambda);
+    if (!Le) return {};
+    return LightLiSample{Le, wi, ss->pdf, ss->intr};
+}
+
+Float DiffuseAreaLight::PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool) const {
+    ShapeSampleContext shapeCtx(ctx.p, ctx.n, ctx.ns, 0);
+    Float pdf = shape->PDF(shapeCtx, wi);
+    return IsFinite(pdf) ? pdf : 0;
+}
+
+// Power
+SampledSpectrum DiffuseAreaLight::Phi(const SampledWavelengths& lambda) const {
+    if (!(area > 0)) return SampledSpectrum(0);
+    SampledSpectrum L(0);
+    if (image) {
+        Point2i res = image.Resolution();
+        for (int y = 0; y < res.y; ++y)
+            for (int x = 0; x < res.x; ++x) {
+                RGB rgb;
+                for (int c = 0; c < 3; ++c)
+                    rgb[c] = std::max<Float>(0, image.GetChannel({x, y}, c));
+                L += RGBIlluminantSpectrum(*imageColorSpace, rgb).Sample(lambda);
+            }
+        L *= scale / (Float(res.x) * res.y);
+    } else {
+        L = scale * Lemit.Sample(lambda);
+    }
+    return Pi * (twoSided ? 2 : 1) * area * L;
+}
+
+}  // namespace kiln

@@ -1,0 +1,54 @@
+// Diffuse area light (pbrt-v4's AreaLightSource "diffuse"): a shape emitting radiance
+// scale * L (W m^-2 sr^-1 nm^-1) uniformly in direction from the side its surface normal points
+// to (both sides if twoSided), or an RGB image over the shape's (u, v) parameterisation.
+#pragma once
+
+#include <optional>
+
+#include "core/base/transform.h"
+#include "core/image/image.h"
+#include "lights/light_sample.h"
+#include "spectral/spectrum.h"
+
+namespace kiln {
+
+class Shape;
+class RGBColorSpace;
+
+class DiffuseAreaLight {
+  public:
+    // shape must outlive the light (the scene's arena holds both). With a non-empty image
+    // (R, G, B channels in imageColorSpace) emission comes from the image at
+    // (u, 1 - v), bilinearly filtered, as pbrt-v4; Lemit is then unused.
+    DiffuseAreaLight(const Transform& renderFromLight, Spectrum Lemit, Float scale,
+                     const Shape* shape, bool twoSided, Image image = {},
+                     const RGBColorSpace* imageColorSpace = nullptr);
+
+    LightType Type() const { return LightType::Area; }
+    const Shape& GetShape() const { return *shape; }
+    Float Area() const { return area; }
+    bool TwoSided() const { return twoSided; }
+
+    // Radiance leaving point p (surface normal n, surface coordinates uv) in direction w.
+    SampledSpectrum L(Point3f p, Normal3f n, Point2f uv, Vector3f w,
+                      const SampledWavelengths& lambda) const;
+    // Samples a point on the shape by solid angle from ctx (the shape's sampling strategy).
+    std::optional<LightLiSample> SampleLi(const LightSampleContext& ctx, Point2f u,
+                                          const SampledWavelengths& lambda,
+                                          bool allowIncompletePDF = false) const;
+    Float PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool allowIncompletePDF = false) const;
+    // pi (2 if two-sided) A scale L (image: its mean), W nm^-1; 0 for a zero-area shape.
+    SampledSpectrum Phi(const SampledWavelengths& lambda) const;
+    void Preprocess(const Bounds3f&) const {}
+
+  private:
+    const Shape* shape;
+    Float area;
+    bool twoSided;
+    Spectrum Lemit;
+    Float scale;
+    Image image;
+    const RGBColorSpace* imageColorSpace;
+};
+
+}  // namespace kiln

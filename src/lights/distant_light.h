@@ -1,0 +1,41 @@
+// Directional light (pbrt-v4's "distant"): radiance scale * L (W m^-2 sr^-1 nm^-1) arriving from
+// one direction, the light's +z axis in render space; the irradiance it gives a surface facing
+// it is scale * L per unit solid angle, i.e. scale * L W m^-2 nm^-1 (delta in direction).
+#pragma once
+
+#include <optional>
+
+#include "core/base/transform.h"
+#include "lights/light_sample.h"
+#include "spectral/spectrum.h"
+
+namespace kiln {
+
+class DistantLight {
+  public:
+    // renderFromLight maps the light's +z axis to the direction towards the light.
+    DistantLight(const Transform& renderFromLight, Spectrum Lemit, Float scale);
+
+    LightType Type() const { return LightType::DeltaDirection; }
+    // Unit render-space direction from the scene towards the light.
+    Vector3f Direction() const { return wLight; }
+
+    // Li = scale L from Direction(); pdf 1 (delta); pLight lies beyond the scene's bounds.
+    std::optional<LightLiSample> SampleLi(const LightSampleContext& ctx, Point2f u,
+                                          const SampledWavelengths& lambda,
+                                          bool allowIncompletePDF = false) const;
+    Float PDF_Li(const LightSampleContext&, Vector3f, bool = false) const { return 0; }
+    // Power through the disk the scene's bounding sphere presents: scale L pi r^2, W nm^-1.
+    SampledSpectrum Phi(const SampledWavelengths& lambda) const;
+    // Learns the scene's bounding sphere (needed by SampleLi and Phi).
+    void Preprocess(const Bounds3f& sceneBounds) const;
+
+  private:
+    Vector3f wLight;
+    Spectrum Lemit;
+    Float scale;
+    mutable Point3f sceneCenter;
+    mutable Float sceneRadius = 0;
+};
+
+}  // namespace kiln

@@ -1,0 +1,112 @@
+// Light: the closed set of light sources behind one small value type (pbrt-v4's Light, with
+// std::variant of pointers in place of its TaggedPointer). Light objects live in the scene's
+// ObjectArena; a Light is a pointer-sized handle that may be copied freely.
+//
+// Units: radiance L, Le and LightLiSample::L in W m^-2 sr^-1 nm^-1, intensity in
+// W sr^-1 nm^-1, power Phi in W nm^-1, all at each of the sampled wavelengths.
+//
+// Photometric normalisation (as pbrt-v4): every emission spectrum given in a scene is divided
+// by its luminance so that "scale" sets the luminance. kiln's film reports
+// Y = integral(L ybar) / integral(ybar) (docs/architecture.md), so luminance here is
+// SpectrumToPhotometric(s) / CIE_Y_integral: an "rgb L [1 1 1]" light keeps the colour
+// space's illuminant unchanged and renders with Y = scale, exactly as pbrt-v4 renders it.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <variant>
+
+#include "core/base/object_arena.h"
+#include "core/base/transform.h"
+#include "lights/diffuse_area_light.h"
+#include "lights/distant_light.h"
+#include "lights/image_infinite_light.h"
+#include "lights/light_sample.h"
+#include "lights/point_light.h"
+#include "lights/spot_light.h"
+#include "lights/uniform_infinite_light.h"
+
+namespace kiln {
+
+class ParameterDictionary;
+class Shape;
+class Diagnostics;
+struct FileLoc;
+
+class Light {
+  public:
+    // The closed set: add a kind here (and its header above) to add a light type.
+    using Kind = std::variant<const PointLight*, const SpotLight*, const DistantLight*,
+                              const DiffuseAreaLight*, const UniformInfiniteLight*,
+                              const ImageInfiniteLight*>;
+
+    template <typename T>
+    requires std::is_constructible_v<Kind, const T*> Light(const T* light) : kind(light) {}
+
+    LightType Type() const {
+        return std::visit([](auto l) { return l->Type(); }, kind);
+    }
+    // Emitted power, W nm^-1 at each wavelength. Infinite and distant lights need Preprocess.
+    SampledSpectrum Phi(const SampledWavelengths& lambda) const {
+        return std::visit([&](auto l) { return l->Phi(lambda); }, kind);
+    }
+    // Incident radiance at ctx.p from a direction sampled by solid angle (pdf per sr; 1 for
+    // delta lights); nullopt if no light arrives or the sample is invalid.
+    std::optional<LightLiSample> SampleLi(const LightSampleContext& ctx, Point2f u,
+                                          const SampledWavelengths& lambda,
+                                          bool allowIncompletePDF = false) const {
+        return std::visit([&](auto l) { return l->SampleLi(ctx, u, lambda, allowIncompletePDF); },
+                          kind);
+    }
+    // Density per sr with which SampleLi would pick wi (0 for delta lights).
+    Float PDF_Li(const LightSampleContext& ctx, Vector3f wi,
+                 bool allowIncompletePDF = false) const {
+        return std::visit([&](auto l) { return l->PDF_Li(ctx, wi, allowIncompletePDF); }, kind);
+    }
+    // Area lights: radiance leaving surface point p (normal n, surface uv) in direction w.
+    // 0 for the other kinds.
+    SampledSpectrum L(Point3f p, Normal3f n, Point2f uv, Vector3f w,
+                      const SampledWavelengths& lambda) const;
+    // Infinite lights: radiance arriving along a ray that leaves the scene. 0 for the others.
+    SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const;
+    // Tells distant and infinite lights the scene's extent (call before Phi and SampleLi).
+    void Preprocess(const Bounds3f& sceneBounds) const {
+        std::visit([&](auto l) { l->Preprocess(sceneBounds); }, kind);
+    }
+
+    template <typename T>
+    bool Is() const {
+        return std::holds_alternative<const T*>(kind);
+    }
+    template <typename T>
+    const T* GetIf() const {
+        auto p = std::get_if<const T*>(&kind);
+        return p ? *p : nullptr;
+    }
+    const Kind& Variant() const { return kind; }
+    bool operator==(const Light& o) const { return kind == o.kind; }
+
+    // Light "name" (pbrt-v4): "point" (I, scale, power, from), "spot" (I, scale, power, from,
+    // to, coneangle, conedeltaangle), "distant" (L, scale, from, to, illuminance), "infinite"
+    // (L or filename, scale, illuminance; portal is warned about and ignored). "goniometric"
+    // and "projection" are warned about and give nullopt; other names throw SceneError.
+    static std::optional<Light> Create(const std::string& name, const ParameterDictionary& params,
+                                       const Transform& renderFromLight, const FileLoc& loc,
+                                       ObjectArena& arena, Diagnostics& diag);
+    // AreaLightSource "diffuse" (L, scale, power, twosided, filename) on `shape`; other names
+    // throw SceneError.
+    static Light CreateArea(const std::string& name, const ParameterDictionary& params,
+                            const Transform& renderFromLight, const Shape& shape,
+                            const FileLoc& loc, ObjectArena& arena, Diagnostics& diag);
+
+  private:
+    Kind kind;
+};
+
+// Luminance Y of an emission spectrum in kiln's convention (SpectrumToPhotometric /
+// CIE_Y_integral; for RGBIlluminantSpectrum that of its illuminant, as pbrt-v4), the value
+// pbrt-v4's light creation divides by.
+Float EmissionLuminance(const Spectrum& s);
+
+}  // namespace kiln

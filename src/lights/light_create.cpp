@@ -1,0 +1,258 @@
+// Light creation from scene parameters (pbrt-v4's Light::Create and Light::CreateArea), with
+// pbrt-v4's parameter names, defaults and photometric normalisation (see light.h).
+#include <cmath>
+#include <stdexcept>
+
+#include "core/geometry/shape.h"
+#include "core/image/image.h"
+#include "core/parser/diagnostics.h"
+#include "core/parser/parameter_dictionary.h"
+#include "lights/light.h"
+#include "lights/sphere_mappings.h"
+#include "spectral/color.h"
+
+namespace kiln {
+
+namespace {
+
+const RGBColorSpace& ColorSpaceOf(const ParameterDictionary& params) {
+    const RGBColorSpace* cs = params.ColorSpace();
+    return cs ? *cs : RGBColorSpace::sRGB();
+}
+
+// scale / luminance(s): "scale" then sets the luminance (left alone for a spectrum with no
+// luminance, which emits nothing visible anyway).
+Float PhotometricScale(Float scale, const Spectrum& s) {
+    Float lum = EmissionLuminance(s);
+    return lum > 0 ? scale / lum : scale;
+}
+
+// The transform taking local coordinates in frame f to the frame's space.
+Transform FromFrame(const Frame& f) {
+    SquareMatrix4 m;
+    for (int i = 0; i < 3; ++i) {
+        m.m[i][0] = f.x[i];
+        m.m[i][1] = f.y[i];
+        m.m[i][2] = f.z[i];
+    }
+    return Transform(m, m.Transposed());
+}
+
+// Reads an emission image, keeping its R, G, B channels, and the colour space its file names
+// (sRGB if none, as pbrt-v4); SceneError if that fails.
+Image ReadEmissionImage(const std::string& filename, const FileLoc& loc,
+                        const RGBColorSpace** colorSpace) {
+    Image image;
+    ImageMetadata metadata;
+    try {
+        image = Image::Read(filename, &metadata);
+    } catch (const std::exception& e) {
+        throw SceneError(loc, e.what(), filename);
+    }
+    if (image.ChannelIndex("R") < 0 || image.ChannelIndex("G") < 0 || image.ChannelIndex("B") < 0)
+        throw SceneError(loc, "image used as a light source must have R, G and B channels",
+                         filename);
+    image = image.SelectChannels({"R", "G", "B"});
+    Point2i res = image.Resolution();
+    for (int y = 0; y < res.y; ++y)
+        for (int x = 0; x < res.x; ++x)
+            for (int c = 0; c < 3; ++c)
+                if (!std::isfinite(image.GetChannel({x, y}, c)))
+                    throw SceneError(loc,
+                                     "image has infinite or not-a-number pixels and so is not "
+                                     "suitable as a light source",
+                                     filename);
+    *colorSpace = metadata.colorSpace ? metadata.colorSpace : &RGBColorSpace::sRGB();
+    return image;
+}
+
+// Luminance of an RGB in colour space cs (the Y row of its RGB -> XYZ matrix).
+Float RGBLuminance(const RGBColorSpace& cs, Float r, Float g, Float b) {
+    const ColorMatrix& m = cs.XYZFromRGB();
+    return m[1][0] * r + m[1][1] * g + m[1][2] * b;
+}
+
+// Individual light kinds
+Light CreatePoint(const ParameterDictionary& params, const Transform& renderFromLight,
+                  ObjectArena& arena) {
+    const RGBColorSpace& cs = ColorSpaceOf(params);
+    Spectrum I = *params.GetOneSpectrum("I", Spectrum(cs.Illuminant()), SpectrumType::Illuminant);
+    Float sc = PhotometricScale(params.GetOneFloat("scale", 1), I);
+    Float phi_v = params.GetOneFloat("power", -1);
+    if (phi_v > 0) sc *= phi_v / (4 * Pi);
+    Point3f from = params.GetOnePoint3f("from", Point3f(0, 0, 0));
+    Transform t = renderFromLight * Translate(Vector3f(from));
+    return arena.New<PointLight>(t, std::move(I), sc);
+}
+
+Light CreateSpot(const ParameterDictionary& params, const Transform& renderFromLight,
+                 ObjectArena& arena) {
+    const RGBColorSpace& cs = ColorSpaceOf(params);
+    Spectrum I = *params.GetOneSpectrum("I", Spectrum(cs.Illuminant()), SpectrumType::Illuminant);
+    Float sc = PhotometricScale(params.GetOneFloat("scale", 1), I);
+    Float coneangle = params.GetOneFloat("coneangle", 30);
+    Float conedelta = params.GetOneFloat("conedeltaangle", 5);
+    Point3f from = params.GetOnePoint3f("from", Point3f(0, 0, 0));
+    Point3f to = params.GetOnePoint3f("to", Point3f(0, 0, 1));
+    // Light space: origin at `from`, +z towards `to`
+    Transform t =
+        renderFromLight * Translate(Vector3f(from)) * FromFrame(Frame::FromZ(Normalize(to - from)));
+    Float phi_v = params.GetOneFloat("power", -1);
+    if (phi_v > 0) {
+        Float k_e = SpotLight::ConeSolidAngle(std::cos(Radians(coneangle - conedelta)),
+                                              std::cos(Radians(coneangle)));
+        if (k_e > 0) sc *= phi_v / k_e;
+    }
+    return arena.New<SpotLight>(t, std::move(I), sc, coneangle, coneangle - conedelta);
+}
+
+Light CreateDistant(const ParameterDictionary& params, const Transform& renderFromLight,
+                    ObjectArena& arena) {
+    const RGBColorSpace& cs = ColorSpaceOf(params);
+    Spectrum L = *params.GetOneSpectrum("L", Spectrum(cs.Illuminant()), SpectrumType::Illuminant);
+    Float sc = PhotometricScale(params.GetOneFloat("scale", 1), L);
+    Point3f from = params.GetOnePoint3f("from", Point3f(0, 0, 0));
+    Point3f to = params.GetOnePoint3f("to", Point3f(0, 0, 1));
+    // Light space: +z points from `to` towards `from` (towards the light)
+    Transform t = renderFromLight * FromFrame(Frame::FromZ(Normalize(from - to)));
+    // Illuminance on a surface facing the light is scale * luminance(L)
+    Float E_v = params.GetOneFloat("illuminance", -1);
+    if (E_v > 0) sc *= E_v;
+    return arena.New<DistantLight>(t, std::move(L), sc);
+}
+
+Light CreateInfinite(const ParameterDictionary& params, const Transform& renderFromLight,
+                     const FileLoc& loc, ObjectArena& arena, Diagnostics& diag) {
+    const RGBColorSpace& cs = ColorSpaceOf(params);
+    std::optional<Spectrum> L = params.GetOneSpectrum("L", std::nullopt, SpectrumType::Illuminant);
+    Float scale = params.GetOneFloat("scale", 1);
+    std::string filename = params.GetOneFilename("filename", "");
+    Float E_v = params.GetOneFloat("illuminance", -1);
+    if (!params.GetPoint3fArray("portal").empty())
+        diag.Warn(params.Loc("portal"),
+                  "\"portal\" for infinite lights is not supported by kiln; ignored");
+    if (L && !filename.empty())
+        throw SceneError(loc,
+                         "can't specify both emission \"L\" and \"filename\" for an "
+                         "infinite light",
+                         "infinite");
+
+    if (filename.empty()) {
+        // Uniform: the given spectrum or the colour space's illuminant, luminance 1 * scale;
+        // a uniform radiance L_v gives illuminance pi L_v on any surface
+        Spectrum Le = L ? *L : Spectrum(cs.Illuminant());
+        scale = PhotometricScale(scale, Le);
+        if (E_v > 0) scale *= E_v / Pi;
+        return arena.New<UniformInfiniteLight>(renderFromLight, std::move(Le), scale);
+    }
+
+    // Environment map, in the colour space its file names
+    const RGBColorSpace* imageCSp = nullptr;
+    Image image = ReadEmissionImage(filename, loc, &imageCSp);
+    const RGBColorSpace& imageCS = *imageCSp;
+    scale = PhotometricScale(scale, Spectrum(imageCS.Illuminant()));
+    if (E_v > 0) {
+        // Illuminance on an upward-facing (+z in light space) patch: sum of luminance cos theta
+        // times each pixel's solid angle. (pbrt-v4 weights pixels with 2 pi / (w h) here
+        // instead of their solid angle 4 pi / (w h), which doubles the illuminance it gives;
+        // kiln gives the requested illuminance.)
+        ImageInfiniteLight map(Transform(), image, &imageCS, 1, filename);
+        Point2i res = image.Resolution();
+        double k_e = 0;
+        for (int y = 0; y < res.y; ++y)
+            for (int x = 0; x < res.x; ++x) {
+                Point2f st((x + 0.5f) / res.x, (y + 0.5f) / res.y);
+                Vector3f w = map.DirectionFromST(st);
+                if (w.z <= 0) continue;
+                Float lum = RGBLuminance(imageCS, image.GetChannel({x, y}, 0),
+                                         image.GetChannel({x, y}, 1), image.GetChannel({x, y}, 2));
+                k_e += double(lum) * w.z * map.SolidAnglePerUnitST(w);
+            }
+        k_e /= double(res.x) * res.y;
+        if (k_e > 0) scale *= Float(E_v / k_e);
+    }
+    try {
+        return arena.New<ImageInfiniteLight>(renderFromLight, image, &imageCS, scale, filename);
+    } catch (const std::invalid_argument& e) {
+        throw SceneError(loc, e.what(), filename);
+    }
+}
+
+}  // namespace
+
+// Light::Create
+std::optional<Light> Light::Create(const std::string& name, const ParameterDictionary& params,
+                                   const Transform& renderFromLight, const FileLoc& loc,
+                                   ObjectArena& arena, Diagnostics& diag) {
+    std::optional<Light> light;
+    if (name == "point")
+        light = CreatePoint(params, renderFromLight, arena);
+    else if (name == "spot")
+        light = CreateSpot(params, renderFromLight, arena);
+    else if (name == "distant")
+        light = CreateDistant(params, renderFromLight, arena);
+    else if (name == "infinite")
+        light = CreateInfinite(params, renderFromLight, loc, arena, diag);
+    else if (name == "goniometric" || name == "projection") {
+        diag.Warn(loc, "\"" + name + "\" lights are not supported by kiln; light ignored");
+        return std::nullopt;
+    } else
+        throw SceneError(loc, "unknown light type", name);
+    params.ReportUnused(diag);
+    return light;
+}
+
+// Light::CreateArea
+Light Light::CreateArea(const std::string& name, const ParameterDictionary& params,
+                        const Transform& renderFromLight, const Shape& shape, const FileLoc& loc,
+                        ObjectArena& arena, Diagnostics& diag) {
+    if (name != "diffuse") throw SceneError(loc, "unknown area light type", name);
+
+    const RGBColorSpace& cs = ColorSpaceOf(params);
+    std::optional<Spectrum> L = params.GetOneSpectrum("L", std::nullopt, SpectrumType::Illuminant);
+    Float scale = params.GetOneFloat("scale", 1);
+    bool twoSided = params.GetOneBool("twosided", false);
+    std::string filename = params.GetOneFilename("filename", "");
+
+    // Emission from an image over (u, v), or a spectrum (default: the colour space's white)
+    Image image;
+    const RGBColorSpace* imageCS = nullptr;
+    if (!filename.empty()) {
+        if (L)
+            throw SceneError(loc, "both \"L\" and \"filename\" specified for a diffuse area light",
+                             filename);
+        image = ReadEmissionImage(filename, loc, &imageCS);
+    }
+    Spectrum Le = L ? *L : Spectrum(cs.Illuminant());
+    scale = PhotometricScale(scale, image ? Spectrum(imageCS->Illuminant()) : Le);
+
+    // "power": the luminous power of the emission over the whole shape, per pbrt-v4
+    Float phi_v = params.GetOneFloat("power", -1);
+    if (phi_v > 0) {
+        Float k_e = 1;
+        if (image) {
+            Point2i res = image.Resolution();
+            double sum = 0;
+            for (int y = 0; y < res.y; ++y)
+                for (int x = 0; x < res.x; ++x)
+                    sum += RGBLuminance(*imageCS, image.GetChannel({x, y}, 0),
+                                        image.GetChannel({x, y}, 1), image.GetChannel({x, y}, 2));
+            k_e = Float(sum / (double(res.x) * res.y));
+        }
+        k_e *= (twoSided ? 2 : 1) * shape.Area() * Pi;
+        if (k_e > 0)
+            scale *= phi_v / k_e;
+        else
+            diag.Warn(loc,
+                      "\"power\" given for an area light that emits nothing (zero area or "
+                      "black emission); ignored");
+    }
+
+    const Shape* s = arena.New<Shape>(shape);
+    Light light = arena.New<DiffuseAreaLight>(renderFromLight, std::move(Le), scale, s, twoSided,
+                                              std::move(image), imageCS);
+    params.ReportUnused(diag);
+    return light;
+}
+
+}  // namespace kiln

@@ -1,0 +1,47 @@
+// What every light shares: its type, the context of a light sample (the receiving point) and
+// the incident-radiance sample a light returns (pbrt-v4's LightType, LightSampleContext and
+// LightLiSample).
+//
+// Units: radiance in W m^-2 sr^-1 nm^-1 at each sampled wavelength; pdfs per steradian of
+// incident direction at the receiving point (the sample pdf of a delta light is 1, a formal
+// value that cancels against the delta distribution).
+#pragma once
+
+#include "core/base/interaction.h"
+#include "core/base/vecmath.h"
+#include "spectral/sampled_spectrum.h"
+
+namespace kiln {
+
+// How a light's emission is distributed (pbrt-v4): delta in position (point, spot), delta in
+// direction (distant), over a surface (area) or over all directions at infinity (infinite).
+enum class LightType { DeltaPosition, DeltaDirection, Area, Infinite };
+
+inline bool IsDeltaLight(LightType type) {
+    return type == LightType::DeltaPosition || type == LightType::DeltaDirection;
+}
+
+// The point receiving light: render-space position, geometric normal n and shading normal ns
+// (both zero for points in a medium).
+struct LightSampleContext {
+    Point3f p;
+    Normal3f n, ns;
+
+    LightSampleContext() = default;
+    LightSampleContext(Point3f p, Normal3f n, Normal3f ns) : p(p), n(n), ns(ns) {}
+    LightSampleContext(const SurfaceInteraction& si) : p(si.p), n(si.n), ns(si.shading.n) {}
+    // A point with no surface (pbrt-v4 keeps only the position of a plain Interaction).
+    LightSampleContext(const Interaction& intr) : p(intr.p) {}
+};
+
+// Incident radiance L arriving from direction wi (unit, pointing away from the receiving point
+// towards the light), drawn with solid-angle density pdf; pLight is the point on the light (a
+// point beyond the scene's bounding sphere for infinite and distant lights) for shadow rays.
+struct LightLiSample {
+    SampledSpectrum L;
+    Vector3f wi;
+    Float pdf = 0;
+    Interaction pLight;
+};
+
+}  // namespace kiln

@@ -1,0 +1,36 @@
+// Isotropic point light (pbrt-v4's "point"): radiant intensity I (W sr^-1 nm^-1) from one point.
+#pragma once
+
+#include <optional>
+
+#include "core/base/transform.h"
+#include "lights/light_sample.h"
+#include "spectral/spectrum.h"
+
+namespace kiln {
+
+class PointLight {
+  public:
+    // I is scaled by `scale` (which already holds pbrt-v4's photometric normalisation);
+    // renderFromLight places the light at its origin.
+    PointLight(const Transform& renderFromLight, Spectrum I, Float scale);
+
+    LightType Type() const { return LightType::DeltaPosition; }
+    Point3f Position() const { return position; }
+
+    // Li = scale I / r^2 towards the light; pdf 1 (delta).
+    std::optional<LightLiSample> SampleLi(const LightSampleContext& ctx, Point2f u,
+                                          const SampledWavelengths& lambda,
+                                          bool allowIncompletePDF = false) const;
+    Float PDF_Li(const LightSampleContext&, Vector3f, bool = false) const { return 0; }
+    // Radiant power 4 pi scale I, W nm^-1.
+    SampledSpectrum Phi(const SampledWavelengths& lambda) const;
+    void Preprocess(const Bounds3f&) const {}
+
+  private:
+    Point3f position;
+    Spectrum I;
+    Float scale;
+};
+
+}  // namespace kiln

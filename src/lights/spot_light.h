@@ -1,0 +1,43 @@
+// Spotlight (pbrt-v4's "spot"): a point light whose intensity scale * I (W sr^-1 nm^-1) is
+// full inside the cone of half-angle `falloffStart` around the light's +z axis and falls off
+// smoothly (smoothstep in cos theta) to zero at half-angle `totalWidth`.
+#pragma once
+
+#include <optional>
+
+#include "core/base/transform.h"
+#include "lights/light_sample.h"
+#include "spectral/spectrum.h"
+
+namespace kiln {
+
+class SpotLight {
+  public:
+    // Angles in degrees; renderFromLight maps the light's +z axis to the spot direction.
+    SpotLight(const Transform& renderFromLight, Spectrum I, Float scale, Float totalWidthDeg,
+              Float falloffStartDeg);
+
+    LightType Type() const { return LightType::DeltaPosition; }
+
+    // Intensity towards light-space direction w (unit), W sr^-1 nm^-1.
+    SampledSpectrum I(Vector3f wLight, const SampledWavelengths& lambda) const;
+
+    std::optional<LightLiSample> SampleLi(const LightSampleContext& ctx, Point2f u,
+                                          const SampledWavelengths& lambda,
+                                          bool allowIncompletePDF = false) const;
+    Float PDF_Li(const LightSampleContext&, Vector3f, bool = false) const { return 0; }
+    // scale I 2 pi ((1 - cos start) + (cos start - cos end) / 2), W nm^-1.
+    SampledSpectrum Phi(const SampledWavelengths& lambda) const;
+    void Preprocess(const Bounds3f&) const {}
+
+    // The solid-angle factor of Phi: 2 pi ((1 - cos start) + (cos start - cos end) / 2), sr.
+    static Float ConeSolidAngle(Float cosFalloffStart, Float cosFalloffEnd);
+
+  private:
+    Transform renderFromLight;
+    Point3f position;
+    Spectrum Iemit;
+    Float scale, cosFalloffStart, cosFalloffEnd;
+};
+
+}  // namespace kiln

@@ -1,0 +1,38 @@
+// Constant environment (pbrt-v4's "infinite" light without an image): radiance scale * L
+// (W m^-2 sr^-1 nm^-1) arriving from every direction at infinity.
+#pragma once
+
+#include <optional>
+
+#include "core/base/transform.h"
+#include "lights/light_sample.h"
+#include "spectral/spectrum.h"
+
+namespace kiln {
+
+class UniformInfiniteLight {
+  public:
+    UniformInfiniteLight(const Transform& renderFromLight, Spectrum Lemit, Float scale);
+
+    LightType Type() const { return LightType::Infinite; }
+
+    // Radiance along a ray that escapes the scene: scale L.
+    SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const;
+    // Uniform over the sphere (pdf 1 / 4 pi sr^-1). With allowIncompletePDF (MIS with BSDF
+    // sampling) no sample is drawn and PDF_Li is 0, as in pbrt-v4: BSDF sampling covers it.
+    std::optional<LightLiSample> SampleLi(const LightSampleContext& ctx, Point2f u,
+                                          const SampledWavelengths& lambda,
+                                          bool allowIncompletePDF = false) const;
+    Float PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool allowIncompletePDF = false) const;
+    // 4 pi^2 r^2 scale L, W nm^-1 (r: the scene's bounding-sphere radius).
+    SampledSpectrum Phi(const SampledWavelengths& lambda) const;
+    void Preprocess(const Bounds3f& sceneBounds) const;
+
+  private:
+    Spectrum Lemit;
+    Float scale;
+    mutable Point3f sceneCenter;
+    mutable Float sceneRadius = 0;
+};
+
+}  // namespace kiln

@@ -1,0 +1,80 @@
+// Light samplers: PowerLightSampler's probabilities follow emitted power and its samples follow
+// its probabilities (chi-square); UniformLightSampler is uniform; unknown lights have PMF 0.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "light_test_util.h"
+#include "lights/light_sampler.h"
+
+using namespace kiln;
+using namespace kiln::testing;
+
+namespace {
+
+template <typename Sampler>
+ChiSquareResult SampleFrequencies(const Sampler& sampler, std::span<const Light> lights) {
+    std::vector<double> observed(lights.size(), 0), expected(lights.size(), 0);
+    RNG rng(11);
+    const int n = 100000;
+    for (int i = 0; i < n; ++i) {
+        auto s = sampler.Sample(rng.UniformFloat());
+        EXPECT_TRUE(s.has_value());
+        int index = int(s->light - lights.data());
+        EXPECT_FLOAT_EQ(s->p, sampler.PMF(s->light));
+        observed[index] += 1;
+    }
+    for (size_t i = 0; i < lights.size(); ++i) expected[i] = n * sampler.PMF(&lights[i]);
+    return ChiSquareTest(observed, expected, 0.01, 2);
+}
+
+}  // namespace
+
+TEST(PowerLightSampler, ProbabilitiesFollowPower) {
+    std::vector<PointLight> points;
+    for (Float I : {1.f, 2.f, 0.f, 5.f, 0.5f})
+        points.emplace_back(Transform(), Spectrum(ConstantSpectrum(I)), 1);
+    SpotLight spot(Transform(), Spectrum(ConstantSpectrum(4)), 1, 30, 25);
+    DistantLight distant(Transform(), Spectrum(ConstantSpectrum(0.1f)), 1);
+    std::vector<Light> lights;
+    for (const PointLight& p : points) lights.push_back(Light(&p));
+    lights.push_back(Light(&spot));
+    lights.push_back(Light(&distant));
+    for (const Light& l : lights) l.Preprocess(Bounds3f(Point3f(0, 0, 0), Point3f(2, 2, 2)));
+
+    PowerLightSampler sampler(lights);
+    SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.5f);
+    double total = 0, sumPMF = 0;
+    for (const Light& l : lights) total += l.Phi(lambda)[0];
+    for (const Light& l : lights) {
+        EXPECT_NEAR(sampler.PMF(&l), l.Phi(lambda)[0] / total, 1e-5);
+        sumPMF += sampler.PMF(&l);
+    }
+    EXPECT_NEAR(sumPMF, 1, 1e-5);
+    EXPECT_EQ(sampler.PMF(&lights[2]), 0);
+    Light stranger(&points[0]);
+    EXPECT_EQ(sampler.PMF(&stranger), 0);
+    ChiSquareResult r = SampleFrequencies(sampler, lights);
+    EXPECT_TRUE(r.passed) << r.message;
+}
+
+TEST(PowerLightSampler, ZeroPowerAndEmpty) {
+    PointLight dark(Transform(), Spectrum(ConstantSpectrum(0)), 1);
+    std::vector<Light> lights = {Light(&dark), Light(&dark)};
+    PowerLightSampler sampler(lights);
+    EXPECT_FLOAT_EQ(sampler.PMF(&lights[0]), 0.5f);
+    EXPECT_FALSE(PowerLightSampler(std::span<const Light>()).Sample(0.5f).has_value());
+}
+
+TEST(UniformLightSampler, Uniform) {
+    PointLight a(Transform(), Spectrum(ConstantSpectrum(1)), 1);
+    PointLight b(Transform(), Spectrum(ConstantSpectrum(100)), 1);
+    std::vector<Light> lights = {Light(&a), Light(&b), Light(&b)};
+    UniformLightSampler sampler(lights);
+    for (const Light& l : lights) EXPECT_FLOAT_EQ(sampler.PMF(&l), 1.f / 3);
+    Light stranger(&a);
+    EXPECT_EQ(sampler.PMF(&stranger), 0);
+    ChiSquareResult r = SampleFrequencies(sampler, lights);
+    EXPECT_TRUE(r.passed) << r.message;
+    EXPECT_FALSE(UniformLightSampler(std::span<const Light>()).Sample(0.5f).has_value());
+}
