@@ -1,0 +1,185 @@
+#include "core/render/command_line.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <stdexcept>
+
+#include "core/parser/parser.h"
+#include "core/render/renderer.h"
+#include "core/render/scene_builder.h"
+
+#ifndef KILN_VERSION
+#define KILN_VERSION "0.0.0"
+#endif
+
+namespace kiln {
+
+namespace {
+
+int ParseInt(const std::string& flag, const std::string& v, int minValue) {
+    size_t used = 0;
+    int value = 0;
+    try {
+        value = std::stoi(v, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != v.size() || v.empty() || value < minValue)
+        throw std::invalid_argument(flag + " expects an integer >= " + std::to_string(minValue) +
+                                    ", got '" + v + "'");
+    return value;
+}
+
+Float ParseFloat(const std::string& flag, const std::string& v) {
+    size_t used = 0;
+    Float value = 0;
+    try {
+        value = std::stof(v, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != v.size() || v.empty() || !std::isfinite(value))
+        throw std::invalid_argument(flag + " expects a number, got '" + v + "'");
+    return value;
+}
+
+// Ctrl-C: the first one asks the render to stop and write what it has; a second one kills.
+// A signal handler can only reach static storage, hence this one process-wide flag.
+std::atomic<bool> interruptRequested{false};
+
+extern "C" void HandleInterrupt(int) {
+    interruptRequested.store(true);
+    std::signal(SIGINT, SIG_DFL);
+}
+
+}  // namespace
+
+std::string UsageText() {
+    return "usage: kiln SCENE.pbrt [options]\n"
+           "  -o, --output FILE     output image (EXR, PNG, JPEG, TIFF, ... by extension);\n"
+           "                        may repeat; default: the scene's Film \"filename\"\n"
+           "  --spp N               samples per pixel (overrides the scene's sampler)\n"
+           "  --threads N           worker threads (default: all cores)\n"
+           "  --seed S              sampler seed\n"
+           "  --crop x0 x1 y0 y1    render only this window (NDC, as Film \"cropwindow\")\n"
+           "  --quiet               no progress output\n"
+           "  --help, --version\n";
+}
+
+CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
+    CommandLineOptions o;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&](int n = 1) -> const std::string& {
+            if (i + n >= args.size()) throw std::invalid_argument(a + " needs a value");
+            return args[++i];
+        };
+        if (a == "-h" || a == "--help")
+            o.help = true;
+        else if (a == "--version")
+            o.version = true;
+        else if (a == "-o" || a == "--output" || a == "--outfile")
+            o.outputs.push_back(value());
+        else if (a == "--spp")
+            o.spp = ParseInt(a, value(), 1);
+        else if (a == "--threads" || a == "--nthreads")
+            o.threads = ParseInt(a, value(), 1);
+        else if (a == "--seed")
+            o.seed = ParseInt(a, value(), std::numeric_limits<int>::min());
+        else if (a == "--crop" || a == "--cropwindow") {
+            if (i + 4 >= args.size()) throw std::invalid_argument(a + " needs x0 x1 y0 y1");
+            Float c[4];
+            for (Float& v : c) v = ParseFloat(a, args[++i]);
+            if (!(c[0] >= 0 && c[0] < c[1] && c[1] <= 1 && c[2] >= 0 && c[2] < c[3] && c[3] <= 1))
+                throw std::invalid_argument(a + " expects 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1");
+            o.crop = Bounds2f(Point2f(c[0], c[2]), Point2f(c[1], c[3]));
+        } else if (a == "--quiet" || a == "-q")
+            o.quiet = true;
+        else if (!a.empty() && a[0] == '-')
+            throw std::invalid_argument("unknown option '" + a + "'");
+        else if (o.sceneFile.empty())
+            o.sceneFile = a;
+        else
+            throw std::invalid_argument("more than one scene file given ('" + o.sceneFile +
+                                        "' and '" + a + "')");
+    }
+    return o;
+}
+
+int RunKiln(int argc, char** argv) {
+    CommandLineOptions options;
+    try {
+        options = ParseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
+        if (!options.help && !options.version && options.sceneFile.empty())
+            throw std::invalid_argument("no scene file given");
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "kiln: " << e.what() << "\n" << UsageText();
+        return 2;
+    }
+    if (options.help) {
+        std::cout << UsageText();
+        return 0;
+    }
+    if (options.version) {
+        std::cout << "kiln " << KILN_VERSION << "\n";
+        return 0;
+    }
+
+    Diagnostics diag(&std::cerr);
+    std::unique_ptr<Scene> scene;
+    std::vector<std::string> outputs = options.outputs;
+    try {
+        SceneBuilder builder(diag);
+        ParseFile(builder, options.sceneFile, diag);
+        SceneOverrides overrides{options.spp, options.seed, options.crop};
+        scene = Scene::Create(builder.Description(), overrides, diag);
+    } catch (const SceneError& e) {
+        std::cerr << e.what() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "kiln: error: " << e.what() << "\n";
+        return 1;
+    }
+    if (outputs.empty()) outputs.push_back(scene->film->Filename());
+
+    RenderSettings settings;
+    settings.threads = options.threads.value_or(0);
+    settings.cancel = &interruptRequested;
+    settings.progress = options.quiet ? nullptr : &std::cerr;
+    settings.progressIsTerminal = isatty(STDERR_FILENO);
+    auto previousHandler = std::signal(SIGINT, HandleInterrupt);
+    RenderStats stats = Render(*scene, settings);
+    std::signal(SIGINT, previousHandler == SIG_ERR ? SIG_DFL : previousHandler);
+
+    if (int64_t bad = scene->film->NonFiniteSampleCount(); bad > 0) {
+        Point2i p = scene->film->FirstNonFinitePixel().value_or(Point2i(-1, -1));
+        std::cerr << "kiln: warning: " << bad << " NaN/Inf radiance samples were discarded "
+                  << "(first at pixel " << p.x << ", " << p.y << ")\n";
+    }
+    ImageMetadata metadata;
+    metadata.renderTimeSeconds = float(stats.seconds);
+    metadata.samplesPerPixel = stats.cancelled ? stats.completedSamples : stats.samplesPerPixel;
+    int status = 0;
+    for (const std::string& out : outputs) {
+        try {
+            scene->film->WriteImage(out, metadata);
+        } catch (const std::exception& e) {
+            std::cerr << "kiln: error: " << e.what() << "\n";
+            status = 1;
+        }
+    }
+    if (!options.quiet) {
+        double mpaths = stats.seconds > 0 ? stats.cameraPaths / stats.seconds * 1e-6 : 0;
+        std::fprintf(stderr, "kiln: %dx%d, %d spp, %.2fs wall, %.2f Mpaths/s%s\n",
+                     stats.resolution.x, stats.resolution.y, stats.samplesPerPixel, stats.seconds,
+                     mpaths, stats.cancelled ? " (interrupted)" : "");
+    }
+    if (status == 0 && stats.cancelled) status = 130;
+    return status;
+}
+
+}  // namespace kiln

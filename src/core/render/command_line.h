@@ -1,0 +1,30 @@
+// The `kiln` command: options, scene loading, rendering and output (main() only calls this).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/base/vecmath.h"
+
+namespace kiln {
+
+struct CommandLineOptions {
+    std::string sceneFile;
+    std::vector<std::string> outputs;  // -o, may repeat: one render, several files
+    std::optional<int> spp, threads, seed;
+    std::optional<Bounds2f> crop;
+    bool quiet = false;
+    bool help = false, version = false;
+};
+
+// Parses argv; throws std::invalid_argument with a message naming the bad argument.
+CommandLineOptions ParseCommandLine(const std::vector<std::string>& args);
+
+std::string UsageText();
+
+// Runs the command; returns the process exit code (0 ok, 1 scene or I/O error, 2 usage error,
+// 130 interrupted by Ctrl-C after writing the partial image).
+int RunKiln(int argc, char** argv);
+
+}  // namespace kiln

@@ -1,0 +1,155 @@
+// Unidirectional path tracing with multiple importance sampling (pbrt-v4's PathIntegrator).
+//
+// The radiance representation is a template parameter (see radiance.h): the same code renders
+// unpolarised and, later, polarised light. At each surface the integrator adds emission found
+// by BSDF sampling (MIS-weighted against light sampling), samples one light with the power
+// light sampler (MIS-weighted against BSDF sampling), then continues the path by sampling the
+// BSDF, with Russian roulette after the first bounces.
+#pragma once
+
+#include <optional>
+
+#include "core/camera/sampler.h"
+#include "core/render/radiance.h"
+#include "core/render/scene.h"
+
+namespace kiln {
+
+template <typename Radiance>
+class PathIntegrator {
+public:
+    using Spectrum = typename Radiance::Spectrum;
+    using Throughput = typename Radiance::Throughput;
+
+    PathIntegrator(const Scene& scene, PathIntegratorSettings settings, int samplesPerPixel)
+        : scene(scene), settings(settings), samplesPerPixel(samplesPerPixel) {}
+
+    // Radiance arriving along ray at the wavelengths lambda. visibleSurface (if non-null) gets
+    // the first hit's geometry and albedo for AOVs.
+    Spectrum Li(Ray ray, SampledWavelengths& lambda, Sampler& sampler,
+                VisibleSurface* visibleSurface) const {
+        Spectrum L{};
+        Throughput beta = Radiance::One();
+        bool specularBounce = false, anyNonSpecularBounces = false;
+        int depth = 0;
+        Float etaScale = 1;
+        Float prevBsdfPdf = 0;  // pdf (solid angle) of the BSDF sample that made ray
+        LightSampleContext prevContext;
+
+        while (true) {
+            std::optional<ShapeIntersection> si = scene.aggregate->Intersect(ray, Infinity);
+
+            // Escaped rays: add emission from infinite lights
+            if (!si) {
+                for (const Light* light : scene.infiniteLights) {
+                    SampledSpectrum Le = light->Le(ray, lambda);
+                    if (!Le) continue;
+                    if (depth == 0 || specularBounce) {
+                        L += Radiance::Apply(beta, Radiance::Emitted(Le));
+                    } else {
+                        Float lightPdf = scene.lightSampler->PMF(light) *
+                                         light->PDF_Li(prevContext, ray.d, true);
+                        Float w = PowerHeuristic(1, prevBsdfPdf, 1, lightPdf);
+                        L += Radiance::Apply(beta, Radiance::Emitted(w * Le));
+                    }
+                }
+                break;
+            }
+            SurfaceInteraction& isect = si->intr;
+
+            // Emission from an area light hit by the path
+            if (const Light* area = isect.areaLight) {
+                SampledSpectrum Le = area->L(isect.p, isect.n, isect.uv, -ray.d, lambda);
+                if (Le) {
+                    if (depth == 0 || specularBounce) {
+                        L += Radiance::Apply(beta, Radiance::Emitted(Le));
+                    } else {
+                        Float lightPdf = scene.lightSampler->PMF(area) *
+                                         area->PDF_Li(prevContext, ray.d, true);
+                        Float w = PowerHeuristic(1, prevBsdfPdf, 1, lightPdf);
+                        L += Radiance::Apply(beta, Radiance::Emitted(w * Le));
+                    }
+                }
+            }
+
+            // BSDF at the hit; interface materials only mark boundaries
+            BSDF bsdf = scene.GetBSDF(isect, lambda, ray, samplesPerPixel);
+            if (!bsdf) {
+                specularBounce = true;
+                ray = isect.SpawnRay(ray.d);
+                continue;
+            }
+            if (depth == 0 && visibleSurface) *visibleSurface = scene.MakeVisibleSurface(isect, bsdf, lambda);
+            if (settings.regularize && anyNonSpecularBounces) bsdf.Regularize();
+
+            if (depth++ == settings.maxDepth) break;
+
+            // Direct lighting by light sampling
+            Vector3f wo = -ray.d;
+            if (IsNonSpecular(bsdf.Flags())) {
+                SampledSpectrum Ld = SampleLd(isect, bsdf, lambda, sampler);
+                if (Ld) L += Radiance::Apply(beta, Radiance::Emitted(Ld));
+            }
+
+            // Continue the path by sampling the BSDF
+            Float u = sampler.Get1D();
+            std::optional<BSDFSample> bs = bsdf.Sample_f(wo, u, sampler.Get2D());
+            if (!bs || bs->pdf == 0 || !bs->f) break;
+            beta = beta * Radiance::Scatter(bs->f * AbsDot(bs->wi, isect.shading.n) / bs->pdf);
+            prevBsdfPdf = bs->pdfIsProportional ? bsdf.PDF(wo, bs->wi) : bs->pdf;
+            specularBounce = bs->IsSpecular();
+            anyNonSpecularBounces |= !bs->IsSpecular();
+            if (bs->IsTransmission()) etaScale *= Sqr(bs->eta);
+            prevContext = LightSampleContext(isect);
+            ray = isect.SpawnRay(bs->wi);
+
+            // Russian roulette, on throughput with the radiance scaling of refraction removed
+            Float rrBeta = Radiance::MaxComponent(beta) * etaScale;
+            if (rrBeta < 1 && depth > 1) {
+                Float q = std::max<Float>(0, 1 - rrBeta);
+                if (sampler.Get1D() < q) break;
+                beta = beta / (1 - q);
+            }
+        }
+        return L;
+    }
+
+private:
+    // One light sample: pick a light by power, sample a point on it, MIS-weight against the BSDF.
+    SampledSpectrum SampleLd(const SurfaceInteraction& intr, const BSDF& bsdf,
+                             const SampledWavelengths& lambda, Sampler& sampler) const {
+        LightSampleContext ctx(intr);
+        // Move the reference point to the side the BSDF can scatter to, for one-sided BSDFs.
+        BxDFFlags flags = bsdf.Flags();
+        if (IsReflective(flags) && !IsTransmissive(flags))
+            ctx.p = intr.OffsetRayOrigin(intr.wo);
+        else if (IsTransmissive(flags) && !IsReflective(flags))
+            ctx.p = intr.OffsetRayOrigin(-intr.wo);
+
+        Float uLight = sampler.Get1D();
+        Point2f uPoint = sampler.Get2D();
+        std::optional<SampledLight> sampled = scene.lightSampler->Sample(uLight);
+        if (!sampled) return {};
+        const Light* light = sampled->light;
+        std::optional<LightLiSample> ls = light->SampleLi(ctx, uPoint, lambda, true);
+        if (!ls || !ls->L || ls->pdf == 0) return {};
+
+        Vector3f wo = intr.wo, wi = ls->wi;
+        SampledSpectrum f = bsdf.f(wo, wi) * AbsDot(wi, intr.shading.n);
+        if (!f) return {};
+        if (scene.aggregate->IntersectP(intr.SpawnRayTo(ls->pLight), 1 - ShadowEpsilon))
+            return {};
+
+        Float lightPdf = sampled->p * ls->pdf;
+        if (IsDeltaLight(light->Type())) return ls->L * f / lightPdf;
+        Float bsdfPdf = bsdf.PDF(wo, wi);
+        Float w = PowerHeuristic(1, lightPdf, 1, bsdfPdf);
+        return w * ls->L * f / lightPdf;
+    }
+
+    const Scene& scene;
+    PathIntegratorSettings settings;
+    int samplesPerPixel;
+};
+
+}  // namespace kiln

@@ -1,0 +1,98 @@
+#include "core/render/renderer.h"
+
+#include <tbb/blocked_range2d.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <memory>
+#include <sstream>
+
+#include "core/camera/camera_sample.h"
+#include "core/render/path_integrator.h"
+#include "core/render/progress.h"
+
+namespace kiln {
+
+namespace {
+
+// One pixel sample: camera ray, radiance along it, film update.
+void RenderPixelSample(const Scene& scene, const PathIntegrator<UnpolarizedRadiance>& integrator,
+                       kiln::Sampler& sampler, Point2i pPixel, int sampleIndex) {
+    sampler.StartPixelSample(pPixel, sampleIndex);
+    // Wavelengths first, then the camera sample (pbrt-v4's order)
+    Float lu = sampler.Get1D();
+    SampledWavelengths lambda = scene.film->SampleWavelengths(lu);
+    CameraSample cs = GetCameraSample(sampler, pPixel, *scene.filter);
+    if (scene.disablePixelJitter) {
+        cs.pFilm = Point2f(pPixel.x + 0.5f, pPixel.y + 0.5f);
+        cs.filterWeight = 1;
+    }
+    std::optional<CameraRay> cameraRay = scene.camera->GenerateRay(cs, lambda);
+    SampledSpectrum L;
+    VisibleSurface visible;
+    if (cameraRay) {
+        L = cameraRay->weight * integrator.Li(cameraRay->ray, lambda, sampler, &visible);
+    }
+    scene.film->AddSample(pPixel, L, lambda, &visible, cs.filterWeight);
+}
+
+}  // namespace
+
+RenderStats Render(Scene& scene, const RenderSettings& settings) {
+    RenderStats stats;
+    Bounds2i pixelBounds = scene.film->PixelBounds();
+    Point2i res(pixelBounds.pMax.x - pixelBounds.pMin.x, pixelBounds.pMax.y - pixelBounds.pMin.y);
+    stats.resolution = res;
+    const int spp = scene.sampler->SamplesPerPixel();
+    stats.samplesPerPixel = spp;
+    if (res.x <= 0 || res.y <= 0 || spp <= 0) return stats;
+
+    std::unique_ptr<tbb::global_control> threadLimit;
+    if (settings.threads > 0)
+        threadLimit = std::make_unique<tbb::global_control>(
+            tbb::global_control::max_allowed_parallelism, size_t(settings.threads));
+
+    PathIntegrator<UnpolarizedRadiance> integrator(scene, scene.integrator, spp);
+    tbb::enumerable_thread_specific<kiln::Sampler> samplers(
+        [&] { return scene.sampler->Clone(); });
+
+    std::ostringstream title;
+    title << "Rendering " << res.x << "x" << res.y << " @ " << spp << " spp";
+    ProgressReporter progress(int64_t(res.x) * res.y * spp, title.str(), settings.progress,
+                              settings.progressIsTerminal);
+
+    // Waves of 1, 2, 4, ... samples per pixel (at most 64), as pbrt-v4
+    constexpr int tileSize = 16;
+    int waveStart = 0, waveSize = 1;
+    while (waveStart < spp) {
+        int waveEnd = std::min(spp, waveStart + waveSize);
+        tbb::parallel_for(
+            tbb::blocked_range2d<int>(pixelBounds.pMin.y, pixelBounds.pMax.y, tileSize,
+                                      pixelBounds.pMin.x, pixelBounds.pMax.x, tileSize),
+            [&](const tbb::blocked_range2d<int>& tile) {
+                if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) return;
+                kiln::Sampler& sampler = samplers.local();
+                for (int y = tile.rows().begin(); y != tile.rows().end(); ++y)
+                    for (int x = tile.cols().begin(); x != tile.cols().end(); ++x)
+                        for (int s = waveStart; s < waveEnd; ++s)
+                            RenderPixelSample(scene, integrator, sampler, Point2i(x, y), s);
+                progress.Update(int64_t(tile.rows().size()) * tile.cols().size() *
+                                (waveEnd - waveStart));
+            });
+        if (settings.cancel && settings.cancel->load()) {
+            stats.cancelled = true;
+            break;
+        }
+        stats.completedSamples = waveEnd;
+        waveStart = waveEnd;
+        waveSize = std::min(2 * waveSize, 64);
+    }
+    progress.Done();
+    stats.seconds = progress.ElapsedSeconds();
+    stats.cameraPaths = progress.WorkDone();
+    return stats;
+}
+
+}  // namespace kiln

@@ -1,0 +1,35 @@
+// The render loop: pixel samples in parallel over image tiles (TBB), in waves of increasing
+// sample counts so that an interrupted render still has every pixel sampled alike.
+//
+// Determinism: every sample value comes from the sampler seeded by (pixel, sample index,
+// dimension), and each pixel is written by one task at a time, so the image is bit-identical
+// for any number of threads.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <ostream>
+
+#include "core/render/scene.h"
+
+namespace kiln {
+
+struct RenderSettings {
+    int threads = 0;                           // 0: all hardware threads
+    const std::atomic<bool>* cancel = nullptr;  // set (e.g. by Ctrl-C) to stop after the tile
+    std::ostream* progress = nullptr;          // progress output; nullptr = quiet
+    bool progressIsTerminal = false;
+};
+
+struct RenderStats {
+    Point2i resolution;         // of the rendered (cropped) region
+    int samplesPerPixel = 0;    // requested
+    int completedSamples = 0;   // per pixel in fully finished waves
+    double seconds = 0;         // wall time of the render loop
+    int64_t cameraPaths = 0;    // pixel samples traced
+    bool cancelled = false;
+};
+
+RenderStats Render(Scene& scene, const RenderSettings& settings);
+
+}  // namespace kiln

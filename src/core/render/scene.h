@@ -1,0 +1,76 @@
+// Scene: the renderable objects created from a SceneDescription (pbrt-v4's BasicScene
+// creation step): camera, film, sampler, textures, materials, lights, shapes in an Embree
+// accelerator, and the integrator's settings.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/base/object_arena.h"
+#include "core/camera/camera.h"
+#include "core/camera/sampler.h"
+#include "core/film/film.h"
+#include "core/film/filter.h"
+#include "core/film/visible_surface.h"
+#include "core/geometry/accelerator.h"
+#include "core/parser/diagnostics.h"
+#include "core/render/scene_description.h"
+#include "lights/light.h"
+#include "lights/light_sampler.h"
+#include "materials/bxdfs/bsdf.h"
+#include "materials/material.h"
+#include "textures/texture.h"
+#include "textures/texture_parameter_dictionary.h"
+
+namespace kiln {
+
+// Command-line settings that take precedence over the scene file.
+struct SceneOverrides {
+    std::optional<int> samplesPerPixel;
+    std::optional<int> seed;
+    std::optional<Bounds2f> cropWindow;  // NDC [x0, x1] x [y0, y1], as Film "cropwindow"
+};
+
+struct PathIntegratorSettings {
+    int maxDepth = 5;         // pbrt-v4 "maxdepth"
+    bool regularize = false;  // pbrt-v4 "regularize"
+};
+
+class Scene {
+  public:
+    // Creates every object; throws SceneError for invalid input and reports warnings
+    // (including unused parameters) to diag.
+    static std::unique_ptr<Scene> Create(SceneDescription& description,
+                                         const SceneOverrides& overrides, Diagnostics& diag);
+    Scene(const Scene&) = delete;
+    Scene& operator=(const Scene&) = delete;
+    ~Scene();
+
+    // The BSDF at a surface hit (resolving mix materials and texture footprints); invalid for
+    // interface materials.
+    BSDF GetBSDF(SurfaceInteraction& isect, SampledWavelengths& lambda, const Ray& ray,
+                 int samplesPerPixel) const;
+    VisibleSurface MakeVisibleSurface(const SurfaceInteraction& isect, const BSDF& bsdf,
+                                      const SampledWavelengths& lambda) const;
+
+    ObjectArena arena;  // owns everything below that is held by pointer
+    std::optional<Filter> filter;
+    RGBFilm* film = nullptr;
+    std::optional<Camera> camera;
+    std::optional<kiln::Sampler> sampler;  // prototype: each thread renders with a Clone()
+    std::unique_ptr<kiln::Accelerator> aggregate;
+    std::vector<Light> lights;  // addresses are stable after creation
+    std::vector<const Light*> infiniteLights;
+    std::unique_ptr<PowerLightSampler> lightSampler;
+    PathIntegratorSettings integrator;
+    bool disablePixelJitter = false;
+    int shapeCount = 0;
+
+  private:
+    Scene() = default;
+};
+
+}  // namespace kiln
