@@ -90,12 +90,52 @@ AttributeEnd
     return "".join(out)
 
 
+# Smooth sphere materials of the paper's Figures 5-7 (optical constants: see
+# src/spectral/named_spectra_measured_data.cpp for sources).
+MATERIALS = {
+    "silver": '"conductor" "spectrum eta" "metal-Ag-eta" "spectrum k" "metal-Ag-k"',
+    "copper": '"conductor" "spectrum eta" "metal-Cu-eta" "spectrum k" "metal-Cu-k"',
+    "gold": '"conductor" "spectrum eta" "metal-Au-eta" "spectrum k" "metal-Au-k"',
+    "platinum": '"conductor" "spectrum eta" "metal-Pt-eta" "spectrum k" "metal-Pt-k"',
+    "selenium": '"conductor" "spectrum eta" "metal-Se-eta" "spectrum k" "metal-Se-k"',
+    # Black quartz: a smooth quartz (fused silica) surface over an opaque black body.
+    "black-quartz": '"coateddiffuse" "rgb reflectance" [0 0 0] "spectrum eta" "glass-SiO2"\n'
+                    '      "float roughness" 0 "float thickness" 0.001',
+}
+
+
+def thermal_scene(material, model, ambient):
+    title = (f"Wilkie & Weidlich 2011 test scene: {material} spheres, {model} emission, "
+             f"{'with' if ambient else 'without'} ambient light")
+    # Exposure: ISO picked so the hottest black-quartz sphere is near white on the Filmic view;
+    # the film's automatic exposure brightens the dim scenes without ambient light.
+    out = [header(title).replace('"float iso" 1500', '"float iso" 400 "string view" "Filmic"')
+           .replace('"wilkie2011.exr"', f'"{material}-{model}{"-ambient" if ambient else ""}.exr"')]
+    if ambient:
+        out.append('LightSource "infinite" "rgb L" [0.05 0.05 0.05]\n')
+    out.append(f'Material {MATERIALS[material]}\n    "string emission" "{model}"\n')
+    for t, clock in zip(TEMPERATURES, CLOCK):
+        x, y, z = sphere_position(clock)
+        out.append(f"""AttributeBegin  # {t} K at {clock} o'clock
+  Translate {x:.4f} {y:.4f} {z:.4f}
+  Shape "sphere" "float radius" {SPHERE_RADIUS} "float temperature" {t}
+AttributeEnd
+""")
+    return "".join(out)
+
+
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     default = os.path.join(here, "..", "..", "..", "shared", "data", "cie1931_2deg.csv")
     cmf = read_cmf(sys.argv[1] if len(sys.argv) > 1 else default)
     with open(os.path.join(here, "blackbody-lights.pbrt"), "w") as f:
         f.write(blackbody_scene(cmf))
+    for material in MATERIALS:
+        for model in ("kirchhoff", "additive"):
+            for ambient in (False, True):
+                name = f"{material}-{model}{'-ambient' if ambient else ''}.pbrt"
+                with open(os.path.join(here, name), "w") as f:
+                    f.write(thermal_scene(material, model, ambient))
 
 
 if __name__ == "__main__":

@@ -25,6 +25,7 @@
 #include "lights/light_sample.h"
 #include "lights/point_light.h"
 #include "lights/spot_light.h"
+#include "lights/thermal_area_light.h"
 #include "lights/uniform_infinite_light.h"
 
 namespace kiln {
@@ -38,8 +39,8 @@ class Light {
   public:
     // The closed set: add a kind here (and its header above) to add a light type.
     using Kind = std::variant<const PointLight*, const SpotLight*, const DistantLight*,
-                              const DiffuseAreaLight*, const UniformInfiniteLight*,
-                              const ImageInfiniteLight*>;
+                              const DiffuseAreaLight*, const ThermalAreaLight*,
+                              const UniformInfiniteLight*, const ImageInfiniteLight*>;
 
     template <typename T>
     requires std::is_constructible_v<Kind, const T*> Light(const T* light) : kind(light) {}

@@ -165,6 +165,15 @@ class SampledWavelengths {
         return 538 - 138.888889f * std::atanh(0.85691062f - 1.82750197f * u);
     }
 
+    // All samples at one wavelength (nm) with density 1: for evaluating spectra and BSDFs
+    // at chosen wavelengths (tables, tests), not for Monte Carlo estimates.
+    static SampledWavelengths FromWavelength(Float lambda_nm) {
+        SampledWavelengths swl;
+        swl.lambda.fill(lambda_nm);
+        swl.pdf.fill(1);
+        return swl;
+    }
+
     Float operator[](int i) const { return lambda[i]; }
     Float& operator[](int i) { return lambda[i]; }
     SampledSpectrum PDF() const { return SampledSpectrum(pdf); }

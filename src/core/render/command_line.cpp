@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/parser/parser.h"
+#include "core/render/image_diff.h"
 #include "core/render/renderer.h"
 #include "core/render/scene_builder.h"
 
@@ -66,8 +67,11 @@ std::string UsageText() {
            "  --threads N           worker threads (default: all cores)\n"
            "  --seed S              sampler seed\n"
            "  --crop x0 x1 y0 y1    render only this window (NDC, as Film \"cropwindow\")\n"
+           "  --emission MODEL      thermal emission model for every hot surface:\n"
+           "                        kirchhoff (default), additive, diffuse or none\n"
            "  --quiet               no progress output\n"
-           "  --help, --version\n";
+           "  --help, --version\n"
+           "   or: kiln diff A B [--metric M] [--threshold X] [--out DIFF] (kiln diff --help)\n";
 }
 
 CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
@@ -97,6 +101,11 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             if (!(c[0] >= 0 && c[0] < c[1] && c[1] <= 1 && c[2] >= 0 && c[2] < c[3] && c[3] <= 1))
                 throw std::invalid_argument(a + " expects 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1");
             o.crop = Bounds2f(Point2f(c[0], c[2]), Point2f(c[1], c[3]));
+        } else if (a == "--emission") {
+            o.emission = value();
+            if (!ParseEmissionModel(*o.emission))
+                throw std::invalid_argument("--emission expects kirchhoff, additive, diffuse or "
+                                            "none, got '" + *o.emission + "'");
         } else if (a == "--quiet" || a == "-q")
             o.quiet = true;
         else if (!a.empty() && a[0] == '-')
@@ -111,6 +120,8 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
 }
 
 int RunKiln(int argc, char** argv) {
+    if (argc >= 2 && std::string(argv[1]) == "diff")
+        return RunImageDiff(std::vector<std::string>(argv + 2, argv + argc));
     CommandLineOptions options;
     try {
         options = ParseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
@@ -135,7 +146,8 @@ int RunKiln(int argc, char** argv) {
     try {
         SceneBuilder builder(diag);
         ParseFile(builder, options.sceneFile, diag);
-        SceneOverrides overrides{options.spp, options.seed, options.crop};
+        SceneOverrides overrides{options.spp, options.seed, options.crop, std::nullopt};
+        if (options.emission) overrides.emission = ParseEmissionModel(*options.emission);
         scene = Scene::Create(builder.Description(), overrides, diag);
     } catch (const SceneError& e) {
         std::cerr << e.what() << "\n";

@@ -14,6 +14,7 @@ struct CommandLineOptions {
     std::vector<std::string> outputs;  // -o, may repeat: one render, several files
     std::optional<int> spp, threads, seed;
     std::optional<Bounds2f> crop;
+    std::optional<std::string> emission;  // kirchhoff | additive | diffuse | none
     bool quiet = false;
     bool help = false, version = false;
 };

@@ -49,7 +49,7 @@ public:
                     } else {
                         Float lightPdf = scene.lightSampler->PMF(light) *
                                          light->PDF_Li(prevContext, ray.d, true);
-                        Float w = PowerHeuristic(1, prevBsdfPdf, 1, lightPdf);
+                        Float w = EmissionWeight(prevBsdfPdf, lightPdf);
                         L += Radiance::Apply(beta, Radiance::Emitted(w * Le));
                     }
                 }
@@ -66,7 +66,7 @@ public:
                     } else {
                         Float lightPdf = scene.lightSampler->PMF(area) *
                                          area->PDF_Li(prevContext, ray.d, true);
-                        Float w = PowerHeuristic(1, prevBsdfPdf, 1, lightPdf);
+                        Float w = EmissionWeight(prevBsdfPdf, lightPdf);
                         L += Radiance::Apply(beta, Radiance::Emitted(w * Le));
                     }
                 }
@@ -86,7 +86,7 @@ public:
 
             // Direct lighting by light sampling
             Vector3f wo = -ray.d;
-            if (IsNonSpecular(bsdf.Flags())) {
+            if (IsNonSpecular(bsdf.Flags()) && settings.strategy != LightStrategy::BSDFOnly) {
                 SampledSpectrum Ld = SampleLd(isect, bsdf, lambda, sampler);
                 if (Ld) L += Radiance::Apply(beta, Radiance::Emitted(Ld));
             }
@@ -115,6 +115,17 @@ public:
     }
 
 private:
+    // Weight of emission found by BSDF sampling: MIS against light sampling (pbrt-v4), all of
+    // it when lights are never sampled, none of it when only light sampling finds emitters.
+    Float EmissionWeight(Float bsdfPdf, Float lightPdf) const {
+        switch (settings.strategy) {
+            case LightStrategy::MIS: return PowerHeuristic(1, bsdfPdf, 1, lightPdf);
+            case LightStrategy::BSDFOnly: return 1;
+            case LightStrategy::LightOnly: return lightPdf > 0 ? 0 : 1;
+        }
+        return 1;
+    }
+
     // One light sample: pick a light by power, sample a point on it, MIS-weight against the BSDF.
     SampledSpectrum SampleLd(const SurfaceInteraction& intr, const BSDF& bsdf,
                              const SampledWavelengths& lambda, Sampler& sampler) const {
@@ -143,7 +154,8 @@ private:
         Float lightPdf = sampled->p * ls->pdf;
         if (IsDeltaLight(light->Type())) return ls->L * f / lightPdf;
         Float bsdfPdf = bsdf.PDF(wo, wi);
-        Float w = PowerHeuristic(1, lightPdf, 1, bsdfPdf);
+        Float w = settings.strategy == LightStrategy::MIS ? PowerHeuristic(1, lightPdf, 1, bsdfPdf)
+                                                           : Float(1);
         return w * ls->L * f / lightPdf;
     }
 

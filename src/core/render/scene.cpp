@@ -3,6 +3,7 @@
 #include <array>
 #include <set>
 
+#include "core/render/thermal_emitters.h"
 #include "spectral/color.h"
 
 namespace kiln {
@@ -94,6 +95,16 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, bool given, Diag
     s.maxDepth = e.parameters.GetOneInt("maxdepth", 5);
     if (s.maxDepth < 0) throw SceneError(e.parameters.Loc("maxdepth"), "maxdepth must be >= 0");
     s.regularize = e.parameters.GetOneBool("regularize", false);
+    std::string strategy = e.parameters.GetOneString("strategy", "mis");
+    if (strategy == "mis")
+        s.strategy = LightStrategy::MIS;
+    else if (strategy == "light")
+        s.strategy = LightStrategy::LightOnly;
+    else if (strategy == "bsdf")
+        s.strategy = LightStrategy::BSDFOnly;
+    else
+        throw SceneError(e.parameters.Loc("strategy"),
+                         "unknown strategy (expected \"mis\", \"light\" or \"bsdf\")", strategy);
     std::string ls = e.parameters.GetOneString("lightsampler", "bvh");
     if (ls != "bvh" && ls != "power" && ls != "uniform")
         diag.Warn(e.parameters.Loc("lightsampler"),
@@ -141,29 +152,37 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
                            &desc.sampler, &desc.integrator, &desc.accelerator})
         e->parameters.ReportUnused(diag);
 
-    // Textures and materials
+    // Textures; the thermal parameters of materials (read before the materials report
+    // unused parameters); materials
     NamedTextures* textures = arena.New<NamedTextures>();
     CreateTextures(desc, *textures, arena, diag);
+    std::map<std::string, ThermalParameters> namedThermal;
+    for (auto& [name, e] : desc.namedMaterials)
+        namedThermal[name] = ReadThermalParameters(e.parameters, *textures, false, arena);
+    std::vector<ThermalParameters> anonymousThermal;
+    for (SceneEntity& e : desc.materials)
+        anonymousThermal.push_back(ReadThermalParameters(e.parameters, *textures, false, arena));
     std::map<std::string, Material> namedMaterialValues;
     std::vector<const Material*> materials;
     CreateMaterials(desc, *textures, arena, diag, namedMaterialValues, materials);
     std::map<std::string, const Material*> namedMaterials;
     for (auto& [name, m] : namedMaterialValues) namedMaterials[name] = arena.New<Material>(m);
     auto materialOf = [&](const ShapeSceneEntity& s) -> const Material* {
-        const Material* m = nullptr;
         if (!s.materialName.empty()) {
             auto it = namedMaterials.find(s.materialName);
             if (it == namedMaterials.end())
                 throw SceneError(s.loc, "named material '" + s.materialName + "' not defined",
                                  s.materialName);
-            m = it->second;
-        } else {
-            m = materials.at(size_t(s.materialIndex));
+            return it->second;
         }
-        return m;
+        return materials.at(size_t(s.materialIndex));
+    };
+    auto materialThermalOf = [&](const ShapeSceneEntity& s) -> const ThermalParameters& {
+        if (!s.materialName.empty()) return namedThermal.at(s.materialName);
+        return anonymousThermal.at(size_t(s.materialIndex));
     };
 
-    // Shapes (created first so the number of area lights is known)
+    // Shapes (created first so the number of area lights is known), with their heat
     auto createShapes = [&](ShapeSceneEntity& s) {
         const kiln::Transform* renderFromObject = arena.New<kiln::Transform>(s.renderFromObject);
         const kiln::Transform* objectFromRender =
@@ -171,14 +190,35 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
         std::vector<Shape> shapes = Shape::Create(s.name, renderFromObject, objectFromRender,
                                                   s.reverseOrientation, s.parameters, s.loc,
                                                   arena, diag);
-        s.parameters.ReportUnused(diag);
         return shapes;
     };
+    struct ShapeHeat {
+        std::optional<FloatTexture> temperature;
+        EmissionModel model = EmissionModel::None;
+    };
     std::vector<std::vector<Shape>> shapes;
+    std::vector<ShapeHeat> heat;
     size_t areaLightCount = 0;
     for (ShapeSceneEntity& s : desc.shapes) {
+        bool isMesh = s.name == "trianglemesh";
+        ThermalParameters own = ReadThermalParameters(s.parameters, *textures, isMesh, arena);
+        const ThermalParameters& mat = materialThermalOf(s);
+        ShapeHeat h;
+        h.temperature = own.temperature ? own.temperature : mat.temperature;
+        h.model = overrides.emission ? *overrides.emission
+                                     : own.model.value_or(mat.model.value_or(
+                                           EmissionModel::Kirchhoff));
+        if (!h.temperature) h.model = EmissionModel::None;
+        if (h.model != EmissionModel::None && s.areaLightIndex >= 0) {
+            diag.Warn(s.loc, "shape has both an AreaLightSource and a temperature; the area "
+                             "light is used");
+            h.model = EmissionModel::None;
+        }
         shapes.push_back(createShapes(s));
-        if (s.areaLightIndex >= 0) areaLightCount += shapes.back().size();
+        s.parameters.ReportUnused(diag);
+        if (s.areaLightIndex >= 0 || h.model != EmissionModel::None)
+            areaLightCount += shapes.back().size();
+        heat.push_back(std::move(h));
     }
 
     // Lights
@@ -191,6 +231,7 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
 
     // Accelerator: shapes with their materials and area lights, then instances
     scene->aggregate = std::make_unique<kiln::Accelerator>();
+    ThermalMaterialCache thermalCache(arena);
     for (size_t i = 0; i < desc.shapes.size(); ++i) {
         ShapeSceneEntity& s = desc.shapes[i];
         if (shapes[i].empty()) continue;
@@ -207,6 +248,19 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
                                                           arena, diag));
                 areaLights.push_back(&scene->lights.back());
             }
+        } else if (heat[i].model != EmissionModel::None) {
+            // Hot shapes glow: one thermal light per shape, bound to its material
+            if (heat[i].model == EmissionModel::Diffuse) material = thermalCache.Black(diag);
+            const ReflectanceTable* table = heat[i].model == EmissionModel::Kirchhoff
+                                                ? thermalCache.Table(material)
+                                                : nullptr;
+            for (const Shape& shape : shapes[i]) {
+                const Shape* stored = arena.New<Shape>(shape);
+                scene->lights.push_back(Light(arena.New<ThermalAreaLight>(
+                    stored, material, *heat[i].temperature, heat[i].model, 1.f, table)));
+                areaLights.push_back(&scene->lights.back());
+            }
+            scene->thermalEmitterCount += int(shapes[i].size());
         }
         scene->aggregate->Add(shapes[i], material, areaLights);
         scene->shapeCount += int(shapes[i].size());
@@ -219,6 +273,7 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
             int id = scene->aggregate->NewInstanceDefinition();
             for (ShapeSceneEntity& s : def.shapes) {
                 std::vector<Shape> defShapes = createShapes(s);
+                s.parameters.ReportUnused(diag);
                 if (!defShapes.empty())
                     scene->aggregate->AddToInstanceDefinition(id, defShapes, materialOf(s));
             }

@@ -18,6 +18,7 @@
 #include "core/geometry/accelerator.h"
 #include "core/parser/diagnostics.h"
 #include "core/render/scene_description.h"
+#include "materials/emissivity.h"
 #include "lights/light.h"
 #include "lights/light_sampler.h"
 #include "materials/bxdfs/bsdf.h"
@@ -32,11 +33,18 @@ struct SceneOverrides {
     std::optional<int> samplesPerPixel;
     std::optional<int> seed;
     std::optional<Bounds2f> cropWindow;  // NDC [x0, x1] x [y0, y1], as Film "cropwindow"
+    std::optional<EmissionModel> emission;  // thermal emission model for every hot surface
 };
+
+// How direct light is found: pbrt-v4's MIS of light and BSDF sampling (default), or one of the
+// two alone (kiln's Integrator "path" "string strategy" "mis" | "light" | "bsdf", for
+// comparisons and tests; all three converge to the same image).
+enum class LightStrategy { MIS, LightOnly, BSDFOnly };
 
 struct PathIntegratorSettings {
     int maxDepth = 5;         // pbrt-v4 "maxdepth"
     bool regularize = false;  // pbrt-v4 "regularize"
+    LightStrategy strategy = LightStrategy::MIS;
 };
 
 class Scene {
@@ -68,6 +76,7 @@ class Scene {
     PathIntegratorSettings integrator;
     bool disablePixelJitter = false;
     int shapeCount = 0;
+    int thermalEmitterCount = 0;  // shapes glowing because of their temperature
 
   private:
     Scene() = default;

@@ -1,0 +1,196 @@
+// Thermal emission end to end: Kirchhoff equilibrium in a closed isothermal cavity, the
+// additive model's excess, equal results for light and BSDF sampling of hot emitters, and the
+// colour of glowing metals.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/base/statistics.h"
+#include "render_test_util.h"
+#include "spectral/cie.h"
+#include "spectral/named_spectra.h"
+#include "spectral/planck.h"
+
+namespace kiln {
+namespace {
+
+// Luminance Y = int B ybar / int ybar of a blackbody, W m^-2 sr^-1 nm^-1 (the film's
+// convention), by the same 1 nm sum the film's colour matching uses.
+double BlackbodyLuminance(double T) {
+    double sum = 0;
+    for (int l = cie::kCMFLambdaMin; l <= cie::kCMFLambdaMax; ++l)
+        sum += planck_radiance(l, T) * CIE_Y(Float(l));
+    return sum / CIE_Y_integral;
+}
+
+RunningStats ImageLuminance(const Scene& scene) {
+    RunningStats stats;
+    Bounds2i b = scene.film->PixelBounds();
+    for (int y = b.pMin.y; y < b.pMax.y; ++y)
+        for (int x = b.pMin.x; x < b.pMax.x; ++x) stats.Add(testing::PixelY(scene, {x, y}));
+    return stats;
+}
+
+// A closed cavity (the camera inside a diffuse sphere) holding a smooth gold sphere, a rough
+// copper sphere, a coated body and a rough platinum disk, everything at temperature T.
+std::string Cavity(double T, const std::string& model, int spp) {
+    std::ostringstream s;
+    s << "Film \"rgb\" \"integer xresolution\" 12 \"integer yresolution\" 12\n"
+      << "Sampler \"zsobol\" \"integer pixelsamples\" " << spp << "\n"
+      << "Integrator \"path\" \"integer maxdepth\" 400\n"
+      << "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 70\n"
+      << "WorldBegin\n"
+      << "Attribute \"shape\" \"float temperature\" " << T << "\n"
+      << "Attribute \"material\" \"string emission\" \"" << model << "\"\n"
+      << "Material \"diffuse\" \"rgb reflectance\" [0.7 0.6 0.5]\n"
+      << "Shape \"sphere\" \"float radius\" 6\n"
+      << "Material \"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\"\n"
+      << "AttributeBegin\n Translate -0.7 0 0\n Shape \"sphere\" \"float radius\" 0.6\nAttributeEnd\n"
+      << "Material \"conductor\" \"spectrum eta\" \"metal-Cu-eta\" \"spectrum k\" \"metal-Cu-k\""
+         " \"float roughness\" 0.2\n"
+      << "AttributeBegin\n Translate 0.7 0 0\n Shape \"sphere\" \"float radius\" 0.6\nAttributeEnd\n"
+      << "Material \"coateddiffuse\" \"rgb reflectance\" [0.3 0.3 0.3] \"float roughness\" 0.05\n"
+      << "AttributeBegin\n Translate 0 0.9 0.5\n Shape \"sphere\" \"float radius\" 0.4\nAttributeEnd\n"
+      << "Material \"conductor\" \"spectrum eta\" \"metal-Pt-eta\" \"spectrum k\" \"metal-Pt-k\""
+         " \"float roughness\" 0.4\n"
+      << "AttributeBegin\n Translate 0 -1 1\n Rotate -60 1 0 0\n Shape \"disk\" \"float radius\" 1.5\n"
+         "AttributeEnd\n";
+    return s.str();
+}
+
+TEST(ThermalTest, KirchhoffCavityIsInEquilibriumAtEveryPixel) {
+    const double T = 1400, expected = BlackbodyLuminance(T);
+    testing::RenderedScene r = testing::RenderText(Cavity(T, "kirchhoff", 256));
+    EXPECT_TRUE(r.warnings.empty());
+    EXPECT_GT(r.scene->thermalEmitterCount, 0);
+    // Every pixel has the same expected value B(T), so the spread of the pixels is the
+    // per-pixel Monte Carlo noise (mostly from sampling 4 wavelengths of a steep Planck
+    // curve). The image mean must be B(T) within 1% and within its standard error; no pixel
+    // (whatever object it sees) may stand out from the noise.
+    RunningStats s = ImageLuminance(*r.scene);
+    double sigma = std::sqrt(s.Variance()) / expected;
+    double standardError = sigma / std::sqrt(double(s.Count()));
+    EXPECT_NEAR(s.Mean() / expected, 1.0, std::min(0.01, 4 * standardError + 1e-3));
+    EXPECT_LT(sigma, 0.05);
+    Bounds2i b = r.scene->film->PixelBounds();
+    for (int y = b.pMin.y; y < b.pMax.y; ++y)
+        for (int x = b.pMin.x; x < b.pMax.x; ++x)
+            EXPECT_NEAR(testing::PixelY(*r.scene, {x, y}) / expected, 1.0, 4.5 * sigma)
+                << "pixel " << x << "," << y;
+}
+
+TEST(ThermalTest, AdditiveEmissionOverfillsTheCavity) {
+    const double T = 1400, expected = BlackbodyLuminance(T);
+    testing::RenderedScene r = testing::RenderText(Cavity(T, "additive", 64));
+    RunningStats s = ImageLuminance(*r.scene);
+    // Emission B plus reflected light: B / (1 - R) on reflective surfaces.
+    EXPECT_GT(s.Mean() / expected, 1.2);
+}
+
+// A hot rough sphere above a diffuse floor: the floor's light must not depend on whether the
+// emitter is found by light sampling, BSDF sampling or both.
+std::string HotSphere(const std::string& strategy) {
+    return "Film \"rgb\" \"integer xresolution\" 16 \"integer yresolution\" 16\n"
+           "Sampler \"zsobol\" \"integer pixelsamples\" 256\n"
+           "Integrator \"path\" \"integer maxdepth\" 3 \"string strategy\" \"" +
+           strategy +
+           "\"\n"
+           "LookAt 0 4 -4  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
+           "WorldBegin\n"
+           "Material \"diffuse\" \"rgb reflectance\" [0.5 0.5 0.5]\n"
+           "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] \"point3 P\" "
+           "[-3 0 -3 3 0 -3 3 0 3 -3 0 3]\n"
+           "Material \"conductor\" \"spectrum eta\" \"metal-Ni-eta\" \"spectrum k\" "
+           "\"metal-Ni-k\" \"float roughness\" 0.3 \"float temperature\" 1500\n"
+           "AttributeBegin\n Translate 0 1.2 0\n Shape \"sphere\" \"float radius\" 0.5\n"
+           "AttributeEnd\n";
+}
+
+TEST(ThermalTest, LightAndBsdfSamplingOfThermalEmittersAgree) {
+    RunningStats mis = ImageLuminance(*testing::RenderText(HotSphere("mis")).scene);
+    RunningStats light = ImageLuminance(*testing::RenderText(HotSphere("light")).scene);
+    RunningStats bsdf = ImageLuminance(*testing::RenderText(HotSphere("bsdf")).scene);
+    ASSERT_GT(mis.Mean(), 0);
+    // Image means are averages over 256 pixels x 256 samples; their standard errors come
+    // from the spread of the pixel values.
+    auto se = [](const RunningStats& s) { return std::sqrt(s.Variance() / s.Count()); };
+    EXPECT_NEAR(light.Mean(), mis.Mean(), 5 * std::hypot(se(light), se(mis)) + 2e-3 * mis.Mean());
+    EXPECT_NEAR(bsdf.Mean(), mis.Mean(), 5 * std::hypot(se(bsdf), se(mis)) + 2e-3 * mis.Mean());
+}
+
+// Glow of one smooth sphere of a material at 1300 K, no other light: mean XYZ of the central
+// pixels (seen near normal incidence).
+XYZ GlowXYZ(const std::string& material) {
+    std::string text =
+        "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\n"
+        "Sampler \"zsobol\" \"integer pixelsamples\" 16\n"
+        "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 4\n"
+        "WorldBegin\nMaterial " +
+        material + "\nShape \"sphere\" \"float radius\" 1 \"float temperature\" 1300\n";
+    testing::RenderedScene r = testing::RenderText(text);
+    XYZ sum;
+    Bounds2i b = r.scene->film->PixelBounds();
+    for (int y = b.pMin.y; y < b.pMax.y; ++y)
+        for (int x = b.pMin.x; x < b.pMax.x; ++x)
+            sum = sum + r.scene->film->ColorSpace()->ToXYZ(r.scene->film->GetPixelRGB({x, y}));
+    return sum / Float(b.Area());
+}
+
+// XYZ of B(T) (1 - R_normal(lambda)) for a metal's named eta and k: the prediction.
+XYZ PredictedGlowXYZ(const std::string& metal, double T) {
+    const Spectrum* eta = GetNamedSpectrum("metal-" + metal + "-eta");
+    const Spectrum* k = GetNamedSpectrum("metal-" + metal + "-k");
+    double X = 0, Y = 0, Z = 0;
+    for (int l = 360; l <= 830; ++l) {
+        double n = (*eta)(Float(l)), kk = (*k)(Float(l));
+        double R = ((n - 1) * (n - 1) + kk * kk) / ((n + 1) * (n + 1) + kk * kk);
+        double L = planck_radiance(l, T) * (1 - R);
+        X += L * CIE_X(Float(l));
+        Y += L * CIE_Y(Float(l));
+        Z += L * CIE_Z(Float(l));
+    }
+    return XYZ(Float(X), Float(Y), Float(Z)) / CIE_Y_integral;
+}
+
+std::string Metal(const std::string& m) {
+    return "\"conductor\" \"spectrum eta\" \"metal-" + m + "-eta\" \"spectrum k\" \"metal-" + m +
+           "-k\"";
+}
+
+TEST(ThermalTest, GoldGlowsYellowerThanSilverAndPlatinumAsItsAbsorbancePredicts) {
+    Point2f gold = GlowXYZ(Metal("Au")).xy(), silver = GlowXYZ(Metal("Ag")).xy(),
+            platinum = GlowXYZ(Metal("Pt")).xy();
+    Point2f goldPred = PredictedGlowXYZ("Au", 1300).xy(),
+            silverPred = PredictedGlowXYZ("Ag", 1300).xy(),
+            platinumPred = PredictedGlowXYZ("Pt", 1300).xy();
+    // Rendered chromaticities follow the normal-incidence prediction (the pixels see the
+    // sphere within a few degrees of normal incidence).
+    for (auto [got, want] : {std::pair{gold, goldPred}, {silver, silverPred},
+                             {platinum, platinumPred}}) {
+        EXPECT_NEAR(got.x, want.x, 4e-3);
+        EXPECT_NEAR(got.y, want.y, 4e-3);
+    }
+    // Gold's chromaticity is measurably different, in the direction 1 - R predicts.
+    for (auto [other, otherPred] : {std::pair{silver, silverPred}, {platinum, platinumPred}}) {
+        Vector2f got(gold.x - other.x, gold.y - other.y);
+        Vector2f want(goldPred.x - otherPred.x, goldPred.y - otherPred.y);
+        EXPECT_GT(std::sqrt(want.x * want.x + want.y * want.y), 0.01);
+        Float cosAngle = (got.x * want.x + got.y * want.y) /
+                         std::sqrt((got.x * got.x + got.y * got.y) *
+                                   (want.x * want.x + want.y * want.y));
+        EXPECT_GT(cosAngle, 0.95);
+    }
+}
+
+TEST(ThermalTest, SilverGlowsFarWeakerThanBlackQuartz) {
+    Float silver = GlowXYZ(Metal("Ag")).Y;
+    Float quartz = GlowXYZ("\"coateddiffuse\" \"rgb reflectance\" [0 0 0] \"spectrum eta\" "
+                           "\"glass-SiO2\" \"float roughness\" 0")
+                       .Y;
+    EXPECT_GT(quartz, 10 * silver);
+    // Black quartz is nearly a blackbody at normal incidence: 1 - R of fused silica ~ 0.96.
+    EXPECT_NEAR(quartz / BlackbodyLuminance(1300), 0.965, 0.01);
+}
+
+}  // namespace
+}  // namespace kiln
