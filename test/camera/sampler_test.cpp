@@ -310,5 +310,38 @@ TEST(Sampler, Create) {
     EXPECT_THROW(Sampler::Create("random", empty, res, FileLoc(), diag), SceneError);
 }
 
+TEST(Sampler, ZSobolPixelCacheIsTransparent) {
+    // ZSobolSampler memoises the pixel's digits per dimension: a sampler reused across samples
+    // and pixels (and beyond the cached dimensions) must return what a fresh one returns.
+    for (int spp : {1, 2, 8, 32, 64}) {
+        ZSobolSampler reused(spp, Point2i(100, 60), RandomizeStrategy::FastOwen, 5);
+        for (Point2i p : {Point2i(3, 4), Point2i(3, 4), Point2i(99, 59), Point2i(3, 4)})
+            for (int i = 0; i < spp; ++i) {
+                ZSobolSampler fresh(spp, Point2i(100, 60), RandomizeStrategy::FastOwen, 5);
+                reused.StartPixelSample(p, i, 0);
+                fresh.StartPixelSample(p, i, 0);
+                for (int d = 0; d < 90; ++d) {
+                    ASSERT_EQ(reused.GetSampleIndex(), fresh.GetSampleIndex()) << spp << " " << d;
+                    ASSERT_EQ(reused.Get1D(), fresh.Get1D());
+                }
+            }
+    }
+}
+
+TEST(LowDiscrepancy, FastSobolBitsMatchMatrices) {
+    // The bit-reversal and table paths of SobolBits equal the generator-matrix product.
+    RNG rng(11);
+    for (int dim = 0; dim < 3; ++dim) {
+        std::span<const uint32_t> c = SobolMatrix(dim);
+        for (int n = 0; n < 20000; ++n) {
+            uint64_t a = n < 1000 ? uint64_t(n) : (uint64_t(rng.Uniform32()) << (n % 21)) ^ n;
+            uint32_t v = 0;
+            for (int i = 0; i < SobolMatrixSize; ++i)
+                if ((a >> i) & 1) v ^= c[i];
+            ASSERT_EQ(SobolBits(a, dim), v) << "dim " << dim << " index " << a;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace kiln

@@ -100,14 +100,59 @@ struct OwenScrambler {
     uint32_t seed;
 };
 
-// Sample `a` of Sobol' dimension `dim`, randomized, as a float in [0, 1).
-template <typename R>
-inline Float SobolSample(uint64_t a, int dim, R randomizer) {
+// Fast generator products for the dimensions the samplers use
+namespace sobol_detail {
+// Dimension 1's columns: its polynomial x + 1 with m_1 = 1 gives V_k = V_{k-1} ^ (V_{k-1} >> 1)
+// in 64-bit fractions (the Pascal matrix mod 2); each column is the top 32 bits.
+inline constexpr int kDim1Bytes = (SobolMatrixSize + 7) / 8;
+struct Dim1Tables {
+    uint32_t t[kDim1Bytes][256];  // XOR of the columns selected by each byte of the index
+};
+constexpr Dim1Tables MakeDim1Tables() {
+    uint32_t col[8 * kDim1Bytes] = {};
+    uint64_t v = uint64_t(1) << 63;
+    for (int k = 0; k < SobolMatrixSize; ++k) {
+        col[k] = uint32_t(v >> 32);
+        v ^= v >> 1;
+    }
+    Dim1Tables tables{};
+    for (int b = 0; b < kDim1Bytes; ++b)
+        for (int x = 0; x < 256; ++x) {
+            uint32_t r = 0;
+            for (int i = 0; i < 8; ++i)
+                if (x & (1 << i)) r ^= col[8 * b + i];
+            tables.t[b][x] = r;
+        }
+    return tables;
+}
+inline constexpr Dim1Tables kDim1 = MakeDim1Tables();
+}  // namespace sobol_detail
+
+// The unrandomized 32-bit Sobol' value of sample `a` in dimension `dim` (generator matrix
+// times index over GF(2)). Dimension 0 (van der Corput) is a bit reversal and dimension 1 a few
+// table lookups, both exactly equal to the product with SobolMatrix(dim) (test
+// LowDiscrepancy.FastSobolBitsMatchMatrices).
+inline uint32_t SobolBits(uint64_t a, int dim) {
+    if (dim == 0) return ReverseBits32(uint32_t(a));
+    if (dim == 1) {
+        const auto& t = sobol_detail::kDim1.t;
+        uint32_t v =
+            t[0][a & 255] ^ t[1][(a >> 8) & 255] ^ t[2][(a >> 16) & 255] ^ t[3][(a >> 24) & 255];
+        if (a >> 32) [[unlikely]]
+            for (int b = 4; b < sobol_detail::kDim1Bytes; ++b) v ^= t[b][(a >> (8 * b)) & 255];
+        return v;
+    }
     std::span<const uint32_t> c = SobolMatrix(dim);
     uint32_t v = 0;
     for (int i = 0; a != 0 && i < SobolMatrixSize; a >>= 1, ++i)
         if (a & 1) v ^= c[i];
-    v = randomizer(v);
+    return v;
+}
+
+// Sample `a` of Sobol' dimension `dim`, randomized, as a float in [0, 1).
+template <typename R>
+inline Float SobolSample(uint64_t a, int dim, R randomizer) {
+    uint32_t v = randomizer(SobolBits(a, dim));
     return std::min(Float(v) * 0x1p-32f, OneMinusEpsilon);
 }
 

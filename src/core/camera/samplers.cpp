@@ -57,27 +57,47 @@ ZSobolSampler::ZSobolSampler(int samplesPerPixel, Point2i fullResolution,
     nBase4Digits = Log2Int(uint64_t(res)) + log4SamplesPerPixel;
 }
 
-uint64_t ZSobolSampler::GetSampleIndex() const {
+uint64_t ZSobolSampler::PermutedDigits(int firstDigit, int lastDigit) const {
     // All 24 permutations of four digits.
     static constexpr uint8_t permutations[24][4] = {
         {0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 1, 3}, {0, 2, 3, 1}, {0, 3, 2, 1}, {0, 3, 1, 2},
         {1, 0, 2, 3}, {1, 0, 3, 2}, {1, 2, 0, 3}, {1, 2, 3, 0}, {1, 3, 2, 0}, {1, 3, 0, 2},
         {2, 1, 0, 3}, {2, 1, 3, 0}, {2, 0, 1, 3}, {2, 0, 3, 1}, {2, 3, 0, 1}, {2, 3, 1, 0},
         {3, 1, 2, 0}, {3, 1, 0, 2}, {3, 2, 1, 0}, {3, 2, 0, 1}, {3, 0, 2, 1}, {3, 0, 1, 2}};
-
-    uint64_t sampleIndex = 0;
     // Permute each full base-4 digit by a permutation chosen from the digits above it, so the
     // permutation is consistent within every subtree of the Morton hierarchy.
     bool pow2Samples = log2SamplesPerPixel & 1;
-    int lastDigit = pow2Samples ? 1 : 0;
-    for (int i = nBase4Digits - 1; i >= lastDigit; --i) {
+    uint64_t dimensionBits = 0x55555555ULL * uint64_t(dimension);
+    uint64_t sampleIndex = 0;
+    for (int i = firstDigit; i >= lastDigit; --i) {
         int digitShift = 2 * i - (pow2Samples ? 1 : 0);
         int digit = int((mortonIndex >> digitShift) & 3);
         uint64_t higherDigits = mortonIndex >> (digitShift + 2);
-        int p = int((MixBits(higherDigits ^ (0x55555555ULL * uint64_t(dimension))) >> 24) % 24);
+        int p = int((MixBits(higherDigits ^ dimensionBits) >> 24) % 24);
         digit = permutations[p][digit];
         sampleIndex |= uint64_t(digit) << digitShift;
     }
+    return sampleIndex;
+}
+
+uint64_t ZSobolSampler::GetSampleIndex() const {
+    bool pow2Samples = log2SamplesPerPixel & 1;
+    int lastDigit = pow2Samples ? 1 : 0;
+    // Digits i >= log4SamplesPerPixel lie above the sample number (their shift is at least
+    // log2SamplesPerPixel), so they and the digits above them come from the pixel alone.
+    int log4SamplesPerPixel = (log2SamplesPerPixel + 1) / 2;
+    int firstLow = std::max(log4SamplesPerPixel, lastDigit) - 1;
+    uint64_t high;
+    if (dimension < kCachedDimensions && cacheGeneration[dimension] == generation) {
+        high = cachedHighDigits[dimension];
+    } else {
+        high = PermutedDigits(nBase4Digits - 1, firstLow + 1);
+        if (dimension < kCachedDimensions) {
+            cachedHighDigits[dimension] = high;
+            cacheGeneration[dimension] = generation;
+        }
+    }
+    uint64_t sampleIndex = high | PermutedDigits(firstLow, lastDigit);
     // An odd power of two leaves one base-2 digit, flipped at random.
     if (pow2Samples) {
         uint64_t digit = mortonIndex & 1;

@@ -7,6 +7,8 @@
 // [0, 1) and advance the dimension by 1 or 2.
 #pragma once
 
+#include <array>
+
 #include "core/base/rng.h"
 #include "core/base/vecmath.h"
 #include "core/camera/low_discrepancy.h"
@@ -99,8 +101,16 @@ class ZSobolSampler {
     int SamplesPerPixel() const { return 1 << log2SamplesPerPixel; }
     void StartPixelSample(Point2i p, int index, int dim) {
         dimension = dim;
-        mortonIndex =
-            (EncodeMorton2(uint32_t(p.x), uint32_t(p.y)) << log2SamplesPerPixel) | uint64_t(index);
+        uint64_t pixelMorton = EncodeMorton2(uint32_t(p.x), uint32_t(p.y));
+        if (pixelMorton != cachedPixel) {
+            // New pixel: forget the cached high digits.
+            cachedPixel = pixelMorton;
+            if (++generation == 0) {
+                cacheGeneration.fill(0);
+                generation = 1;
+            }
+        }
+        mortonIndex = (pixelMorton << log2SamplesPerPixel) | uint64_t(index);
     }
     Float Get1D();
     Point2f Get2D();
@@ -109,10 +119,22 @@ class ZSobolSampler {
     uint64_t GetSampleIndex() const;
 
   private:
+    // Permuted base-4 digits of the sample index from digit firstDigit up; each depends on
+    // the digits above it and the dimension only.
+    uint64_t PermutedDigits(int firstDigit, int lastDigit) const;
+
     RandomizeStrategy randomize;
     int seed, log2SamplesPerPixel, nBase4Digits;
     uint64_t mortonIndex = 0;
     int dimension = 0;
+    // The digits above the sample-number digits depend only on the pixel and the dimension:
+    // they are cached per dimension for the pixel being sampled (consecutive samples of a
+    // pixel reuse them). Pure memoisation: values are identical with or without it.
+    static constexpr int kCachedDimensions = 64;
+    uint64_t cachedPixel = ~uint64_t(0);
+    uint32_t generation = 1;  // of cachedPixel; a cache entry is valid if its generation matches
+    mutable std::array<uint32_t, kCachedDimensions> cacheGeneration{};
+    mutable std::array<uint64_t, kCachedDimensions> cachedHighDigits{};
 };
 
 }  // namespace kiln

@@ -102,6 +102,9 @@ class RGBFilm {
     Float Diagonal() const { return opts.diagonal; }
     const PixelSensor& Sensor() const { return sensor; }
     const Options& GetOptions() const { return opts; }
+    // Whether AddSample uses its VisibleSurface (AOV layers); when false, callers may pass
+    // nullptr and skip computing it (pbrt-v4's Film::UsesVisibleSurface).
+    bool UsesVisibleSurface() const { return opts.writeAOVs; }
 
     SampledWavelengths SampleWavelengths(Float u) const {
         return SampledWavelengths::SampleVisible(u);

@@ -31,11 +31,12 @@ void RenderPixelSample(const Scene& scene, const PathIntegrator<UnpolarizedRadia
     }
     std::optional<CameraRay> cameraRay = scene.camera->GenerateRay(cs, lambda);
     SampledSpectrum L;
+    // The first hit's albedo etc. only when the film writes AOV layers (it costs a BSDF
+    // albedo estimate per camera ray)
     VisibleSurface visible;
-    if (cameraRay) {
-        L = cameraRay->weight * integrator.Li(cameraRay->ray, lambda, sampler, &visible);
-    }
-    scene.film->AddSample(pPixel, L, lambda, &visible, cs.filterWeight);
+    VisibleSurface* pVisible = scene.film->UsesVisibleSurface() ? &visible : nullptr;
+    if (cameraRay) L = cameraRay->weight * integrator.Li(cameraRay->ray, lambda, sampler, pVisible);
+    scene.film->AddSample(pPixel, L, lambda, pVisible, cs.filterWeight);
 }
 
 }  // namespace
@@ -55,8 +56,7 @@ RenderStats Render(Scene& scene, const RenderSettings& settings) {
             tbb::global_control::max_allowed_parallelism, size_t(settings.threads));
 
     PathIntegrator<UnpolarizedRadiance> integrator(scene, scene.integrator, spp);
-    tbb::enumerable_thread_specific<kiln::Sampler> samplers(
-        [&] { return scene.sampler->Clone(); });
+    tbb::enumerable_thread_specific<kiln::Sampler> samplers([&] { return scene.sampler->Clone(); });
 
     std::ostringstream title;
     title << "Rendering " << res.x << "x" << res.y << " @ " << spp << " spp";

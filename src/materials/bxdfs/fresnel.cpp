@@ -84,9 +84,39 @@ FresnelRsRp FrComplexPolarized(Float cosTheta_i, std::complex<Float> eta) {
             Float(std::clamp(std::norm(r.rp), 0.0, 1.0))};
 }
 
-Float FrComplex(Float cosTheta_i, std::complex<Float> eta) {
-    FresnelAmplitudes r = FrComplexAmplitudes(cosTheta_i, eta);
-    return Float(std::clamp(0.5 * (std::norm(r.rs) + std::norm(r.rp)), 0.0, 1.0));
+// Unpolarised reflectance: the same equations as FrComplexAmplitudes with |a / b|^2 written as
+// |a|^2 / |b|^2 and the principal square root spelled out, so no library complex division
+// (__divdc3) or csqrt runs per call; this is on the path of every conductor sample.
+Float FrComplex(Float cosTheta_i, std::complex<Float> etaf) {
+    double cosi = std::clamp(double(cosTheta_i), 0.0, 1.0);
+    double er = etaf.real(), ei = etaf.imag();
+    double etaNorm = er * er + ei * ei;
+    if (etaNorm == 0 || cosi == 0) return 1;  // perfect reflector / grazing limits
+    // sin^2 theta_t = sin^2 theta_i / eta^2, eta^2 = (er^2 - ei^2) + 2 i er ei
+    double sin2Theta_i = (1 - cosi) * (1 + cosi);
+    double e2r = er * er - ei * ei, e2i = 2 * er * ei;
+    double inv = sin2Theta_i / (e2r * e2r + e2i * e2i);
+    double zr = 1 - e2r * inv, zi = e2i * inv;  // 1 - sin^2 theta_t
+    // Principal square root of z (Im >= 0 for Im z >= 0)
+    double mag = std::hypot(zr, zi);
+    double t = std::sqrt(0.5 * (mag + std::abs(zr)));
+    double ctr, cti;
+    if (t == 0) {
+        ctr = cti = 0;
+    } else if (zr >= 0) {
+        ctr = t;
+        cti = zi / (2 * t);
+    } else {
+        ctr = std::abs(zi) / (2 * t);
+        cti = std::copysign(t, zi);
+    }
+    // rp = (eta cos_i - cos_t) / (eta cos_i + cos_t)
+    double ar = er * cosi, ai = ei * cosi;
+    double rp = (Sqr(ar - ctr) + Sqr(ai - cti)) / (Sqr(ar + ctr) + Sqr(ai + cti));
+    // rs = (cos_i - eta cos_t) / (cos_i + eta cos_t)
+    double br = er * ctr - ei * cti, bi = er * cti + ei * ctr;
+    double rs = (Sqr(cosi - br) + Sqr(bi)) / (Sqr(cosi + br) + Sqr(bi));
+    return Float(std::clamp(0.5 * (rs + rp), 0.0, 1.0));
 }
 
 SampledSpectrum FrComplex(Float cosTheta_i, SampledSpectrum eta, SampledSpectrum k) {
