@@ -94,6 +94,10 @@ Light CreateSpot(const ParameterDictionary& params, const Transform& renderFromL
     Float conedelta = params.GetOneFloat("conedeltaangle", 5);
     Point3f from = params.GetOnePoint3f("from", Point3f(0, 0, 0));
     Point3f to = params.GetOnePoint3f("to", Point3f(0, 0, 1));
+    if (from == to)
+        throw SceneError(params.Loc("to").line ? params.Loc("to") : params.Loc("from"),
+                         "spot light: \"from\" and \"to\" must differ (they give its direction)",
+                         "to");
     // Light space: origin at `from`, +z towards `to`
     Transform t =
         renderFromLight * Translate(Vector3f(from)) * FromFrame(Frame::FromZ(Normalize(to - from)));
@@ -113,6 +117,11 @@ Light CreateDistant(const ParameterDictionary& params, const Transform& renderFr
     Float sc = PhotometricScale(params.GetOneFloat("scale", 1), L);
     Point3f from = params.GetOnePoint3f("from", Point3f(0, 0, 0));
     Point3f to = params.GetOnePoint3f("to", Point3f(0, 0, 1));
+    if (from == to)
+        throw SceneError(params.Loc("to").line ? params.Loc("to") : params.Loc("from"),
+                         "distant light: \"from\" and \"to\" must differ (they give its "
+                         "direction)",
+                         "to");
     // Light space: +z points from `to` towards `from` (towards the light)
     Transform t = renderFromLight * FromFrame(Frame::FromZ(Normalize(from - to)));
     // Illuminance on a surface facing the light is scale * luminance(L)
