@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/geometry/shape.h"
+#include "core/geometry/triangle.h"
 #include "materials/material.h"
 #include "spectral/planck.h"
 
@@ -23,6 +24,12 @@ Float ThermalAreaLight::Temperature(Point3f p, Normal3f n, Point2f uv) const {
     ctx.p = p;
     ctx.n = n;
     ctx.uv = uv;
+    // Per-vertex temperatures on triangle meshes need the triangle and barycentrics
+    if (const Triangle* tri = shape->Get<Triangle>()) {
+        ctx.mesh = tri->GetMesh();
+        ctx.triIndex = tri->TriangleIndex();
+        ctx.b = tri->Barycentrics(p);
+    }
     Float T = temperature.Evaluate(ctx);
     return std::isfinite(T) && T > 0 ? T : 0;
 }

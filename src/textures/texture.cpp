@@ -4,6 +4,7 @@
 #include "textures/checkerboard_texture.h"
 #include "textures/image_texture.h"
 #include "textures/noise_textures.h"
+#include "textures/temperature_textures.h"
 #include "textures/texture_parameter_dictionary.h"
 
 namespace kiln {
@@ -42,10 +43,12 @@ std::map<std::string, SpectrumTexture>& NamedTextures::SpectrumTextures(Spectrum
 namespace {
 
 // pbrt-v4 texture classes that kiln (or this kind of texture) lacks: ptex, and the noise
-// textures that exist only as float or only as spectrum textures.
+// textures that exist only as float or only as spectrum textures (and kiln's float-only
+// temperature textures).
 bool IsUnsupportedTexture(const std::string& name) {
     return name == "fbm" || name == "wrinkled" || name == "windy" || name == "marble" ||
-           name == "ptex";
+           name == "ptex" || name == "gradient" || name == "noise" || name == "heatmap" ||
+           name == "vertexattribute" || name == "cooling" || name == "keyframes";
 }
 
 }  // namespace
@@ -67,6 +70,14 @@ FloatTexture CreateFloatTexture(const std::string& name, const Transform& render
     if (name == "wrinkled") return WrinkledTexture::Create(params, renderFromTexture, arena);
     if (name == "windy")
         return arena.New<WindyTexture>(TextureMapping3D::Create(renderFromTexture));
+    // kiln's temperature sources
+    if (name == "gradient") return GradientTexture::Create(params, renderFromTexture, loc, arena);
+    if (name == "noise") return ThermalNoiseTexture::Create(params, renderFromTexture, loc, arena);
+    if (name == "heatmap")
+        return HeatMapTexture::Create(params, renderFromTexture, loc, arena, diag);
+    if (name == "vertexattribute") return VertexAttributeTexture::Create(params, arena);
+    if (name == "cooling") return TimeFunctionTexture::CreateCooling(params, loc, arena);
+    if (name == "keyframes") return TimeFunctionTexture::CreateKeyframes(params, loc, arena);
     if (IsUnsupportedTexture(name)) {
         diag.Warn(loc, "\"" + name + "\" float texture is not supported; using constant 0.5");
         return arena.New<FloatConstantTexture>(0.5f);

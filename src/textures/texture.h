@@ -32,6 +32,11 @@ class FBmTexture;
 class WrinkledTexture;
 class WindyTexture;
 class FloatDotsTexture;
+class GradientTexture;
+class ThermalNoiseTexture;
+class HeatMapTexture;
+class VertexAttributeTexture;
+class TimeFunctionTexture;
 class MarbleTexture;
 class SpectrumDotsTexture;
 class SpectrumConstantTexture;
@@ -47,16 +52,18 @@ class ImageTextureCache;
 // FloatTexture Definition
 class FloatTexture {
   public:
-    using Kind = std::variant<const FloatConstantTexture*, const FloatBilerpTexture*,
-                              const FloatCheckerboardTexture*, const FloatDirectionMixTexture*,
-                              const FloatImageTexture*, const FloatMixTexture*,
-                              const FloatScaledTexture*, const FBmTexture*, const WrinkledTexture*,
-                              const WindyTexture*, const FloatDotsTexture*>;
+    using Kind = std::variant<
+        const FloatConstantTexture*, const FloatBilerpTexture*, const FloatCheckerboardTexture*,
+        const FloatDirectionMixTexture*, const FloatImageTexture*, const FloatMixTexture*,
+        const FloatScaledTexture*, const FBmTexture*, const WrinkledTexture*, const WindyTexture*,
+        const FloatDotsTexture*, const GradientTexture*, const ThermalNoiseTexture*,
+        const HeatMapTexture*, const VertexAttributeTexture*, const TimeFunctionTexture*>;
 
     template <typename T>
     requires std::is_constructible_v<Kind, const T*> FloatTexture(const T* t) : v(t) {}
 
-    // Dimensionless value at the point.
+    // Value at the point: dimensionless, or in the unit of what it stands for (e.g. kelvin
+    // for the temperature textures of temperature_textures.h).
     Float Evaluate(const TextureEvalContext& ctx) const;
 
     template <typename T>
@@ -108,9 +115,11 @@ class SpectrumTexture {
 // Textures declared so far, by name; spectrum textures are created once per SpectrumType a
 // material may ask for (pbrt-v4 does the same). imageCache shares MIP maps between image
 // textures with the same file and options; it holds pointers into the scene's ObjectArena and
-// must not outlive it.
+// must not outlive it. renderFromWorld is the scene's render-from-world transform (identity
+// when render space is world space): "gradient" textures with "space" "world" need it.
 struct NamedTextures {
     NamedTextures();
+    Transform renderFromWorld;
     std::map<std::string, FloatTexture> floatTextures;
     std::map<std::string, SpectrumTexture> albedoSpectrumTextures, unboundedSpectrumTextures,
         illuminantSpectrumTextures;
@@ -122,8 +131,10 @@ struct NamedTextures {
 
 // Texture creation from `Texture "name" "float"|"spectrum" "class" ...`. Classes: constant,
 // scale, mix, directionmix, checkerboard, bilerp, imagemap, dots; float only: fbm, wrinkled,
-// windy; spectrum only: marble. ptex (and the float-only/spectrum-only classes asked for the
-// other kind) warn and give a constant 0.5. An unknown class throws SceneError at loc.
+// windy and kiln's temperature sources gradient, noise, heatmap, vertexattribute, cooling,
+// keyframes (temperature_textures.h); spectrum only: marble. ptex (and the float-only/spectrum-only
+// classes asked for the other kind) warn and give a constant 0.5. An unknown class throws
+// SceneError at loc.
 FloatTexture CreateFloatTexture(const std::string& className, const Transform& renderFromTexture,
                                 const TextureParameterDictionary& params, const FileLoc& loc,
                                 ObjectArena& arena, Diagnostics& diag);

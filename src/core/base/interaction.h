@@ -1,12 +1,15 @@
 // Points where light interacts with surfaces, and the rays spawned from them.
 #pragma once
 
+#include <array>
+
 #include "core/base/vecmath.h"
 
 namespace kiln {
 
 class Material;
 class Light;
+class TriangleMesh;
 
 // Shadow rays stop this fraction short of their target so they do not hit the target itself.
 inline constexpr Float ShadowEpsilon = 0.0001f;
@@ -53,6 +56,11 @@ struct SurfaceInteraction : Interaction {
     // Screen-space footprint (for texture filtering); zero when unknown.
     Vector3f dpdx, dpdy;
     Float dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;
+    // Triangle hits (kiln extension, for per-vertex attributes such as "temperature"): the
+    // mesh, the triangle's index in it and the barycentrics of p; mesh is nullptr otherwise.
+    const TriangleMesh* mesh = nullptr;
+    int triIndex = 0;
+    std::array<Float, 3> b = {0, 0, 0};
 
     SurfaceInteraction() = default;
     // pbrt-v4 convention: n = normalize(cross(dpdu, dpdv)), flipped when flipNormal is true

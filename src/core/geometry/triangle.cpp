@@ -174,6 +174,10 @@ SurfaceInteraction Triangle::InteractionFromBarycentrics(const std::array<Float,
     if (nGeom == Normal3f(0, 0, 0)) nGeom = Normal3f(-ng);
     isect.n = isect.shading.n = flip ? -nGeom : nGeom;
     isect.faceIndex = mesh->faceIndices.empty() ? 0 : mesh->faceIndices[triIndex];
+    // For per-vertex attribute textures (TextureEvalContext::mesh).
+    isect.mesh = mesh;
+    isect.triIndex = triIndex;
+    isect.b = b;
 
     if (!mesh->n.empty() || !mesh->s.empty()) {
         // Shading normal, tangent and normal derivatives from the per-vertex data.

@@ -69,6 +69,9 @@ std::string UsageText() {
            "  --crop x0 x1 y0 y1    render only this window (NDC, as Film \"cropwindow\")\n"
            "  --emission MODEL      thermal emission model for every hot surface:\n"
            "                        kirchhoff (default), additive, diffuse or none\n"
+           "  --frames A-B          render frames A..B of an animation (time = frame / fps);\n"
+           "                        '#'s in -o are replaced by the frame number (####: 0007)\n"
+           "  --fps F               frames per second for --frames (default 24)\n"
            "  --quiet               no progress output\n"
            "  --help, --version\n"
            "   or: kiln diff A B [--metric M] [--threshold X] [--out DIFF] (kiln diff --help)\n";
@@ -101,6 +104,16 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             if (!(c[0] >= 0 && c[0] < c[1] && c[1] <= 1 && c[2] >= 0 && c[2] < c[3] && c[3] <= 1))
                 throw std::invalid_argument(a + " expects 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1");
             o.crop = Bounds2f(Point2f(c[0], c[2]), Point2f(c[1], c[3]));
+        } else if (a == "--frames") {
+            const std::string& v = value();
+            size_t dash = v.find('-', 1);
+            int first = ParseInt(a, v.substr(0, dash), 0);
+            int last = dash == std::string::npos ? first : ParseInt(a, v.substr(dash + 1), 0);
+            if (last < first) throw std::invalid_argument("--frames expects FIRST-LAST, FIRST <= LAST");
+            o.frames = std::pair(first, last);
+        } else if (a == "--fps") {
+            o.fps = ParseFloat(a, value());
+            if (!(o.fps > 0)) throw std::invalid_argument("--fps must be positive");
         } else if (a == "--emission") {
             o.emission = value();
             if (!ParseEmissionModel(*o.emission))
@@ -116,38 +129,43 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             throw std::invalid_argument("more than one scene file given ('" + o.sceneFile +
                                         "' and '" + a + "')");
     }
+    if (o.frames) {
+        for (const std::string& out : o.outputs)
+            if (out.find('#') == std::string::npos && o.frames->first != o.frames->second)
+                throw std::invalid_argument("with --frames, -o needs '#' for the frame number ('" +
+                                            out + "')");
+    }
     return o;
 }
 
-int RunKiln(int argc, char** argv) {
-    if (argc >= 2 && std::string(argv[1]) == "diff")
-        return RunImageDiff(std::vector<std::string>(argv + 2, argv + argc));
-    CommandLineOptions options;
-    try {
-        options = ParseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
-        if (!options.help && !options.version && options.sceneFile.empty())
-            throw std::invalid_argument("no scene file given");
-    } catch (const std::invalid_argument& e) {
-        std::cerr << "kiln: " << e.what() << "\n" << UsageText();
-        return 2;
-    }
-    if (options.help) {
-        std::cout << UsageText();
-        return 0;
-    }
-    if (options.version) {
-        std::cout << "kiln " << KILN_VERSION << "\n";
-        return 0;
-    }
+std::string FrameFilename(const std::string& pattern, int frame) {
+    // The last run of '#' becomes the zero-padded frame number.
+    size_t last = pattern.rfind('#');
+    if (last == std::string::npos) return pattern;
+    size_t first = last;
+    while (first > 0 && pattern[first - 1] == '#') --first;
+    std::string number = std::to_string(frame);
+    size_t width = last - first + 1;
+    if (number.size() < width) number.insert(0, width - number.size(), '0');
+    return pattern.substr(0, first) + number + pattern.substr(last + 1);
+}
 
+// Renders one image (one frame of an animation) and writes it to every output; returns the
+// exit status.
+int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
+                const std::vector<std::string>& outputPatterns) {
     Diagnostics diag(&std::cerr);
     std::unique_ptr<Scene> scene;
-    std::vector<std::string> outputs = options.outputs;
+    std::vector<std::string> outputs;
     try {
         SceneBuilder builder(diag);
         ParseFile(builder, options.sceneFile, diag);
         SceneOverrides overrides{options.spp, options.seed, options.crop, std::nullopt};
         if (options.emission) overrides.emission = ParseEmissionModel(*options.emission);
+        if (frame) {
+            overrides.frame = *frame;
+            overrides.timeSeconds = Float(*frame / options.fps);
+        }
         scene = Scene::Create(builder.Description(), overrides, diag);
     } catch (const SceneError& e) {
         std::cerr << e.what() << "\n";
@@ -156,7 +174,10 @@ int RunKiln(int argc, char** argv) {
         std::cerr << "kiln: error: " << e.what() << "\n";
         return 1;
     }
-    if (outputs.empty()) outputs.push_back(scene->film->Filename());
+    for (const std::string& pattern :
+         outputPatterns.empty() ? std::vector<std::string>{scene->film->Filename()}
+                                : outputPatterns)
+        outputs.push_back(frame ? FrameFilename(pattern, *frame) : pattern);
 
     RenderSettings settings;
     settings.threads = options.threads.value_or(0);
@@ -192,6 +213,39 @@ int RunKiln(int argc, char** argv) {
     }
     if (status == 0 && stats.cancelled) status = 130;
     return status;
+}
+
+int RunKiln(int argc, char** argv) {
+    if (argc >= 2 && std::string(argv[1]) == "diff")
+        return RunImageDiff(std::vector<std::string>(argv + 2, argv + argc));
+    CommandLineOptions options;
+    try {
+        options = ParseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
+        if (!options.help && !options.version && options.sceneFile.empty())
+            throw std::invalid_argument("no scene file given");
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "kiln: " << e.what() << "\n" << UsageText();
+        return 2;
+    }
+    if (options.help) {
+        std::cout << UsageText();
+        return 0;
+    }
+    if (options.version) {
+        std::cout << "kiln " << KILN_VERSION << "\n";
+        return 0;
+    }
+
+    if (!options.frames) return RenderFrame(options, std::nullopt, options.outputs);
+    // Animation: every frame is parsed, built and rendered on its own (deterministic and
+    // independent, so frames can be rendered on different machines).
+    for (int f = options.frames->first; f <= options.frames->second; ++f) {
+        if (!options.quiet) std::fprintf(stderr, "kiln: frame %d (t = %.4g s)\n", f, f / options.fps);
+        int status = RenderFrame(options, f, options.outputs);
+        if (status != 0) return status;
+        if (interruptRequested.load()) return 130;
+    }
+    return 0;
 }
 
 }  // namespace kiln

@@ -15,6 +15,8 @@ struct CommandLineOptions {
     std::optional<int> spp, threads, seed;
     std::optional<Bounds2f> crop;
     std::optional<std::string> emission;  // kirchhoff | additive | diffuse | none
+    std::optional<std::pair<int, int>> frames;  // first and last frame, inclusive
+    double fps = 24;
     bool quiet = false;
     bool help = false, version = false;
 };
@@ -23,6 +25,10 @@ struct CommandLineOptions {
 CommandLineOptions ParseCommandLine(const std::vector<std::string>& args);
 
 std::string UsageText();
+
+// pattern with its last run of '#' replaced by the zero-padded frame number ("f.####.exr", 7
+// -> "f.0007.exr"); pattern itself if it has no '#'.
+std::string FrameFilename(const std::string& pattern, int frame);
 
 // Runs the command; returns the process exit code (0 ok, 1 scene or I/O error, 2 usage error,
 // 130 interrupted by Ctrl-C after writing the partial image).

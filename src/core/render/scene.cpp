@@ -3,7 +3,9 @@
 #include <array>
 #include <set>
 
+#include "core/geometry/triangle.h"
 #include "core/render/thermal_emitters.h"
+#include "textures/temperature_textures.h"
 #include "spectral/color.h"
 
 namespace kiln {
@@ -59,9 +61,25 @@ void CreateMaterials(SceneDescription& desc, const NamedTextures& textures, Obje
     }
 }
 
-void CreateTextures(SceneDescription& desc, NamedTextures& textures, ObjectArena& arena,
-                    Diagnostics& diag) {
+// Sets "float <name>" to value unless the texture's parameters already have it.
+void SetIfAbsent(ParameterDictionary& params, const std::string& name, Float value) {
+    if (params.Has(name)) return;
+    ParsedParameter p;
+    p.type = "float";
+    p.name = name;
+    p.floats = {value};
+    params.Set(p);
+}
+
+void CreateTextures(SceneDescription& desc, const SceneOverrides& overrides,
+                    NamedTextures& textures, ObjectArena& arena, Diagnostics& diag) {
     for (auto& [name, tex] : desc.floatTextures) {
+        // Animation time for time-dependent temperature textures
+        if (overrides.timeSeconds && (tex.texName == "cooling" || tex.texName == "keyframes"))
+            SetIfAbsent(tex.parameters, "time", *overrides.timeSeconds);
+        if (overrides.frame && tex.texName == "heatmap" &&
+            tex.parameters.GetOneString("filename", "").find('#') != std::string::npos)
+            SetIfAbsent(tex.parameters, "frame", Float(*overrides.frame));
         TextureParameterDictionary params(&tex.parameters, &textures);
         textures.floatTextures.insert_or_assign(name, CreateFloatTexture(tex.texName, tex.renderFromObject,
                                                           params, tex.loc, arena, diag));
@@ -155,7 +173,8 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
     // Textures; the thermal parameters of materials (read before the materials report
     // unused parameters); materials
     NamedTextures* textures = arena.New<NamedTextures>();
-    CreateTextures(desc, *textures, arena, diag);
+    textures->renderFromWorld = desc.camera.cameraTransform.RenderFromWorld();
+    CreateTextures(desc, overrides, *textures, arena, diag);
     std::map<std::string, ThermalParameters> namedThermal;
     for (auto& [name, e] : desc.namedMaterials)
         namedThermal[name] = ReadThermalParameters(e.parameters, *textures, false, arena);
@@ -216,6 +235,18 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
         }
         shapes.push_back(createShapes(s));
         s.parameters.ReportUnused(diag);
+        // Per-vertex temperatures (trianglemesh "float temperature" with one value per vertex,
+        // or a PLY "temperature" vertex property) when nothing else gives a temperature
+        if (!h.temperature && !shapes.back().empty()) {
+            const Triangle* tri = shapes.back().front().Get<Triangle>();
+            if (tri && tri->GetMesh()->HasAttribute("temperature")) {
+                h.temperature = FloatTexture(arena.New<VertexAttributeTexture>("temperature", 0.f));
+                h.model = overrides.emission ? *overrides.emission
+                                             : own.model.value_or(mat.model.value_or(
+                                                   EmissionModel::Kirchhoff));
+                if (s.areaLightIndex >= 0) h.model = EmissionModel::None;
+            }
+        }
         if (s.areaLightIndex >= 0 || h.model != EmissionModel::None)
             areaLightCount += shapes.back().size();
         heat.push_back(std::move(h));

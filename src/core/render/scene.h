@@ -34,6 +34,11 @@ struct SceneOverrides {
     std::optional<int> seed;
     std::optional<Bounds2f> cropWindow;  // NDC [x0, x1] x [y0, y1], as Film "cropwindow"
     std::optional<EmissionModel> emission;  // thermal emission model for every hot surface
+    // Animation: the frame being rendered and its time in seconds. Textures that change over
+    // time ("cooling" and "keyframes": "float time"; "heatmap" sequences: "float frame") get
+    // these unless the scene sets them explicitly.
+    std::optional<int> frame;
+    std::optional<Float> timeSeconds;
 };
 
 // How direct light is found: pbrt-v4's MIS of light and BSDF sampling (default), or one of the
