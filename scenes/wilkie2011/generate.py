@@ -3,8 +3,7 @@
 
 Twelve smooth spheres heated from 1050 K to 1600 K in 50 K steps stand in a circle on a
 diffuse base: the coolest at the 11 o'clock position, 50 K hotter each step anticlockwise, the
-hottest (1600 K) at 12 o'clock. Seen from above, 12 o'clock is the far side (-z) and clockwise
-runs towards +x.
+hottest (1600 K) at 12 o'clock, as seen in the rendered image (12 o'clock is the far side, -z).
 
 blackbody-lights.pbrt is the foundation version: each sphere is an ordinary pbrt-v4 diffuse area
 light with a "blackbody" spectrum. pbrt-v4 normalises blackbody spectra to unit luminance, so
@@ -72,8 +71,10 @@ AttributeEnd
 
 
 def sphere_position(clock):
+    # pbrt's camera space is left-handed: with the camera above the +z side looking towards -z,
+    # world +x appears on the image's left. Clockwise in the image therefore runs towards -x.
     angle = math.radians(30 * (clock % 12))
-    return RING_RADIUS * math.sin(angle), SPHERE_RADIUS, -RING_RADIUS * math.cos(angle)
+    return -RING_RADIUS * math.sin(angle), SPHERE_RADIUS, -RING_RADIUS * math.cos(angle)
 
 
 def blackbody_scene(cmf):
