@@ -44,6 +44,16 @@ PowerLightSampler::PowerLightSampler(std::span<const Light> lights) : lights(lig
     aliasTable = AliasTable(power);
 }
 
+PowerLightSampler::PowerLightSampler(std::span<const Light> lights, std::vector<Float> weights)
+    : lights(lights) {
+    if (lights.empty()) return;
+    weights.resize(lights.size(), 0);
+    for (Float& w : weights) w = std::isfinite(w) && w > 0 ? w : 0;
+    if (std::accumulate(weights.begin(), weights.end(), 0.0) == 0)
+        std::fill(weights.begin(), weights.end(), Float(1));
+    aliasTable = AliasTable(weights);
+}
+
 std::optional<SampledLight> PowerLightSampler::Sample(Float u) const {
     if (lights.empty()) return {};
     Float pmf = 0;

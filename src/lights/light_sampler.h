@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "core/base/sampling.h"
 #include "lights/light.h"
@@ -41,6 +42,9 @@ class PowerLightSampler {
   public:
     // The span's elements must stay alive at fixed addresses while the sampler is used.
     explicit PowerLightSampler(std::span<const Light> lights);
+    // Probability proportional to the given non-negative weights, one per light (e.g. area,
+    // for comparisons); uniform if they are all zero.
+    PowerLightSampler(std::span<const Light> lights, std::vector<Float> weights);
 
     std::optional<SampledLight> Sample(Float u) const;
     std::optional<SampledLight> Sample(const LightSampleContext&, Float u) const {

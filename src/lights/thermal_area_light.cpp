@@ -84,6 +84,8 @@ Float ThermalAreaLight::PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool)
     return std::isfinite(pdf) ? pdf : 0;
 }
 
+Float ThermalAreaLight::Area() const { return shape->Area(); }
+
 SampledSpectrum ThermalAreaLight::Phi(const SampledWavelengths& lambda) const {
     Float area = shape->Area();
     if (!(area > 0)) return SampledSpectrum(0.f);

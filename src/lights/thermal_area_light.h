@@ -32,6 +32,7 @@ class ThermalAreaLight {
 
     LightType Type() const { return LightType::Area; }
     EmissionModel Model() const { return model; }
+    Float Area() const;
 
     SampledSpectrum L(Point3f p, Normal3f n, Point2f uv, Vector3f w,
                       const SampledWavelengths& lambda) const;

@@ -96,6 +96,10 @@ TEST(NamedSpectra, SpotValues) {
 }
 
 TEST(NamedSpectra, KilnMetalsMatchReferenceData) {
+    // The measured data live beside the checkout (../shared/data); a checkout without them
+    // cannot run this comparison.
+    if (!std::ifstream(std::string(KILN_SHARED_DIR) + "/data/nk_Pt.csv"))
+        GTEST_SKIP() << "reference data " KILN_SHARED_DIR "/data not available";
     for (const char* m : {"Pt", "Ni", "Fe", "W", "Cr", "Ti", "Se"}) {
         const std::string csv = std::string("nk_") + m + ".csv";
         ExpectMatchesCSV(std::string("metal-") + m + "-eta", csv, false);

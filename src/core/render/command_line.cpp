@@ -72,6 +72,8 @@ std::string UsageText() {
            "  --frames A-B          render frames A..B of an animation (time = frame / fps);\n"
            "                        '#'s in -o are replaced by the frame number (####: 0007)\n"
            "  --fps F               frames per second for --frames (default 24)\n"
+           "  --light-sampler S     how lights are picked: power (default), uniform, area\n"
+           "  --verbose             print the scene features kiln enabled\n"
            "  --quiet               no progress output\n"
            "  --help, --version\n"
            "   or: kiln diff A B [--metric M] [--threshold X] [--out DIFF] (kiln diff --help)\n";
@@ -119,6 +121,13 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             if (!ParseEmissionModel(*o.emission))
                 throw std::invalid_argument("--emission expects kirchhoff, additive, diffuse or "
                                             "none, got '" + *o.emission + "'");
+        } else if (a == "--light-sampler") {
+            o.lightSampler = value();
+            if (*o.lightSampler != "power" && *o.lightSampler != "uniform" &&
+                *o.lightSampler != "area")
+                throw std::invalid_argument("--light-sampler expects power, uniform or area");
+        } else if (a == "--verbose" || a == "-v") {
+            o.verbose = true;
         } else if (a == "--quiet" || a == "-q")
             o.quiet = true;
         else if (!a.empty() && a[0] == '-')
@@ -166,7 +175,18 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
             overrides.frame = *frame;
             overrides.timeSeconds = Float(*frame / options.fps);
         }
+        if (options.lightSampler) {
+            ParsedParameter p;
+            p.type = "string";
+            p.name = "lightsampler";
+            p.strings = {*options.lightSampler};
+            builder.Description().integrator.parameters.Set(p);
+        }
         scene = Scene::Create(builder.Description(), overrides, diag);
+        if (options.verbose)
+            std::fprintf(stderr, "kiln: %d shapes, %zu lights (%d thermal); features: %s\n",
+                         scene->shapeCount, scene->lights.size(), scene->thermalEmitterCount,
+                         scene->features.ToString().c_str());
     } catch (const SceneError& e) {
         std::cerr << e.what() << "\n";
         return 1;

@@ -18,6 +18,8 @@ struct CommandLineOptions {
     std::optional<std::pair<int, int>> frames;  // first and last frame, inclusive
     double fps = 24;
     bool quiet = false;
+    bool verbose = false;
+    std::optional<std::string> lightSampler;  // power | uniform | area
     bool help = false, version = false;
 };
 

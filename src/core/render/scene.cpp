@@ -12,6 +12,22 @@ namespace kiln {
 
 Scene::~Scene() = default;
 
+std::string SceneFeatures::ToString() const {
+    std::string s;
+    auto add = [&](bool on, const char* name) {
+        s += std::string(s.empty() ? "" : ", ") + name + (on ? " on" : " off");
+    };
+    add(thermalEmission, "thermal emission");
+    add(varyingTemperatures, "varying temperatures");
+    add(areaLights, "area lights");
+    add(environmentLight, "environment light");
+    add(imageTextures, "image textures");
+    add(dispersion, "dispersion");
+    add(aovs, "AOVs");
+    s += ", polarisation off (not implemented)";
+    return s;
+}
+
 namespace {
 
 // Creation of named and anonymous materials; mix materials may refer to named materials
@@ -124,7 +140,11 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, bool given, Diag
         throw SceneError(e.parameters.Loc("strategy"),
                          "unknown strategy (expected \"mis\", \"light\" or \"bsdf\")", strategy);
     std::string ls = e.parameters.GetOneString("lightsampler", "bvh");
-    if (ls != "bvh" && ls != "power" && ls != "uniform")
+    if (ls == "uniform")
+        s.lightSelection = LightSelection::Uniform;
+    else if (ls == "area")
+        s.lightSelection = LightSelection::Area;
+    else if (ls != "bvh" && ls != "power")
         diag.Warn(e.parameters.Loc("lightsampler"),
                   "light sampler \"" + ls + "\" is not supported; using \"power\"");
     return s;
@@ -320,7 +340,47 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
         light.Preprocess(bounds);
         if (light.Type() == LightType::Infinite) scene->infiniteLights.push_back(&light);
     }
-    scene->lightSampler = std::make_unique<PowerLightSampler>(scene->lights);
+    switch (scene->integrator.lightSelection) {
+        case LightSelection::Power:
+            scene->lightSampler = std::make_unique<PowerLightSampler>(scene->lights);
+            break;
+        case LightSelection::Uniform:
+            scene->lightSampler = std::make_unique<PowerLightSampler>(
+                scene->lights, std::vector<Float>(scene->lights.size(), 1.f));
+            break;
+        case LightSelection::Area: {
+            std::vector<Float> area;
+            for (const Light& light : scene->lights) {
+                Float a = 1;
+                if (auto d = light.GetIf<DiffuseAreaLight>()) a = d->Area();
+                if (auto t = light.GetIf<ThermalAreaLight>()) a = t->Area();
+                area.push_back(a);
+            }
+            scene->lightSampler = std::make_unique<PowerLightSampler>(scene->lights, area);
+            break;
+        }
+    }
+    // Features the scene uses
+    SceneFeatures& f = scene->features;
+    f.thermalEmission = scene->thermalEmitterCount > 0;
+    for (const ShapeHeat& h : heat)
+        if (h.model != EmissionModel::None && h.temperature &&
+            !h.temperature->Is<FloatConstantTexture>())
+            f.varyingTemperatures = true;
+    f.areaLights = !desc.areaLights.empty();
+    f.environmentLight = !scene->infiniteLights.empty();
+    for (const auto& [name, tex] : desc.floatTextures)
+        f.imageTextures |= tex.texName == "imagemap" || tex.texName == "heatmap";
+    for (const auto& [name, tex] : desc.spectrumTextures)
+        f.imageTextures |= tex.texName == "imagemap";
+    auto dispersive = [](const ParameterDictionary& p) {
+        return p.TypeOf("eta") == "spectrum" && p.GetOneString("type", "") != "conductor";
+    };
+    for (const SceneEntity& m : desc.materials)
+        f.dispersion |= m.name != "conductor" && dispersive(m.parameters);
+    for (const auto& [name, m] : desc.namedMaterials) f.dispersion |= dispersive(m.parameters);
+    f.aovs = scene->film->UsesVisibleSurface();
+
     if (scene->lights.empty())
         diag.Warn(FileLoc(), "the scene has no lights; the image will be black");
     return scene;

@@ -45,11 +45,27 @@ struct SceneOverrides {
 // two alone (kiln's Integrator "path" "string strategy" "mis" | "light" | "bsdf", for
 // comparisons and tests; all three converge to the same image).
 enum class LightStrategy { MIS, LightOnly, BSDFOnly };
+// How next-event estimation picks a light: by emitted power (default; pbrt-v4's "bvh" and
+// "power" map here), uniformly, or in proportion to area (area lights; others weigh 1).
+enum class LightSelection { Power, Uniform, Area };
 
 struct PathIntegratorSettings {
     int maxDepth = 5;         // pbrt-v4 "maxdepth"
     bool regularize = false;  // pbrt-v4 "regularize"
     LightStrategy strategy = LightStrategy::MIS;
+    LightSelection lightSelection = LightSelection::Power;
+};
+
+// What a scene uses, decided at load (kiln --verbose prints it).
+struct SceneFeatures {
+    bool thermalEmission = false;       // shapes glowing by temperature
+    bool varyingTemperatures = false;   // temperature textures other than constants
+    bool areaLights = false;            // AreaLightSource emitters
+    bool environmentLight = false;      // infinite lights
+    bool imageTextures = false;         // imagemap / heatmap textures
+    bool dispersion = false;            // wavelength-dependent IOR (terminates secondaries)
+    bool aovs = false;                  // film writes albedo/normal/depth layers
+    std::string ToString() const;
 };
 
 class Scene {
@@ -82,6 +98,7 @@ class Scene {
     bool disablePixelJitter = false;
     int shapeCount = 0;
     int thermalEmitterCount = 0;  // shapes glowing because of their temperature
+    SceneFeatures features;
 
   private:
     Scene() = default;
