@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "core/image/image.h"
+#include "core/render/auto_exposure.h"
 #include "render_test_util.h"
 
 namespace kiln {
@@ -115,6 +116,29 @@ TEST(RenderTest, EveryBundledSceneRendersWithoutWarningsOrNaNs) {
         EXPECT_EQ(r.scene->film->NonFiniteSampleCount(), 0);
         EXPECT_GT(r.stats.cameraPaths, 0);
     }
+}
+
+}  // namespace
+}  // namespace kiln
+
+namespace kiln {
+namespace {
+
+TEST(RenderTest, AutoExposureBringsTheBrightPercentileToTheTarget) {
+    testing::RenderedScene r = testing::RenderText(kSmallScene, 2);
+    RGBFilm& film = *r.scene->film;
+    Float ev = AutoExposureEV(film, 0.99f, 0.9f);
+    EXPECT_TRUE(std::isfinite(ev));
+    film.SetExposureEV(ev);
+    std::vector<Float> Y;
+    Bounds2i b = film.PixelBounds();
+    for (int y = b.pMin.y; y < b.pMax.y; ++y)
+        for (int x = b.pMin.x; x < b.pMax.x; ++x)
+            if (Float v = testing::PixelY(*r.scene, {x, y}); v > 0) Y.push_back(v);
+    std::sort(Y.begin(), Y.end());
+    EXPECT_NEAR(Y[size_t(0.99f * (Y.size() - 1))], 0.9f, 1e-3f);
+    // Applying it again changes nothing: the estimate ignores the current exposure.
+    EXPECT_NEAR(AutoExposureEV(film, 0.99f, 0.9f), ev, 1e-4f);
 }
 
 }  // namespace

@@ -134,6 +134,9 @@ class RGBFilm {
     void WriteImage(const std::string& filename, ImageMetadata metadata,
                     const std::string& viewOverride = "") const;
 
+    // Exposure in EV stops (film "exposure"): pixel values are scaled by 2^ev.
+    void SetExposureEV(Float ev) { opts.exposureEV = ev; }
+
     // Resets all pixels to black and the non-finite counters to zero.
     void Clear();
 

@@ -10,6 +10,7 @@
 
 #include "core/parser/parser.h"
 #include "core/render/image_diff.h"
+#include "core/render/auto_exposure.h"
 #include "core/render/renderer.h"
 #include "core/render/scene_builder.h"
 
@@ -73,6 +74,8 @@ std::string UsageText() {
            "                        '#'s in -o are replaced by the frame number (####: 0007)\n"
            "  --fps F               frames per second for --frames (default 24)\n"
            "  --light-sampler S     how lights are picked: power (default), uniform, area\n"
+           "  --exposure EV|auto    exposure change in stops, or automatic (the 99th\n"
+           "                        percentile luminance goes to 0.9; film \"autoexposure\")\n"
            "  --verbose             print the scene features kiln enabled\n"
            "  --quiet               no progress output\n"
            "  --help, --version\n"
@@ -126,6 +129,9 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             if (*o.lightSampler != "power" && *o.lightSampler != "uniform" &&
                 *o.lightSampler != "area")
                 throw std::invalid_argument("--light-sampler expects power, uniform or area");
+        } else if (a == "--exposure") {
+            o.exposure = value();
+            if (*o.exposure != "auto") ParseFloat(a, *o.exposure);
         } else if (a == "--verbose" || a == "-v") {
             o.verbose = true;
         } else if (a == "--quiet" || a == "-q")
@@ -213,7 +219,16 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
         std::cerr << "kiln: warning: " << bad << " NaN/Inf radiance samples were discarded "
                   << "(first at pixel " << p.x << ", " << p.y << ")\n";
     }
+    // Exposure: the film's "exposure", plus --exposure stops or automatic exposure
+    Float ev = scene->film->GetOptions().exposureEV;
+    if (options.exposure && *options.exposure != "auto") ev += std::stof(*options.exposure);
+    if (scene->autoExposure || (options.exposure && *options.exposure == "auto")) {
+        ev += AutoExposureEV(*scene->film);
+        if (options.verbose) std::fprintf(stderr, "kiln: automatic exposure %+.2f EV\n", ev);
+    }
+    scene->film->SetExposureEV(ev);
     ImageMetadata metadata;
+    metadata.strings["kiln:exposureEV"] = std::to_string(ev);
     metadata.renderTimeSeconds = float(stats.seconds);
     metadata.samplesPerPixel = stats.cancelled ? stats.completedSamples : stats.samplesPerPixel;
     int status = 0;

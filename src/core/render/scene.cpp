@@ -172,6 +172,7 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
         crop.floats = {c.pMin.x, c.pMax.x, c.pMin.y, c.pMax.y};
         desc.film.parameters.Set(crop);
     }
+    scene->autoExposure = desc.film.parameters.GetOneBool("autoexposure", false);
     scene->film = RGBFilm::Create(desc.film.name, desc.film.parameters, shutterClose - shutterOpen,
                                   *scene->filter, desc.filmColorSpace, desc.film.loc, arena, diag);
     scene->camera = Camera::Create(desc.camera.name, desc.camera.parameters,

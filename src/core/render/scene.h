@@ -96,6 +96,7 @@ class Scene {
     std::unique_ptr<PowerLightSampler> lightSampler;
     PathIntegratorSettings integrator;
     bool disablePixelJitter = false;
+    bool autoExposure = false;  // film "bool autoexposure" (kiln): see auto_exposure.h
     int shapeCount = 0;
     int thermalEmitterCount = 0;  // shapes glowing because of their temperature
     SceneFeatures features;
