@@ -192,5 +192,61 @@ TEST(ThermalTest, SilverGlowsFarWeakerThanBlackQuartz) {
     EXPECT_NEAR(quartz / BlackbodyLuminance(1300), 0.965, 0.01);
 }
 
+
+// Hot emitters resting on a floor (a sphere and a triangle-mesh box touching it): the floor
+// right up to the contact lines must be free of fireflies, the near-zero-distance problem of
+// light sampling. Two renders with different seeds differ only by noise: with fireflies the
+// largest pixel difference would dwarf the typical one.
+TEST(ThermalTest, NoFirefliesWhereHotEmittersTouchTheFloor) {
+    const std::string scene = R"(
+Film "rgb" "integer xresolution" 64 "integer yresolution" 48
+Sampler "zsobol" "integer pixelsamples" 64
+Integrator "path" "integer maxdepth" 3
+LookAt 0 0.35 -1.6  0 0.1 0  0 1 0
+Camera "perspective" "float fov" 40
+WorldBegin
+Material "diffuse" "rgb reflectance" [0.5 0.5 0.5]
+Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-3 0 -3 3 0 -3 3 0 3 -3 0 3]
+Material "conductor" "spectrum eta" "metal-Ni-eta" "spectrum k" "metal-Ni-k"
+    "float roughness" 0.2 "float temperature" 1400
+AttributeBegin
+  Translate -0.3 0.25 0
+  Shape "sphere" "float radius" 0.25
+AttributeEnd
+AttributeBegin
+  Translate 0.25 0 0
+  Shape "trianglemesh" "integer indices" [0 1 2 0 2 3  4 5 6 4 6 7]
+    "point3 P" [0 0 -0.2  0.3 0 -0.2  0.3 0.3 -0.2  0 0.3 -0.2
+                0 0 -0.2  0 0 0.1  0 0.3 0.1  0 0.3 -0.2]
+AttributeEnd
+)";
+    SceneOverrides a, b;
+    a.seed = 1;
+    b.seed = 2;
+    testing::RenderedScene ra = testing::RenderText(scene, 0, a);
+    testing::RenderedScene rb = testing::RenderText(scene, 0, b);
+    // Floor rows just below the contact line (row ~30 of 48, where the emitters end) down
+    std::vector<double> diff;
+    RunningStats floor;
+    for (int y = 31; y < 48; ++y)
+        for (int x = 0; x < 64; ++x) {
+            double ya = testing::PixelY(*ra.scene, {x, y}), yb = testing::PixelY(*rb.scene, {x, y});
+            diff.push_back(std::abs(ya - yb));
+            floor.Add(0.5 * (ya + yb));
+        }
+    double sumSq = 0, maxDiff = 0;
+    size_t maxAt = 0;
+    for (size_t i = 0; i < diff.size(); ++i) {
+        sumSq += diff[i] * diff[i];
+        if (diff[i] > maxDiff) maxDiff = diff[i], maxAt = i;
+    }
+    double rms = std::sqrt(sumSq / diff.size());
+    ASSERT_GT(floor.Mean(), 0);
+    EXPECT_LT(maxDiff, 8 * rms) << "max " << maxDiff << " at pixel " << maxAt % 64 << ","
+                                << 31 + maxAt / 64 << ", rms " << rms;
+    EXPECT_LT(rms, 0.2 * floor.Mean());
+    EXPECT_EQ(ra.scene->film->NonFiniteSampleCount(), 0);
+}
+
 }  // namespace
 }  // namespace kiln
