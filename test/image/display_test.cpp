@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+
+#include "spectral/cie.h"
+#include "spectral/planck.h"
 #include <cmath>
 
 namespace kiln {
@@ -26,7 +29,7 @@ Image Row(const std::vector<RGB>& colours) {
 
 TEST(Display, ConfigHasTheViews) {
     std::vector<std::string> views = DisplayViews();
-    for (const char* v : {"Standard", "Filmic", "ACES", "Raw"})
+    for (const char* v : {"Standard", "Filmic", "ACES", "Glow", "Raw"})
         EXPECT_NE(std::find(views.begin(), views.end(), v), views.end()) << v;
 }
 
@@ -137,6 +140,47 @@ TEST(Display, OtherColourSpacesAreConverted) {
     EXPECT_NEAR(out.GetChannel({0, 0}, 0), out.GetChannel({0, 0}, 2), 0.01f);
     EXPECT_THROW(ToDisplayImage(Row({RGB()}), RGBColorSpace::sRGB(), {"Vivid", 0}),
                  std::runtime_error);
+}
+
+}  // namespace
+}  // namespace kiln
+
+namespace kiln {
+namespace {
+
+// Linear sRGB of a blackbody's spectral radiance at T (W m^-2 sr^-1 nm^-1 units).
+RGB BlackbodyRGB(double T) {
+    double X = 0, Y = 0, Z = 0;
+    for (int l = 360; l <= 830; ++l) {
+        double B = planck_radiance(l, T);
+        X += B * CIE_X(Float(l));
+        Y += B * CIE_Y(Float(l));
+        Z += B * CIE_Z(Float(l));
+    }
+    return RGBColorSpace::sRGB().ToRGB(XYZ(Float(X), Float(Y), Float(Z)) / CIE_Y_integral);
+}
+
+// In one frame exposed so that 1600 K is at display white, 800 K (21 stops dimmer) must still
+// read as a dim red glow in the Glow view, and 1600 K as bright orange.
+TEST(Display, GlowViewShows800KAnd1600KInOneFrame) {
+    RGB hot = BlackbodyRGB(1600), cool = BlackbodyRGB(800);
+    Float ev = -std::log2(std::max({hot.r, hot.g, hot.b}));
+    Image out = ToDisplayEncodedFloat(Row({hot, cool}), RGBColorSpace::sRGB(), {"Glow", ev});
+    RGB h(out.GetChannel({0, 0}, 0), out.GetChannel({0, 0}, 1), out.GetChannel({0, 0}, 2));
+    RGB c(out.GetChannel({1, 0}, 0), out.GetChannel({1, 0}, 1), out.GetChannel({1, 0}, 2));
+    // Bright orange: red at full, green well below it, little blue.
+    EXPECT_GT(h.r, 0.95f);
+    EXPECT_GT(h.g, 0.2f);
+    EXPECT_LT(h.g, 0.9f * h.r);
+    EXPECT_LT(h.b, h.g);
+    // Dim red: visible (encoded red well above black), much darker than the hot one, and
+    // redder (less green relative to red) than 1600 K.
+    EXPECT_GT(c.r, 0.2f);
+    EXPECT_LT(c.r, 0.8f * h.r);
+    EXPECT_LT(c.g / c.r, h.g / h.r);
+    // The Standard view with the same exposure shows 800 K as black (why Glow exists).
+    Image std8 = ToDisplayImage(Row({hot, cool}), RGBColorSpace::sRGB(), {"Standard", ev});
+    EXPECT_EQ(std8.GetChannel({1, 0}, 0), 0);
 }
 
 }  // namespace

@@ -115,18 +115,25 @@ Image ToDisplayEncodedFloat(const Image& linearRGB, const RGBColorSpace& colorSp
         }
 
     try {
-        if (settings.view == "Filmic") {
-            // Tone curve of the max norm ("Filmic tone": display-linear), hue kept.
+        if (settings.view == "Filmic" || settings.view == "Glow") {
+            // Tone curve of the max norm (display-linear), hue kept.
+            bool glow = settings.view == "Glow";
             size_t n = size_t(res.x) * res.y;
             std::vector<float> norm(3 * n);
             for (size_t i = 0; i < n; ++i) {
                 float m = std::max({buf[3 * i], buf[3 * i + 1], buf[3 * i + 2]});
                 norm[3 * i] = norm[3 * i + 1] = norm[3 * i + 2] = m;
             }
-            Apply(config, OCIO::ROLE_SCENE_LINEAR, "Filmic tone", norm, res);
+            Apply(config, OCIO::ROLE_SCENE_LINEAR, glow ? "Glow tone" : "Filmic tone", norm, res);
             for (size_t i = 0; i < n; ++i) {
                 RGB c(buf[3 * i], buf[3 * i + 1], buf[3 * i + 2]);
-                c = FilmicHuePreserving(c, norm[3 * i]);
+                if (glow) {
+                    // Scale the colour to the toned max: chromaticity unchanged.
+                    Float m = std::max({c.r, c.g, c.b});
+                    c = m > 0 ? c * (std::min<Float>(norm[3 * i], 1) / m) : RGB(0, 0, 0);
+                } else {
+                    c = FilmicHuePreserving(c, norm[3 * i]);
+                }
                 buf[3 * i] = c.r, buf[3 * i + 1] = c.g, buf[3 * i + 2] = c.b;
             }
             // Then only the sRGB encoding (the Standard view's colour space).

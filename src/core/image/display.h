@@ -10,6 +10,11 @@
 //               the sRGB encoding;
 //   "ACES"      the ACES 1.0 SDR video output transform (RRT + ODT, OCIO 2.1 built-ins), then
 //               the sRGB encoding (clips near 16x mid grey);
+//   "Glow"      for thermal scenes whose glow spans many stops: log2 of max(R, G, B) over the
+//               24 stops below scene value 1 mapped linearly to [0, 1] (ocio "Glow tone"),
+//               applied to the max norm with the colour scaled so chromaticity is kept, then
+//               the sRGB encoding. 800 K (21 stops below 1600 K) reads as a dim red glow when
+//               1600 K is bright orange;
 //   "Raw"       no transform (and no gamut mapping).
 //
 // Method, in this order, per pixel:
@@ -38,7 +43,7 @@ namespace kiln {
 
 // DisplaySettings Definition
 struct DisplaySettings {
-    std::string view = "Standard";  // "Standard" | "Filmic" | "ACES" | "Raw"
+    std::string view = "Standard";  // "Standard" | "Filmic" | "ACES" | "Glow" | "Raw"
     Float exposureEV = 0;           // stops; linear values are multiplied by 2^exposureEV
 };
 

@@ -76,6 +76,8 @@ std::string UsageText() {
            "  --light-sampler S     how lights are picked: power (default), uniform, area\n"
            "  --exposure EV|auto    exposure change in stops, or automatic (the 99th\n"
            "                        percentile luminance goes to 0.9; film \"autoexposure\")\n"
+           "  --view NAME           display view for PNG/JPEG/TIFF outputs: Standard, Filmic,\n"
+           "                        ACES, Glow (24 stops of log luminance) or Raw\n"
            "  --verbose             print the scene features kiln enabled\n"
            "  --quiet               no progress output\n"
            "  --help, --version\n"
@@ -129,6 +131,8 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             if (*o.lightSampler != "power" && *o.lightSampler != "uniform" &&
                 *o.lightSampler != "area")
                 throw std::invalid_argument("--light-sampler expects power, uniform or area");
+        } else if (a == "--view") {
+            o.view = value();
         } else if (a == "--exposure") {
             o.exposure = value();
             if (*o.exposure != "auto") ParseFloat(a, *o.exposure);
@@ -234,7 +238,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     int status = 0;
     for (const std::string& out : outputs) {
         try {
-            scene->film->WriteImage(out, metadata);
+            scene->film->WriteImage(out, metadata, options.view);
         } catch (const std::exception& e) {
             std::cerr << "kiln: error: " << e.what() << "\n";
             status = 1;

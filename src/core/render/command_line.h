@@ -19,6 +19,7 @@ struct CommandLineOptions {
     double fps = 24;
     bool quiet = false;
     bool verbose = false;
+    std::string view;  // display view override for PNG/JPEG/... outputs ("" = the film's)
     std::optional<std::string> exposure;  // EV stops added to the film's, or "auto"
     std::optional<std::string> lightSampler;  // power | uniform | area
     bool help = false, version = false;
