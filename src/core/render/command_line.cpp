@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "core/parser/parser.h"
-#include "core/render/image_diff.h"
 #include "core/render/auto_exposure.h"
+#include "core/render/image_diff.h"
 #include "core/render/renderer.h"
 #include "core/render/scene_builder.h"
 
@@ -76,6 +76,8 @@ std::string UsageText() {
            "  --light-sampler S     how lights are picked: power (default), uniform, area\n"
            "  --exposure EV|auto    exposure change in stops, or automatic (the 99th\n"
            "                        percentile luminance goes to 0.9; film \"autoexposure\")\n"
+           "  --strategy S          direct light by mis (default), light or bsdf sampling\n"
+           "  --wavelengths N       wavelengths per path: 4 (hero, default) or 1\n"
            "  --view NAME           display view for PNG/JPEG/TIFF outputs: Standard, Filmic,\n"
            "                        ACES, Glow (24 stops of log luminance) or Raw\n"
            "  --verbose             print the scene features kiln enabled\n"
@@ -116,7 +118,8 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             size_t dash = v.find('-', 1);
             int first = ParseInt(a, v.substr(0, dash), 0);
             int last = dash == std::string::npos ? first : ParseInt(a, v.substr(dash + 1), 0);
-            if (last < first) throw std::invalid_argument("--frames expects FIRST-LAST, FIRST <= LAST");
+            if (last < first)
+                throw std::invalid_argument("--frames expects FIRST-LAST, FIRST <= LAST");
             o.frames = std::pair(first, last);
         } else if (a == "--fps") {
             o.fps = ParseFloat(a, value());
@@ -124,13 +127,23 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
         } else if (a == "--emission") {
             o.emission = value();
             if (!ParseEmissionModel(*o.emission))
-                throw std::invalid_argument("--emission expects kirchhoff, additive, diffuse or "
-                                            "none, got '" + *o.emission + "'");
+                throw std::invalid_argument(
+                    "--emission expects kirchhoff, additive, diffuse or "
+                    "none, got '" +
+                    *o.emission + "'");
         } else if (a == "--light-sampler") {
             o.lightSampler = value();
             if (*o.lightSampler != "power" && *o.lightSampler != "uniform" &&
                 *o.lightSampler != "area")
                 throw std::invalid_argument("--light-sampler expects power, uniform or area");
+        } else if (a == "--strategy") {
+            o.strategy = value();
+            if (*o.strategy != "mis" && *o.strategy != "light" && *o.strategy != "bsdf")
+                throw std::invalid_argument("--strategy expects mis, light or bsdf");
+        } else if (a == "--wavelengths") {
+            o.wavelengths = ParseInt(a, value(), 1);
+            if (*o.wavelengths != 1 && *o.wavelengths != 4)
+                throw std::invalid_argument("--wavelengths expects 1 or 4");
         } else if (a == "--view") {
             o.view = value();
         } else if (a == "--exposure") {
@@ -185,12 +198,23 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
             overrides.frame = *frame;
             overrides.timeSeconds = Float(*frame / options.fps);
         }
-        if (options.lightSampler) {
+        // Integrator settings from the command line (for comparisons)
+        ParameterDictionary& integrator = builder.Description().integrator.parameters;
+        auto setString = [&](const char* name, const std::string& value) {
             ParsedParameter p;
             p.type = "string";
-            p.name = "lightsampler";
-            p.strings = {*options.lightSampler};
-            builder.Description().integrator.parameters.Set(p);
+            p.name = name;
+            p.strings = {value};
+            integrator.Set(p);
+        };
+        if (options.lightSampler) setString("lightsampler", *options.lightSampler);
+        if (options.strategy) setString("strategy", *options.strategy);
+        if (options.wavelengths) {
+            ParsedParameter p;
+            p.type = "integer";
+            p.name = "wavelengths";
+            p.ints = {*options.wavelengths};
+            integrator.Set(p);
         }
         scene = Scene::Create(builder.Description(), overrides, diag);
         if (options.verbose)
@@ -204,9 +228,9 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
         std::cerr << "kiln: error: " << e.what() << "\n";
         return 1;
     }
-    for (const std::string& pattern :
-         outputPatterns.empty() ? std::vector<std::string>{scene->film->Filename()}
-                                : outputPatterns)
+    for (const std::string& pattern : outputPatterns.empty()
+                                          ? std::vector<std::string>{scene->film->Filename()}
+                                          : outputPatterns)
         outputs.push_back(frame ? FrameFilename(pattern, *frame) : pattern);
 
     RenderSettings settings;
@@ -279,7 +303,8 @@ int RunKiln(int argc, char** argv) {
     // Animation: every frame is parsed, built and rendered on its own (deterministic and
     // independent, so frames can be rendered on different machines).
     for (int f = options.frames->first; f <= options.frames->second; ++f) {
-        if (!options.quiet) std::fprintf(stderr, "kiln: frame %d (t = %.4g s)\n", f, f / options.fps);
+        if (!options.quiet)
+            std::fprintf(stderr, "kiln: frame %d (t = %.4g s)\n", f, f / options.fps);
         int status = RenderFrame(options, f, options.outputs);
         if (status != 0) return status;
         if (interruptRequested.load()) return 130;

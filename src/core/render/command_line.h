@@ -22,6 +22,8 @@ struct CommandLineOptions {
     std::string view;  // display view override for PNG/JPEG/... outputs ("" = the film's)
     std::optional<std::string> exposure;  // EV stops added to the film's, or "auto"
     std::optional<std::string> lightSampler;  // power | uniform | area
+    std::optional<std::string> strategy;      // mis | light | bsdf
+    std::optional<int> wavelengths;           // 1 | 4
     bool help = false, version = false;
 };
 

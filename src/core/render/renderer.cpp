@@ -24,6 +24,9 @@ void RenderPixelSample(const Scene& scene, const PathIntegrator<UnpolarizedRadia
     // Wavelengths first, then the camera sample (pbrt-v4's order)
     Float lu = sampler.Get1D();
     SampledWavelengths lambda = scene.film->SampleWavelengths(lu);
+    // One wavelength per path instead of the hero wavelength and its companions (for
+    // comparisons: Integrator "integer wavelengths" 1)
+    if (scene.integrator.singleWavelength) lambda.TerminateSecondary();
     CameraSample cs = GetCameraSample(sampler, pPixel, *scene.filter);
     if (scene.disablePixelJitter) {
         cs.pFilm = Point2f(pPixel.x + 0.5f, pPixel.y + 0.5f);

@@ -5,8 +5,8 @@
 
 #include "core/geometry/triangle.h"
 #include "core/render/thermal_emitters.h"
-#include "textures/temperature_textures.h"
 #include "spectral/color.h"
+#include "textures/temperature_textures.h"
 
 namespace kiln {
 
@@ -43,8 +43,10 @@ void CreateMaterials(SceneDescription& desc, const NamedTextures& textures, Obje
             SceneEntity& e = nm->second;
             std::string type = e.parameters.GetOneString("type", "");
             if (type.empty())
-                throw SceneError(e.loc, "MakeNamedMaterial \"" + nm->first +
-                                            "\" needs a \"string type\" parameter", nm->first);
+                throw SceneError(
+                    e.loc,
+                    "MakeNamedMaterial \"" + nm->first + "\" needs a \"string type\" parameter",
+                    nm->first);
             if (type == "mix") {
                 bool ready = true;
                 for (const std::string& m : e.parameters.GetStringArray("materials"))
@@ -63,7 +65,8 @@ void CreateMaterials(SceneDescription& desc, const NamedTextures& textures, Obje
             for (auto* nm : deferred) {
                 SceneEntity& e = nm->second;
                 TextureParameterDictionary params(&e.parameters, &textures);
-                named.emplace(nm->first, Material::Create("mix", params, named, e.loc, arena, diag));
+                named.emplace(nm->first,
+                              Material::Create("mix", params, named, e.loc, arena, diag));
             }
             break;
         }
@@ -97,8 +100,9 @@ void CreateTextures(SceneDescription& desc, const SceneOverrides& overrides,
             tex.parameters.GetOneString("filename", "").find('#') != std::string::npos)
             SetIfAbsent(tex.parameters, "frame", Float(*overrides.frame));
         TextureParameterDictionary params(&tex.parameters, &textures);
-        textures.floatTextures.insert_or_assign(name, CreateFloatTexture(tex.texName, tex.renderFromObject,
-                                                          params, tex.loc, arena, diag));
+        textures.floatTextures.insert_or_assign(
+            name,
+            CreateFloatTexture(tex.texName, tex.renderFromObject, params, tex.loc, arena, diag));
         tex.parameters.ReportUnused(diag);
     }
     for (auto& [name, tex] : desc.spectrumTextures) {
@@ -121,14 +125,21 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, bool given, Diag
     PathIntegratorSettings s;
     if (e.name == "volpath") {
         if (given)
-            diag.Warn(e.loc, "participating media are not supported: integrator \"volpath\" "
-                             "renders as \"path\"");
+            diag.Warn(e.loc,
+                      "participating media are not supported: integrator \"volpath\" "
+                      "renders as \"path\"");
     } else if (e.name != "path") {
         diag.Warn(e.loc, "integrator \"" + e.name + "\" is not supported; using \"path\"");
     }
     s.maxDepth = e.parameters.GetOneInt("maxdepth", 5);
     if (s.maxDepth < 0) throw SceneError(e.parameters.Loc("maxdepth"), "maxdepth must be >= 0");
     s.regularize = e.parameters.GetOneBool("regularize", false);
+    int wavelengths = e.parameters.GetOneInt("wavelengths", NSpectrumSamples);
+    if (wavelengths != 1 && wavelengths != NSpectrumSamples)
+        throw SceneError(e.parameters.Loc("wavelengths"),
+                         "\"wavelengths\" must be 1 or " + std::to_string(NSpectrumSamples),
+                         std::to_string(wavelengths));
+    s.singleWavelength = wavelengths == 1;
     std::string strategy = e.parameters.GetOneString("strategy", "mis");
     if (strategy == "mis")
         s.strategy = LightStrategy::MIS;
@@ -158,8 +169,8 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
     ObjectArena& arena = scene->arena;
 
     // Camera, film, filter and sampler
-    scene->filter = Filter::Create(desc.filter.name, desc.filter.parameters, desc.filter.loc,
-                                   arena, diag);
+    scene->filter =
+        Filter::Create(desc.filter.name, desc.filter.parameters, desc.filter.loc, arena, diag);
     Float shutterOpen = desc.camera.parameters.GetOneFloat("shutteropen", 0);
     Float shutterClose = desc.camera.parameters.GetOneFloat("shutterclose", 1);
     if (shutterClose < shutterOpen)
@@ -175,14 +186,15 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
     scene->autoExposure = desc.film.parameters.GetOneBool("autoexposure", false);
     scene->film = RGBFilm::Create(desc.film.name, desc.film.parameters, shutterClose - shutterOpen,
                                   *scene->filter, desc.filmColorSpace, desc.film.loc, arena, diag);
-    scene->camera = Camera::Create(desc.camera.name, desc.camera.parameters,
-                                   desc.camera.cameraTransform, scene->film->FullResolution(),
-                                   desc.camera.loc, arena, diag);
+    scene->camera =
+        Camera::Create(desc.camera.name, desc.camera.parameters, desc.camera.cameraTransform,
+                       scene->film->FullResolution(), desc.camera.loc, arena, diag);
     std::optional<int> seed = overrides.seed ? overrides.seed : desc.seedOption;
-    scene->sampler = Sampler::Create(desc.sampler.name, desc.sampler.parameters,
-                                     scene->film->FullResolution(), desc.sampler.loc, diag,
-                                     overrides.samplesPerPixel, seed);
-    scene->integrator = CreateIntegratorSettings(desc.integrator, desc.integrator.loc.line > 0, diag);
+    scene->sampler =
+        Sampler::Create(desc.sampler.name, desc.sampler.parameters, scene->film->FullResolution(),
+                        desc.sampler.loc, diag, overrides.samplesPerPixel, seed);
+    scene->integrator =
+        CreateIntegratorSettings(desc.integrator, desc.integrator.loc.line > 0, diag);
     scene->disablePixelJitter = desc.disablePixelJitter;
     if (desc.accelerator.name != "bvh" && desc.accelerator.name != "kdtree")
         diag.Warn(desc.accelerator.loc,
@@ -227,9 +239,9 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
         const kiln::Transform* renderFromObject = arena.New<kiln::Transform>(s.renderFromObject);
         const kiln::Transform* objectFromRender =
             arena.New<kiln::Transform>(Inverse(s.renderFromObject));
-        std::vector<Shape> shapes = Shape::Create(s.name, renderFromObject, objectFromRender,
-                                                  s.reverseOrientation, s.parameters, s.loc,
-                                                  arena, diag);
+        std::vector<Shape> shapes =
+            Shape::Create(s.name, renderFromObject, objectFromRender, s.reverseOrientation,
+                          s.parameters, s.loc, arena, diag);
         return shapes;
     };
     struct ShapeHeat {
@@ -245,13 +257,14 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
         const ThermalParameters& mat = materialThermalOf(s);
         ShapeHeat h;
         h.temperature = own.temperature ? own.temperature : mat.temperature;
-        h.model = overrides.emission ? *overrides.emission
-                                     : own.model.value_or(mat.model.value_or(
-                                           EmissionModel::Kirchhoff));
+        h.model = overrides.emission
+                      ? *overrides.emission
+                      : own.model.value_or(mat.model.value_or(EmissionModel::Kirchhoff));
         if (!h.temperature) h.model = EmissionModel::None;
         if (h.model != EmissionModel::None && s.areaLightIndex >= 0) {
-            diag.Warn(s.loc, "shape has both an AreaLightSource and a temperature; the area "
-                             "light is used");
+            diag.Warn(s.loc,
+                      "shape has both an AreaLightSource and a temperature; the area "
+                      "light is used");
             h.model = EmissionModel::None;
         }
         shapes.push_back(createShapes(s));
@@ -262,9 +275,9 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
             const Triangle* tri = shapes.back().front().Get<Triangle>();
             if (tri && tri->GetMesh()->HasAttribute("temperature")) {
                 h.temperature = FloatTexture(arena.New<VertexAttributeTexture>("temperature", 0.f));
-                h.model = overrides.emission ? *overrides.emission
-                                             : own.model.value_or(mat.model.value_or(
-                                                   EmissionModel::Kirchhoff));
+                h.model = overrides.emission
+                              ? *overrides.emission
+                              : own.model.value_or(mat.model.value_or(EmissionModel::Kirchhoff));
                 if (s.areaLightIndex >= 0) h.model = EmissionModel::None;
             }
         }
@@ -292,20 +305,19 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
         if (s.areaLightIndex >= 0) {
             TransformedSceneEntity& le = desc.areaLights[size_t(s.areaLightIndex)];
             if (le.name != "diffuse")
-                diag.Warn(le.loc, "area light \"" + le.name + "\" is not supported; using "
-                                  "\"diffuse\"");
+                diag.Warn(le.loc, "area light \"" + le.name +
+                                      "\" is not supported; using "
+                                      "\"diffuse\"");
             for (const Shape& shape : shapes[i]) {
-                scene->lights.push_back(Light::CreateArea("diffuse", le.parameters,
-                                                          le.renderFromObject, shape, le.loc,
-                                                          arena, diag));
+                scene->lights.push_back(Light::CreateArea(
+                    "diffuse", le.parameters, le.renderFromObject, shape, le.loc, arena, diag));
                 areaLights.push_back(&scene->lights.back());
             }
         } else if (heat[i].model != EmissionModel::None) {
             // Hot shapes glow: one thermal light per shape, bound to its material
             if (heat[i].model == EmissionModel::Diffuse) material = thermalCache.Black(diag);
-            const ReflectanceTable* table = heat[i].model == EmissionModel::Kirchhoff
-                                                ? thermalCache.Table(material)
-                                                : nullptr;
+            const ReflectanceTable* table =
+                heat[i].model == EmissionModel::Kirchhoff ? thermalCache.Table(material) : nullptr;
             for (const Shape& shape : shapes[i]) {
                 const Shape* stored = arena.New<Shape>(shape);
                 scene->lights.push_back(Light(arena.New<ThermalAreaLight>(

@@ -54,6 +54,8 @@ struct PathIntegratorSettings {
     bool regularize = false;  // pbrt-v4 "regularize"
     LightStrategy strategy = LightStrategy::MIS;
     LightSelection lightSelection = LightSelection::Power;
+    // kiln "integer wavelengths": 4 (hero wavelength sampling, default) or 1.
+    bool singleWavelength = false;
 };
 
 // What a scene uses, decided at load (kiln --verbose prints it).
