@@ -14,3 +14,12 @@ if(KILN_SANITIZE)
     target_compile_options(kiln_options INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer)
     target_link_options(kiln_options INTERFACE -fsanitize=address,undefined)
 endif()
+
+# Thermal emission (ThermalAreaLight) can be compiled out, only to measure that scenes without
+# hot objects do not pay for it (bench/thermal_overhead.sh); the test suite needs it ON.
+option(KILN_THERMAL_EMISSION "Build Kirchhoff thermal emission" ON)
+if(KILN_THERMAL_EMISSION)
+    target_compile_definitions(kiln_options INTERFACE KILN_THERMAL_EMISSION=1)
+else()
+    target_compile_definitions(kiln_options INTERFACE KILN_THERMAL_EMISSION=0)
+endif()

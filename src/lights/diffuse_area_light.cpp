@@ -1,5 +1,7 @@
 #include "lights/diffuse_area_light.h"
 
+#include "lights/area_light_sampling.h"
+
 #include "core/geometry/shape.h"
 #include "spectral/color.h"
 
@@ -34,19 +36,13 @@ SampledSpectrum DiffuseAreaLight::L(Point3f, Normal3f n, Point2f uv, Vector3f w,
 std::optional<LightLiSample> DiffuseAreaLight::SampleLi(const LightSampleContext& ctx, Point2f u,
                                                         const SampledWavelengths& lambda,
                                                         bool) const {
-    ShapeSampleContext shapeCtx(ctx.p, ctx.n, ctx.ns, 0);
-    std::optional<ShapeSample> ss = shape->Sample(shapeCtx, u);
-    if (!ss || !(ss->pdf > 0) || LengthSquared(ss->intr.p - ctx.p) == 0) return {};
-    Vector3f wi = Normalize(ss->intr.p - ctx.p);
-    SampledSpectrum Le = L(ss->intr.p, ss->intr.n, ss->intr.uv, -wi, lambda);
-    if (!Le) return {};
-    return LightLiSample{Le, wi, ss->pdf, ss->intr};
+    return SampleAreaLi(*shape, ctx, u, [&](Point3f p, Normal3f n, Point2f uv, Vector3f w) {
+        return L(p, n, uv, w, lambda);
+    });
 }
 
 Float DiffuseAreaLight::PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool) const {
-    ShapeSampleContext shapeCtx(ctx.p, ctx.n, ctx.ns, 0);
-    Float pdf = shape->PDF(shapeCtx, wi);
-    return IsFinite(pdf) ? pdf : 0;
+    return AreaPDF_Li(*shape, ctx, wi);
 }
 
 // Power

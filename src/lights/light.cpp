@@ -7,7 +7,9 @@ namespace kiln {
 SampledSpectrum Light::L(Point3f p, Normal3f n, Point2f uv, Vector3f w,
                          const SampledWavelengths& lambda) const {
     if (auto area = GetIf<DiffuseAreaLight>()) return area->L(p, n, uv, w, lambda);
+#if KILN_THERMAL_EMISSION
     if (auto thermal = GetIf<ThermalAreaLight>()) return thermal->L(p, n, uv, w, lambda);
+#endif
     return SampledSpectrum(0);
 }
 

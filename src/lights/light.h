@@ -28,6 +28,14 @@
 #include "lights/thermal_area_light.h"
 #include "lights/uniform_infinite_light.h"
 
+// ThermalAreaLight is in the closed set unless thermal emission is compiled out (CMake option
+// KILN_THERMAL_EMISSION, only for overhead measurements).
+#if KILN_THERMAL_EMISSION
+#define KILN_THERMAL_LIGHT_KIND const ThermalAreaLight*,
+#else
+#define KILN_THERMAL_LIGHT_KIND
+#endif
+
 namespace kiln {
 
 class ParameterDictionary;
@@ -38,9 +46,10 @@ struct FileLoc;
 class Light {
   public:
     // The closed set: add a kind here (and its header above) to add a light type.
-    using Kind = std::variant<const PointLight*, const SpotLight*, const DistantLight*,
-                              const DiffuseAreaLight*, const ThermalAreaLight*,
-                              const UniformInfiniteLight*, const ImageInfiniteLight*>;
+    using Kind =
+        std::variant<const PointLight*, const SpotLight*, const DistantLight*,
+                     const DiffuseAreaLight*, KILN_THERMAL_LIGHT_KIND const UniformInfiniteLight*,
+                     const ImageInfiniteLight*>;
 
     template <typename T>
     requires std::is_constructible_v<Kind, const T*> Light(const T* light) : kind(light) {}

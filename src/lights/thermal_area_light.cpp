@@ -4,6 +4,7 @@
 
 #include "core/geometry/shape.h"
 #include "core/geometry/triangle.h"
+#include "lights/area_light_sampling.h"
 #include "materials/material.h"
 #include "spectral/planck.h"
 
@@ -39,7 +40,8 @@ SampledSpectrum ThermalAreaLight::Emissivity(Point3f p, Normal3f n, Point2f uv, 
                                              const SampledWavelengths& lambda) const {
     if (reflectance) {
         Float cosTheta = AbsDot(Normalize(Vector3f(n)), w);
-        return Clamp(SampledSpectrum(1.f) - reflectance->Reflectance(cosTheta, lambda), Float(0), Float(1));
+        return Clamp(SampledSpectrum(1.f) - reflectance->Reflectance(cosTheta, lambda), Float(0),
+                     Float(1));
     }
     // Varying material: evaluate its BSDF here, one wavelength set at a time (a dispersive
     // coating keeps only the hero wavelength, so then each wavelength is done separately).
@@ -68,20 +70,13 @@ SampledSpectrum ThermalAreaLight::L(Point3f p, Normal3f n, Point2f uv, Vector3f 
 std::optional<LightLiSample> ThermalAreaLight::SampleLi(const LightSampleContext& ctx, Point2f u,
                                                         const SampledWavelengths& lambda,
                                                         bool) const {
-    ShapeSampleContext shapeCtx(ctx.p, ctx.n, ctx.ns, 0);
-    std::optional<ShapeSample> ss = shape->Sample(shapeCtx, u);
-    if (!ss || !(ss->pdf > 0) || !std::isfinite(ss->pdf) || LengthSquared(ss->intr.p - ctx.p) == 0)
-        return {};
-    Vector3f wi = Normalize(ss->intr.p - ctx.p);
-    SampledSpectrum Le = L(ss->intr.p, ss->intr.n, ss->intr.uv, -wi, lambda);
-    if (!Le) return {};
-    return LightLiSample{Le, wi, ss->pdf, ss->intr};
+    return SampleAreaLi(*shape, ctx, u, [&](Point3f p, Normal3f n, Point2f uv, Vector3f w) {
+        return L(p, n, uv, w, lambda);
+    });
 }
 
 Float ThermalAreaLight::PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool) const {
-    ShapeSampleContext shapeCtx(ctx.p, ctx.n, ctx.ns, 0);
-    Float pdf = shape->PDF(shapeCtx, wi);
-    return std::isfinite(pdf) ? pdf : 0;
+    return AreaPDF_Li(*shape, ctx, wi);
 }
 
 Float ThermalAreaLight::Area() const { return shape->Area(); }

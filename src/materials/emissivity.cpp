@@ -19,10 +19,14 @@ std::optional<EmissionModel> ParseEmissionModel(std::string_view name) {
 
 std::string_view EmissionModelName(EmissionModel model) {
     switch (model) {
-        case EmissionModel::None: return "none";
-        case EmissionModel::Diffuse: return "diffuse";
-        case EmissionModel::Additive: return "additive";
-        case EmissionModel::Kirchhoff: return "kirchhoff";
+        case EmissionModel::None:
+            return "none";
+        case EmissionModel::Diffuse:
+            return "diffuse";
+        case EmissionModel::Additive:
+            return "additive";
+        case EmissionModel::Kirchhoff:
+            return "kirchhoff";
     }
     return "?";
 }
@@ -54,9 +58,8 @@ bool IsSpatiallyUniform(const Material& material) {
         return Constant(m->URoughness()) && Constant(m->VRoughness());
     if (material.Is<ThinDielectricMaterial>() || material.IsInterface()) return true;
     if (const auto* m = material.GetIf<CoatedDiffuseMaterial>())
-        return Constant(m->Reflectance()) && Constant(m->Albedo()) &&
-               Constant(m->URoughness()) && Constant(m->VRoughness()) &&
-               Constant(m->Thickness()) && Constant(m->G());
+        return Constant(m->Reflectance()) && Constant(m->Albedo()) && Constant(m->URoughness()) &&
+               Constant(m->VRoughness()) && Constant(m->Thickness()) && Constant(m->G());
     if (const auto* m = material.GetIf<CoatedConductorMaterial>()) {
         const CoatedConductorMaterial::Params& p = m->Parameters();
         return Constant(p.interfaceURoughness) && Constant(p.interfaceVRoughness) &&

@@ -43,8 +43,7 @@ std::string_view EmissionModelName(EmissionModel model);
 // (dimensionless, in [0, 1]); woRender in render space. Closed forms for diffuse and smooth
 // conductors and coatings, a deterministic stratified estimate otherwise. For transmissive
 // BSDFs returns 1 (they emit nothing).
-SampledSpectrum HemisphericalReflectance(const BSDF& bsdf, Vector3f woRender,
-                                         int sqrtSamples = 24);
+SampledSpectrum HemisphericalReflectance(const BSDF& bsdf, Vector3f woRender, int sqrtSamples = 24);
 
 // R(cos theta, lambda) tabulated once for a material whose parameters do not vary over the
 // surface: 46 polar angles (2 degree steps) x 95 wavelengths (5 nm, 360-830 nm), bilinear

@@ -42,8 +42,8 @@ TEST(EmissivityTest, EmissivityIsBoundedForAllDirectionsAndRoughnesses) {
     SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.3f);
     for (Float alpha : {0.f, 0.05f, 0.3f, 1.f})
         for (Float cosTheta : {1.f, 0.5f, 0.1f, 1e-3f}) {
-            ConductorBxDF conductor(TrowbridgeReitzDistribution(alpha, alpha),
-                                    eta->Sample(lambda), k->Sample(lambda));
+            ConductorBxDF conductor(TrowbridgeReitzDistribution(alpha, alpha), eta->Sample(lambda),
+                                    k->Sample(lambda));
             BSDF bsdf(Normal3f(0, 0, 1), Vector3f(1, 0, 0), BxDF(conductor));
             Vector3f wo(std::sqrt(1 - cosTheta * cosTheta), 0, cosTheta);
             SampledSpectrum R = HemisphericalReflectance(bsdf, wo);

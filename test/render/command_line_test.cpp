@@ -7,11 +7,11 @@ namespace kiln {
 namespace {
 
 TEST(CommandLineTest, ParsesOptions) {
-    CommandLineOptions o = ParseCommandLine({"scene.pbrt", "-o", "a.##.exr", "-o", "a.##.png", "--spp",
-                                             "16", "--threads", "2", "--seed", "-3", "--crop",
-                                             "0.1", "0.5", "0.2", "0.9", "--emission",
-                                             "additive", "--frames", "3-7", "--fps", "12",
-                                             "--quiet", "-o", "f.####.exr"});
+    CommandLineOptions o = ParseCommandLine(
+        {"scene.pbrt", "-o",      "a.##.exr",   "-o",        "a.##.png", "--spp", "16",
+         "--threads",  "2",       "--seed",     "-3",        "--crop",   "0.1",   "0.5",
+         "0.2",        "0.9",     "--emission", "additive",  "--frames", "3-7",   "--fps",
+         "12",         "--quiet", "-o",         "f.####.exr"});
     EXPECT_EQ(o.sceneFile, "scene.pbrt");
     ASSERT_EQ(o.outputs.size(), 3u);
     EXPECT_EQ(o.spp, 16);
@@ -29,17 +29,16 @@ TEST(CommandLineTest, ParsesOptions) {
 }
 
 TEST(CommandLineTest, RejectsBadArguments) {
-    for (std::vector<std::string> args :
-         {std::vector<std::string>{"s.pbrt", "--spp", "0"},
-          {"s.pbrt", "--spp", "ten"},
-          {"s.pbrt", "--crop", "0.5", "0.2", "0", "1"},
-          {"s.pbrt", "--emission", "glow"},
-          {"s.pbrt", "--bogus"},
-          {"a.pbrt", "b.pbrt"},
-          {"s.pbrt", "-o"},
-          {"s.pbrt", "--frames", "5-2"},
-          {"s.pbrt", "--frames", "0-9", "-o", "still.exr"},
-          {"s.pbrt", "--fps", "0"}}) {
+    for (std::vector<std::string> args : {std::vector<std::string>{"s.pbrt", "--spp", "0"},
+                                          {"s.pbrt", "--spp", "ten"},
+                                          {"s.pbrt", "--crop", "0.5", "0.2", "0", "1"},
+                                          {"s.pbrt", "--emission", "glow"},
+                                          {"s.pbrt", "--bogus"},
+                                          {"a.pbrt", "b.pbrt"},
+                                          {"s.pbrt", "-o"},
+                                          {"s.pbrt", "--frames", "5-2"},
+                                          {"s.pbrt", "--frames", "0-9", "-o", "still.exr"},
+                                          {"s.pbrt", "--fps", "0"}}) {
         EXPECT_THROW(ParseCommandLine(args), std::invalid_argument) << args.back();
     }
 }

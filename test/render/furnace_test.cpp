@@ -22,8 +22,8 @@ std::string FurnaceScene(Float albedo, const std::string& sampler) {
       << "Camera \"orthographic\" \"float screenwindow\" [-1 1 -1 1]\n"
       << "WorldBegin\n"
       << "LightSource \"infinite\" \"rgb L\" [1 1 1]\n"
-      << "Material \"diffuse\" \"rgb reflectance\" [" << albedo << " " << albedo << " "
-      << albedo << "]\n"
+      << "Material \"diffuse\" \"rgb reflectance\" [" << albedo << " " << albedo << " " << albedo
+      << "]\n"
       << "Shape \"sphere\" \"float radius\" 4\n";
     return s.str();
 }

@@ -129,9 +129,10 @@ TEST(SceneBuilderTest, MalformedStructureIsAnErrorWithItsLocation) {
 
 TEST(SceneBuilderTest, MediaAreReportedAsUnsupported) {
     Diagnostics diag(nullptr);
-    Describe("MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\nWorldBegin\n"
-             "MediumInterface \"fog\" \"\"\n",
-             &diag);
+    Describe(
+        "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\nWorldBegin\n"
+        "MediumInterface \"fog\" \"\"\n",
+        &diag);
     EXPECT_EQ(diag.WarningCount(), 2);
 }
 

@@ -11,6 +11,7 @@
 #include "spectral/named_spectra.h"
 #include "spectral/planck.h"
 
+#if KILN_THERMAL_EMISSION
 namespace kiln {
 namespace {
 
@@ -45,15 +46,19 @@ std::string Cavity(double T, const std::string& model, int spp) {
       << "Material \"diffuse\" \"rgb reflectance\" [0.7 0.6 0.5]\n"
       << "Shape \"sphere\" \"float radius\" 6\n"
       << "Material \"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\"\n"
-      << "AttributeBegin\n Translate -0.7 0 0\n Shape \"sphere\" \"float radius\" 0.6\nAttributeEnd\n"
+      << "AttributeBegin\n Translate -0.7 0 0\n Shape \"sphere\" \"float radius\" "
+         "0.6\nAttributeEnd\n"
       << "Material \"conductor\" \"spectrum eta\" \"metal-Cu-eta\" \"spectrum k\" \"metal-Cu-k\""
          " \"float roughness\" 0.2\n"
-      << "AttributeBegin\n Translate 0.7 0 0\n Shape \"sphere\" \"float radius\" 0.6\nAttributeEnd\n"
+      << "AttributeBegin\n Translate 0.7 0 0\n Shape \"sphere\" \"float radius\" "
+         "0.6\nAttributeEnd\n"
       << "Material \"coateddiffuse\" \"rgb reflectance\" [0.3 0.3 0.3] \"float roughness\" 0.05\n"
-      << "AttributeBegin\n Translate 0 0.9 0.5\n Shape \"sphere\" \"float radius\" 0.4\nAttributeEnd\n"
+      << "AttributeBegin\n Translate 0 0.9 0.5\n Shape \"sphere\" \"float radius\" "
+         "0.4\nAttributeEnd\n"
       << "Material \"conductor\" \"spectrum eta\" \"metal-Pt-eta\" \"spectrum k\" \"metal-Pt-k\""
          " \"float roughness\" 0.4\n"
-      << "AttributeBegin\n Translate 0 -1 1\n Rotate -60 1 0 0\n Shape \"disk\" \"float radius\" 1.5\n"
+      << "AttributeBegin\n Translate 0 -1 1\n Rotate -60 1 0 0\n Shape \"disk\" \"float radius\" "
+         "1.5\n"
          "AttributeEnd\n";
     return s.str();
 }
@@ -171,8 +176,8 @@ TEST(ThermalTest, GoldGlowsYellowerThanSilverAndPlatinumAsItsAbsorbancePredicts)
             platinumPred = PredictedGlowXYZ("Pt", 1300).xy();
     // Rendered chromaticities follow the normal-incidence prediction (the pixels see the
     // sphere within a few degrees of normal incidence).
-    for (auto [got, want] : {std::pair{gold, goldPred}, {silver, silverPred},
-                             {platinum, platinumPred}}) {
+    for (auto [got, want] :
+         {std::pair{gold, goldPred}, {silver, silverPred}, {platinum, platinumPred}}) {
         EXPECT_NEAR(got.x, want.x, 4e-3);
         EXPECT_NEAR(got.y, want.y, 4e-3);
     }
@@ -181,23 +186,23 @@ TEST(ThermalTest, GoldGlowsYellowerThanSilverAndPlatinumAsItsAbsorbancePredicts)
         Vector2f got(gold.x - other.x, gold.y - other.y);
         Vector2f want(goldPred.x - otherPred.x, goldPred.y - otherPred.y);
         EXPECT_GT(std::sqrt(want.x * want.x + want.y * want.y), 0.01);
-        Float cosAngle = (got.x * want.x + got.y * want.y) /
-                         std::sqrt((got.x * got.x + got.y * got.y) *
-                                   (want.x * want.x + want.y * want.y));
+        Float cosAngle =
+            (got.x * want.x + got.y * want.y) /
+            std::sqrt((got.x * got.x + got.y * got.y) * (want.x * want.x + want.y * want.y));
         EXPECT_GT(cosAngle, 0.95);
     }
 }
 
 TEST(ThermalTest, SilverGlowsFarWeakerThanBlackQuartz) {
     Float silver = GlowXYZ(Metal("Ag")).Y;
-    Float quartz = GlowXYZ("\"coateddiffuse\" \"rgb reflectance\" [0 0 0] \"spectrum eta\" "
-                           "\"glass-SiO2\" \"float roughness\" 0")
+    Float quartz = GlowXYZ(
+                       "\"coateddiffuse\" \"rgb reflectance\" [0 0 0] \"spectrum eta\" "
+                       "\"glass-SiO2\" \"float roughness\" 0")
                        .Y;
     EXPECT_GT(quartz, 10 * silver);
     // Black quartz is nearly a blackbody at normal incidence: 1 - R of fused silica ~ 0.96.
     EXPECT_NEAR(quartz / BlackbodyLuminance(1300), 0.965, 0.01);
 }
-
 
 // Hot emitters resting on a floor (a sphere and a triangle-mesh box touching it): the floor
 // right up to the contact lines must be free of fireflies, the near-zero-distance problem of
@@ -256,3 +261,4 @@ AttributeEnd
 
 }  // namespace
 }  // namespace kiln
+#endif  // KILN_THERMAL_EMISSION

@@ -221,10 +221,11 @@ SurfaceInteraction Triangle::InteractionFromBarycentrics(const std::array<Float,
 }
 
 // Triangle sampling
-std::optional<ShapeSample> Triangle::Sample(Point2f u) const {
-    auto vi = mesh->VertexIndices(triIndex);
+// The surface point at barycentrics b: position, geometric normal (facing the interpolated
+// shading normal when the mesh has normals, else flipped by orientation) and uv.
+Interaction Triangle::PointAt(const std::array<Float, 3>& b, Float time) const {
     auto v = Vertices();
-    std::array<Float, 3> b = SampleUniformTriangle(u);
+    auto vi = mesh->VertexIndices(triIndex);
     Point3f p(b[0] * Vector3f(v[0]) + b[1] * Vector3f(v[1]) + b[2] * Vector3f(v[2]));
     Normal3f n(SafeNormalize(Cross(v[1] - v[0], v[2] - v[0])));
     if (!mesh->n.empty()) {
@@ -239,7 +240,11 @@ std::optional<ShapeSample> Triangle::Sample(Point2f u) const {
             : Point2f(
                   b[0] * mesh->uv[vi[0]].x + b[1] * mesh->uv[vi[1]].x + b[2] * mesh->uv[vi[2]].x,
                   b[0] * mesh->uv[vi[0]].y + b[1] * mesh->uv[vi[1]].y + b[2] * mesh->uv[vi[2]].y);
-    return ShapeSample{Interaction(p, n, uvs), 1 / Area()};
+    return Interaction(p, n, uvs, {}, time);
+}
+
+std::optional<ShapeSample> Triangle::Sample(Point2f u) const {
+    return ShapeSample{PointAt(SampleUniformTriangle(u), 0), 1 / Area()};
 }
 
 Float Triangle::SolidAngle(Point3f p) const { return SphericalTriangleArea(Vertices(), p); }
@@ -273,22 +278,7 @@ std::optional<ShapeSample> Triangle::Sample(const ShapeSampleContext& ctx, Point
     std::array<Float, 3> b = SampleSphericalTriangle(v, ctx.p, u, &triPDF);
     if (triPDF == 0) return std::nullopt;
     pdf *= triPDF;
-    auto vi = mesh->VertexIndices(triIndex);
-    Point3f p(b[0] * Vector3f(v[0]) + b[1] * Vector3f(v[1]) + b[2] * Vector3f(v[2]));
-    Normal3f n(SafeNormalize(Cross(v[1] - v[0], v[2] - v[0])));
-    if (!mesh->n.empty()) {
-        Normal3f ns = b[0] * mesh->n[vi[0]] + b[1] * mesh->n[vi[1]] + b[2] * mesh->n[vi[2]];
-        n = FaceForward(n, Vector3f(ns));
-    } else if (mesh->reverseOrientation ^ mesh->transformSwapsHandedness) {
-        n = -n;
-    }
-    Point2f uvs =
-        mesh->uv.empty()
-            ? Point2f(b[1] + b[2], b[2])
-            : Point2f(
-                  b[0] * mesh->uv[vi[0]].x + b[1] * mesh->uv[vi[1]].x + b[2] * mesh->uv[vi[2]].x,
-                  b[0] * mesh->uv[vi[0]].y + b[1] * mesh->uv[vi[1]].y + b[2] * mesh->uv[vi[2]].y);
-    return ShapeSample{Interaction(p, n, uvs, {}, ctx.time), pdf};
+    return ShapeSample{PointAt(b, ctx.time), pdf};
 }
 
 Float Triangle::PDF(const ShapeSampleContext& ctx, Vector3f wi) const {

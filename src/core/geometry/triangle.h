@@ -80,6 +80,8 @@ class Triangle {
     // Solid angle (sr) subtended at p.
     Float SolidAngle(Point3f p) const;
 
+    // The point at barycentrics b (position, oriented geometric normal, uv) as a sample is.
+    Interaction PointAt(const std::array<Float, 3>& b, Float time) const;
     // Barycentrics (b0, b1, b2) of a point on (or near) the triangle's plane.
     std::array<Float, 3> Barycentrics(Point3f p) const;
     // Full differential geometry at barycentrics b (pbrt-v4 InteractionFromIntersection).

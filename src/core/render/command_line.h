@@ -14,13 +14,13 @@ struct CommandLineOptions {
     std::vector<std::string> outputs;  // -o, may repeat: one render, several files
     std::optional<int> spp, threads, seed;
     std::optional<Bounds2f> crop;
-    std::optional<std::string> emission;  // kirchhoff | additive | diffuse | none
+    std::optional<std::string> emission;        // kirchhoff | additive | diffuse | none
     std::optional<std::pair<int, int>> frames;  // first and last frame, inclusive
     double fps = 24;
     bool quiet = false;
     bool verbose = false;
     std::string view;  // display view override for PNG/JPEG/... outputs ("" = the film's)
-    std::optional<std::string> exposure;  // EV stops added to the film's, or "auto"
+    std::optional<std::string> exposure;      // EV stops added to the film's, or "auto"
     std::optional<std::string> lightSampler;  // power | uniform | area
     std::optional<std::string> strategy;      // mis | light | bsdf
     std::optional<int> wavelengths;           // 1 | 4

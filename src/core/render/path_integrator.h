@@ -17,7 +17,7 @@ namespace kiln {
 
 template <typename Radiance>
 class PathIntegrator {
-public:
+  public:
     using Spectrum = typename Radiance::Spectrum;
     using Throughput = typename Radiance::Throughput;
 
@@ -64,8 +64,8 @@ public:
                     if (depth == 0 || specularBounce) {
                         L += Radiance::Apply(beta, Radiance::Emitted(Le));
                     } else {
-                        Float lightPdf = scene.lightSampler->PMF(area) *
-                                         area->PDF_Li(prevContext, ray.d, true);
+                        Float lightPdf =
+                            scene.lightSampler->PMF(area) * area->PDF_Li(prevContext, ray.d, true);
                         Float w = EmissionWeight(prevBsdfPdf, lightPdf);
                         L += Radiance::Apply(beta, Radiance::Emitted(w * Le));
                     }
@@ -79,7 +79,8 @@ public:
                 ray = isect.SpawnRay(ray.d);
                 continue;
             }
-            if (depth == 0 && visibleSurface) *visibleSurface = scene.MakeVisibleSurface(isect, bsdf, lambda);
+            if (depth == 0 && visibleSurface)
+                *visibleSurface = scene.MakeVisibleSurface(isect, bsdf, lambda);
             if (settings.regularize && anyNonSpecularBounces) bsdf.Regularize();
 
             if (depth++ == settings.maxDepth) break;
@@ -114,14 +115,17 @@ public:
         return L;
     }
 
-private:
+  private:
     // Weight of emission found by BSDF sampling: MIS against light sampling (pbrt-v4), all of
     // it when lights are never sampled, none of it when only light sampling finds emitters.
     Float EmissionWeight(Float bsdfPdf, Float lightPdf) const {
         switch (settings.strategy) {
-            case LightStrategy::MIS: return PowerHeuristic(1, bsdfPdf, 1, lightPdf);
-            case LightStrategy::BSDFOnly: return 1;
-            case LightStrategy::LightOnly: return lightPdf > 0 ? 0 : 1;
+            case LightStrategy::MIS:
+                return PowerHeuristic(1, bsdfPdf, 1, lightPdf);
+            case LightStrategy::BSDFOnly:
+                return 1;
+            case LightStrategy::LightOnly:
+                return lightPdf > 0 ? 0 : 1;
         }
         return 1;
     }
@@ -148,14 +152,13 @@ private:
         Vector3f wo = intr.wo, wi = ls->wi;
         SampledSpectrum f = bsdf.f(wo, wi) * AbsDot(wi, intr.shading.n);
         if (!f) return {};
-        if (scene.aggregate->IntersectP(intr.SpawnRayTo(ls->pLight), 1 - ShadowEpsilon))
-            return {};
+        if (scene.aggregate->IntersectP(intr.SpawnRayTo(ls->pLight), 1 - ShadowEpsilon)) return {};
 
         Float lightPdf = sampled->p * ls->pdf;
         if (IsDeltaLight(light->Type())) return ls->L * f / lightPdf;
         Float bsdfPdf = bsdf.PDF(wo, wi);
         Float w = settings.strategy == LightStrategy::MIS ? PowerHeuristic(1, lightPdf, 1, bsdfPdf)
-                                                           : Float(1);
+                                                          : Float(1);
         return w * ls->L * f / lightPdf;
     }
 

@@ -14,7 +14,7 @@
 namespace kiln {
 
 class ProgressReporter {
-public:
+  public:
     // totalWork counts pixel samples; out == nullptr disables output. The reporter prints
     // from its own thread; Update() is wait-free and may be called from any thread.
     ProgressReporter(int64_t totalWork, std::string title, std::ostream* out, bool isTerminal);
@@ -31,7 +31,7 @@ public:
     // Formats a duration as e.g. "1m23s" or "4.2s".
     static std::string FormatDuration(double seconds);
 
-private:
+  private:
     void PrintLoop();
     void Print(bool final);
 

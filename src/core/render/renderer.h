@@ -15,18 +15,18 @@
 namespace kiln {
 
 struct RenderSettings {
-    int threads = 0;                           // 0: all hardware threads
+    int threads = 0;                            // 0: all hardware threads
     const std::atomic<bool>* cancel = nullptr;  // set (e.g. by Ctrl-C) to stop after the tile
-    std::ostream* progress = nullptr;          // progress output; nullptr = quiet
+    std::ostream* progress = nullptr;           // progress output; nullptr = quiet
     bool progressIsTerminal = false;
 };
 
 struct RenderStats {
-    Point2i resolution;         // of the rendered (cropped) region
-    int samplesPerPixel = 0;    // requested
-    int completedSamples = 0;   // per pixel in fully finished waves
-    double seconds = 0;         // wall time of the render loop
-    int64_t cameraPaths = 0;    // pixel samples traced
+    Point2i resolution;        // of the rendered (cropped) region
+    int samplesPerPixel = 0;   // requested
+    int completedSamples = 0;  // per pixel in fully finished waves
+    double seconds = 0;        // wall time of the render loop
+    int64_t cameraPaths = 0;   // pixel samples traced
     bool cancelled = false;
 };
 

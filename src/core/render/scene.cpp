@@ -318,6 +318,7 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
             if (heat[i].model == EmissionModel::Diffuse) material = thermalCache.Black(diag);
             const ReflectanceTable* table =
                 heat[i].model == EmissionModel::Kirchhoff ? thermalCache.Table(material) : nullptr;
+#if KILN_THERMAL_EMISSION
             for (const Shape& shape : shapes[i]) {
                 const Shape* stored = arena.New<Shape>(shape);
                 scene->lights.push_back(Light(arena.New<ThermalAreaLight>(
@@ -325,6 +326,10 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
                 areaLights.push_back(&scene->lights.back());
             }
             scene->thermalEmitterCount += int(shapes[i].size());
+#else
+            (void)table;
+            diag.Warn(s.loc, "kiln was built without thermal emission; the shape does not glow");
+#endif
         }
         scene->aggregate->Add(shapes[i], material, areaLights);
         scene->shapeCount += int(shapes[i].size());
@@ -366,7 +371,9 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
             for (const Light& light : scene->lights) {
                 Float a = 1;
                 if (auto d = light.GetIf<DiffuseAreaLight>()) a = d->Area();
+#if KILN_THERMAL_EMISSION
                 if (auto t = light.GetIf<ThermalAreaLight>()) a = t->Area();
+#endif
                 area.push_back(a);
             }
             scene->lightSampler = std::make_unique<PowerLightSampler>(scene->lights, area);

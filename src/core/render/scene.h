@@ -18,10 +18,10 @@
 #include "core/geometry/accelerator.h"
 #include "core/parser/diagnostics.h"
 #include "core/render/scene_description.h"
-#include "materials/emissivity.h"
 #include "lights/light.h"
 #include "lights/light_sampler.h"
 #include "materials/bxdfs/bsdf.h"
+#include "materials/emissivity.h"
 #include "materials/material.h"
 #include "textures/texture.h"
 #include "textures/texture_parameter_dictionary.h"
@@ -32,7 +32,7 @@ namespace kiln {
 struct SceneOverrides {
     std::optional<int> samplesPerPixel;
     std::optional<int> seed;
-    std::optional<Bounds2f> cropWindow;  // NDC [x0, x1] x [y0, y1], as Film "cropwindow"
+    std::optional<Bounds2f> cropWindow;     // NDC [x0, x1] x [y0, y1], as Film "cropwindow"
     std::optional<EmissionModel> emission;  // thermal emission model for every hot surface
     // Animation: the frame being rendered and its time in seconds. Textures that change over
     // time ("cooling" and "keyframes": "float time"; "heatmap" sequences: "float frame") get
@@ -60,13 +60,13 @@ struct PathIntegratorSettings {
 
 // What a scene uses, decided at load (kiln --verbose prints it).
 struct SceneFeatures {
-    bool thermalEmission = false;       // shapes glowing by temperature
-    bool varyingTemperatures = false;   // temperature textures other than constants
-    bool areaLights = false;            // AreaLightSource emitters
-    bool environmentLight = false;      // infinite lights
-    bool imageTextures = false;         // imagemap / heatmap textures
-    bool dispersion = false;            // wavelength-dependent IOR (terminates secondaries)
-    bool aovs = false;                  // film writes albedo/normal/depth layers
+    bool thermalEmission = false;      // shapes glowing by temperature
+    bool varyingTemperatures = false;  // temperature textures other than constants
+    bool areaLights = false;           // AreaLightSource emitters
+    bool environmentLight = false;     // infinite lights
+    bool imageTextures = false;        // imagemap / heatmap textures
+    bool dispersion = false;           // wavelength-dependent IOR (terminates secondaries)
+    bool aovs = false;                 // film writes albedo/normal/depth layers
     std::string ToString() const;
 };
 

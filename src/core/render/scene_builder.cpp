@@ -50,8 +50,9 @@ void SceneBuilder::LookAt(Float ex, Float ey, Float ez, Float lx, Float ly, Floa
         kiln::LookAt(Point3f(ex, ey, ez), Point3f(lx, ly, lz), Vector3f(ux, uy, uz));
     if (!lookAt) {
         // pbrt-v4 reports this and goes on without the transform.
-        diag.Warn(loc, "LookAt: eye and look-at point coincide or the up vector is parallel to "
-                       "the viewing direction; ignored");
+        diag.Warn(loc,
+                  "LookAt: eye and look-at point coincide or the up vector is parallel to "
+                  "the viewing direction; ignored");
         return;
     }
     ApplyTransform([&](const kiln::Transform& t) { return t * *lookAt; });
@@ -90,7 +91,9 @@ void SceneBuilder::CoordSysTransform(const std::string& name, const FileLoc& loc
     gs.ctm = it->second;
 }
 
-void SceneBuilder::ActiveTransformAll(const FileLoc&) { gs.activeTransformBits = AllTransformsBits; }
+void SceneBuilder::ActiveTransformAll(const FileLoc&) {
+    gs.activeTransformBits = AllTransformsBits;
+}
 void SceneBuilder::ActiveTransformEndTime(const FileLoc&) {
     gs.activeTransformBits = EndTransformBits;
 }
@@ -109,8 +112,7 @@ void SceneBuilder::RequireWorld(const char* directive, const FileLoc& loc, bool 
         throw SceneError(loc, std::string(directive) + " is only allowed after WorldBegin",
                          directive);
     if (!world && inWorld)
-        throw SceneError(loc, std::string(directive) + " must come before WorldBegin",
-                         directive);
+        throw SceneError(loc, std::string(directive) + " must come before WorldBegin", directive);
 }
 
 ParameterDictionary SceneBuilder::Dict(ParsedParameterVector params,
@@ -162,8 +164,7 @@ void SceneBuilder::PixelFilter(const std::string& name, ParsedParameterVector pa
     scene.filter = SceneEntity(name, Dict(std::move(params)), loc);
 }
 
-void SceneBuilder::Film(const std::string& type, ParsedParameterVector params,
-                        const FileLoc& loc) {
+void SceneBuilder::Film(const std::string& type, ParsedParameterVector params, const FileLoc& loc) {
     RequireWorld("Film", loc, false);
     scene.film = SceneEntity(type, Dict(std::move(params)), loc);
     scene.filmColorSpace = gs.colorSpace;
@@ -234,9 +235,9 @@ void SceneBuilder::AttributeEnd(const FileLoc& loc) {
     if (pushStack.empty())
         throw SceneError(loc, "AttributeEnd without a matching AttributeBegin", "AttributeEnd");
     if (pushStack.back().kind == 'o')
-        throw SceneError(loc,
-                         "AttributeEnd closes the ObjectBegin at " + pushStack.back().loc.ToString(),
-                         "AttributeEnd");
+        throw SceneError(
+            loc, "AttributeEnd closes the ObjectBegin at " + pushStack.back().loc.ToString(),
+            "AttributeEnd");
     gs = std::move(pushedStates.back());
     pushedStates.pop_back();
     pushStack.pop_back();
@@ -285,8 +286,9 @@ void SceneBuilder::Shape(const std::string& name, ParsedParameterVector params,
     shape.materialName = gs.currentMaterialName;
     if (!gs.areaLightName.empty()) {
         if (activeInstance) {
-            diag.Warn(loc, "area lights are not supported with object instancing (as in pbrt-v4); "
-                           "the shape is not emissive");
+            diag.Warn(loc,
+                      "area lights are not supported with object instancing (as in pbrt-v4); "
+                      "the shape is not emissive");
         } else {
             shape.areaLightIndex = int(scene.areaLights.size());
             scene.areaLights.emplace_back(gs.areaLightName,
@@ -364,8 +366,9 @@ void SceneBuilder::AreaLightSource(const std::string& name, ParsedParameterVecto
 void SceneBuilder::ObjectBegin(const std::string& name, const FileLoc& loc) {
     RequireWorld("ObjectBegin", loc, true);
     if (activeInstance)
-        throw SceneError(loc, "ObjectBegin inside the definition of object '" +
-                                  activeInstance->name + "'", name);
+        throw SceneError(
+            loc, "ObjectBegin inside the definition of object '" + activeInstance->name + "'",
+            name);
     pushedStates.push_back(gs);
     pushStack.push_back({'o', loc});
     auto [it, inserted] = scene.instanceDefinitions.try_emplace(name);
@@ -387,8 +390,7 @@ void SceneBuilder::ObjectEnd(const FileLoc& loc) {
 
 void SceneBuilder::ObjectInstance(const std::string& name, const FileLoc& loc) {
     RequireWorld("ObjectInstance", loc, true);
-    if (activeInstance)
-        throw SceneError(loc, "ObjectInstance inside an object definition", name);
+    if (activeInstance) throw SceneError(loc, "ObjectInstance inside an object definition", name);
     if (CtmIsAnimated() && !warnedAnimated) {
         diag.Warn(loc, "animated transforms are not supported; using the start transform");
         warnedAnimated = true;
@@ -399,18 +401,19 @@ void SceneBuilder::ObjectInstance(const std::string& name, const FileLoc& loc) {
 void SceneBuilder::EndOfFiles() {
     if (!pushStack.empty()) {
         const PushRecord& open = pushStack.back();
-        throw SceneError(open.loc,
-                         std::string("missing end to ") +
-                             (open.kind == 'a' ? "AttributeBegin" : "ObjectBegin"),
-                         open.kind == 'a' ? "AttributeBegin" : "ObjectBegin");
+        throw SceneError(
+            open.loc,
+            std::string("missing end to ") + (open.kind == 'a' ? "AttributeBegin" : "ObjectBegin"),
+            open.kind == 'a' ? "AttributeBegin" : "ObjectBegin");
     }
     for (const InstanceSceneEntity& inst : scene.instances)
         if (!scene.instanceDefinitions.count(inst.name))
             throw SceneError(inst.loc, "unknown object '" + inst.name + "'", inst.name);
     for (const ShapeSceneEntity& shape : scene.shapes)
         if (!shape.materialName.empty() && !namedMaterialNames.count(shape.materialName))
-            throw SceneError(shape.loc, "named material '" + shape.materialName +
-                                            "' is not defined", shape.materialName);
+            throw SceneError(shape.loc,
+                             "named material '" + shape.materialName + "' is not defined",
+                             shape.materialName);
 }
 
 }  // namespace kiln

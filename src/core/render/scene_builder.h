@@ -48,8 +48,7 @@ class SceneBuilder : public ParserTarget {
                      const FileLoc& loc) override;
     void Integrator(const std::string& name, ParsedParameterVector params,
                     const FileLoc& loc) override;
-    void Camera(const std::string& name, ParsedParameterVector params,
-                const FileLoc& loc) override;
+    void Camera(const std::string& name, ParsedParameterVector params, const FileLoc& loc) override;
     void Sampler(const std::string& name, ParsedParameterVector params,
                  const FileLoc& loc) override;
     void MakeNamedMedium(const std::string& name, ParsedParameterVector params,

@@ -1,0 +1,35 @@
+// Light sampling shared by the area lights (diffuse and thermal): a point on the shape chosen
+// by the shape's own solid-angle strategy, and the matching density (pbrt-v4's
+// DiffuseAreaLight::SampleLi and PDF_Li).
+#pragma once
+
+#include <cmath>
+#include <optional>
+
+#include "core/geometry/shape.h"
+#include "lights/light_sample.h"
+
+namespace kiln {
+
+// L(p, n, uv, w) gives the radiance leaving the sampled point towards the receiver.
+template <typename RadianceAt>
+std::optional<LightLiSample> SampleAreaLi(const Shape& shape, const LightSampleContext& ctx,
+                                          Point2f u, RadianceAt L) {
+    ShapeSampleContext shapeCtx(ctx.p, ctx.n, ctx.ns, 0);
+    std::optional<ShapeSample> ss = shape.Sample(shapeCtx, u);
+    if (!ss || !(ss->pdf > 0) || !std::isfinite(ss->pdf) || LengthSquared(ss->intr.p - ctx.p) == 0)
+        return {};
+    Vector3f wi = Normalize(ss->intr.p - ctx.p);
+    SampledSpectrum Le = L(ss->intr.p, ss->intr.n, ss->intr.uv, -wi);
+    if (!Le) return {};
+    return LightLiSample{Le, wi, ss->pdf, ss->intr};
+}
+
+// Solid-angle density of SampleAreaLi choosing direction wi (0 where it is not finite).
+inline Float AreaPDF_Li(const Shape& shape, const LightSampleContext& ctx, Vector3f wi) {
+    ShapeSampleContext shapeCtx(ctx.p, ctx.n, ctx.ns, 0);
+    Float pdf = shape.PDF(shapeCtx, wi);
+    return std::isfinite(pdf) ? pdf : 0;
+}
+
+}  // namespace kiln
