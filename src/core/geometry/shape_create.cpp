@@ -178,11 +178,13 @@ std::vector<Shape> Shape::Create(const std::string& name, const Transform* rende
         Float zMin = params.GetOneFloat("zmin", -radius);
         Float zMax = params.GetOneFloat("zmax", radius);
         Float phiMax = params.GetOneFloat("phimax", 360);
-        if (radius <= 0)
-            throw SceneError(LocOf(params, "radius", loc),
-                             "sphere radius must be "
-                             "positive",
+        if (radius < 0)
+            throw SceneError(LocOf(params, "radius", loc), "sphere radius must not be negative",
                              "radius");
+        if (radius == 0) {  // pbrt-v4 accepts it and renders nothing
+            diag.Warn(loc, "sphere of radius 0 has no surface; skipped");
+            return {};
+        }
         return {Shape(arena.New<Sphere>(renderFromObject, objectFromRender, reverseOrientation,
                                         radius, zMin, zMax, phiMax))};
     }
@@ -191,8 +193,12 @@ std::vector<Shape> Shape::Create(const std::string& name, const Transform* rende
         Float radius = params.GetOneFloat("radius", 1);
         Float innerRadius = params.GetOneFloat("innerradius", 0);
         Float phiMax = params.GetOneFloat("phimax", 360);
-        if (radius <= 0 || innerRadius < 0 || innerRadius >= radius)
-            throw SceneError(loc, "disk needs 0 <= innerradius < radius", "disk");
+        if (radius < 0 || innerRadius < 0)
+            throw SceneError(loc, "disk radii must not be negative", "disk");
+        if (innerRadius >= radius) {  // pbrt-v4 accepts it and renders nothing
+            diag.Warn(loc, "disk with innerradius >= radius has no surface; skipped");
+            return {};
+        }
         return {Shape(arena.New<Disk>(renderFromObject, objectFromRender, reverseOrientation,
                                       height, radius, innerRadius, phiMax))};
     }
@@ -201,8 +207,12 @@ std::vector<Shape> Shape::Create(const std::string& name, const Transform* rende
         Float zMin = params.GetOneFloat("zmin", -1);
         Float zMax = params.GetOneFloat("zmax", 1);
         Float phiMax = params.GetOneFloat("phimax", 360);
-        if (radius <= 0 || zMin == zMax)
-            throw SceneError(loc, "cylinder needs radius > 0 and zmin != zmax", "cylinder");
+        if (radius < 0)
+            throw SceneError(loc, "cylinder radius must not be negative", "cylinder");
+        if (radius == 0 || zMin == zMax) {  // pbrt-v4 accepts it and renders nothing
+            diag.Warn(loc, "cylinder of radius 0 or zmin == zmax has no surface; skipped");
+            return {};
+        }
         return {Shape(arena.New<Cylinder>(renderFromObject, objectFromRender, reverseOrientation,
                                           radius, zMin, zMax, phiMax))};
     }
