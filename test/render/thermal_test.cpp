@@ -259,6 +259,30 @@ AttributeEnd
     EXPECT_EQ(ra.scene->film->NonFiniteSampleCount(), 0);
 }
 
+// T = 0 K emits exactly nothing (and nothing goes non-finite), whatever the model; a tiny
+// temperature far below the Draper point is exact but vanishingly dim.
+TEST(ThermalTest, ZeroAndTinyTemperaturesAreExact) {
+    for (const char* model : {"kirchhoff", "additive", "diffuse"}) {
+        for (double T : {0.0, 1e-3, 300.0}) {
+            std::ostringstream text;
+            text << "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\n"
+                 << "Sampler \"independent\" \"integer pixelsamples\" 4\n"
+                 << "LookAt 0 0 -4  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 30\n"
+                 << "WorldBegin\nMaterial \"conductor\" \"string emission\" \"" << model
+                 << "\"\nShape \"sphere\" \"float temperature\" " << T << "\n";
+            testing::RenderedScene r = testing::RenderText(text.str());
+            EXPECT_EQ(r.scene->film->NonFiniteSampleCount(), 0);
+            double maxY = 0;
+            for (int y = 0; y < 8; ++y)
+                for (int x = 0; x < 8; ++x)
+                    maxY = std::max(maxY, double(testing::PixelY(*r.scene, {x, y})));
+            // Planck luminance at 300 K is ~1e-33 W m^-2 sr^-1 nm^-1: representable, not visible.
+            if (T == 0 || T == 1e-3) EXPECT_EQ(maxY, 0) << model << " " << T;
+            EXPECT_LT(maxY, 1e-20) << model << " " << T;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace kiln
 #endif  // KILN_THERMAL_EMISSION
