@@ -6,4 +6,4 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/bootstrap.sh" --target kiln
 mkdir -p "$root/out"
 "${KILN_BUILD_DIR:-$root/build}/kiln" "$root/scenes/demo.pbrt" \
-    -o "$root/out/demo.exr" -o "$root/out/demo.png" "$@"
+    --spp 32 -o "$root/out/demo.exr" -o "$root/out/demo.png" "$@"
