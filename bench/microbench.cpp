@@ -281,31 +281,10 @@ std::vector<Ray> IncoherentRays(const Scene& scene) {
     return rays;
 }
 
-// Must match the layout of KilnContext in src/core/geometry/accelerator.cpp: the user-geometry
-// callbacks (spheres etc.) write their hit into the member after the Embree context, so a raw
-// rtcIntersect1 on kiln's RTCScene has to provide that storage too.
-struct RawContext {
-    RTCIntersectContext context;
-    std::optional<ShapeIntersection> userHit;
-};
-
-// Raw Embree closest hit; returns whether something was hit.
+// Raw Embree closest hit on kiln's RTCScene; returns whether something was hit.
 bool RawIntersect(RTCScene scene, const Ray& ray) {
-    RawContext ctx;
-    rtcInitIntersectContext(&ctx.context);
-    RTCRayHit rh;
-    rh.ray.org_x = ray.o.x, rh.ray.org_y = ray.o.y, rh.ray.org_z = ray.o.z;
-    rh.ray.dir_x = ray.d.x, rh.ray.dir_y = ray.d.y, rh.ray.dir_z = ray.d.z;
-    rh.ray.tnear = 0;
-    rh.ray.tfar = Infinity;
-    rh.ray.time = ray.time;
-    rh.ray.mask = ~0u;
-    rh.ray.id = 0;
-    rh.ray.flags = 0;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
-    for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l)
-        rh.hit.instID[l] = RTC_INVALID_GEOMETRY_ID;
+    EmbreeQueryContext ctx;
+    RTCRayHit rh = MakeEmbreeRayHit(ray, Infinity);
     rtcIntersect1(scene, &ctx.context, &rh);
     return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
 }

@@ -5,9 +5,9 @@
 
 #include <algorithm>
 
+#include <cmath>
 #include "spectral/cie.h"
 #include "spectral/planck.h"
-#include <cmath>
 
 namespace kiln {
 namespace {

@@ -91,10 +91,11 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
     o.view = params.GetOneString("view", "Standard");
     if (o.view != "Standard" && o.view != "Filmic" && o.view != "ACES" && o.view != "Glow" &&
         o.view != "Raw")
-        throw SceneError(params.Loc("view"),
-                         "unknown view \"" + o.view +
-                             "\" (expected \"Standard\", \"Filmic\", \"ACES\", \"Glow\" or \"Raw\")",
-                         o.view);
+        throw SceneError(
+            params.Loc("view"),
+            "unknown view \"" + o.view +
+                "\" (expected \"Standard\", \"Filmic\", \"ACES\", \"Glow\" or \"Raw\")",
+            o.view);
     o.writeAOVs = params.GetOneBool("writeaovs", type == "gbuffer");
     PixelSensor sensor = PixelSensor::Create(params, colorSpace, exposureTime, loc, diag);
     return arena.New<RGBFilm>(o, sensor, filter, colorSpace);

@@ -29,10 +29,7 @@ struct SceneBVH {
 };
 
 // Intersection context carrying the closest user-geometry hit back from the callbacks.
-struct KilnContext {
-    RTCIntersectContext context;
-    std::optional<ShapeIntersection> userHit;
-};
+using KilnContext = EmbreeQueryContext;
 
 void UserBounds(const RTCBoundsFunctionArguments* args) {
     auto* rec = static_cast<const GeomRecord*>(args->geometryUserPtr);
@@ -231,9 +228,7 @@ void Accelerator::Commit() {
 }
 
 // Ray queries
-std::optional<ShapeIntersection> Accelerator::Intersect(const Ray& ray, Float tMax) const {
-    KilnContext ctx;
-    rtcInitIntersectContext(&ctx.context);
+RTCRayHit MakeEmbreeRayHit(const Ray& ray, Float tMax) {
     RTCRayHit rh;
     rh.ray.org_x = ray.o.x, rh.ray.org_y = ray.o.y, rh.ray.org_z = ray.o.z;
     rh.ray.dir_x = ray.d.x, rh.ray.dir_y = ray.d.y, rh.ray.dir_z = ray.d.z;
@@ -247,6 +242,12 @@ std::optional<ShapeIntersection> Accelerator::Intersect(const Ray& ray, Float tM
     rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
     for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l)
         rh.hit.instID[l] = RTC_INVALID_GEOMETRY_ID;
+    return rh;
+}
+
+std::optional<ShapeIntersection> Accelerator::Intersect(const Ray& ray, Float tMax) const {
+    KilnContext ctx;
+    RTCRayHit rh = MakeEmbreeRayHit(ray, tMax);
     rtcIntersect1(impl->top.scene, &ctx.context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
 

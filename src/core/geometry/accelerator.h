@@ -20,6 +20,18 @@ namespace kiln {
 class Material;
 class Light;
 
+// The context of a closest-hit query on Accelerator::EmbreeScene(): kiln's user-geometry
+// callbacks (quadrics, bilinear patches) store their full hit after the Embree context, so raw
+// Embree queries on that scene (e.g. throughput benchmarks) must pass one of these.
+struct EmbreeQueryContext {
+    RTCIntersectContext context;
+    std::optional<ShapeIntersection> userHit;
+    EmbreeQueryContext() { rtcInitIntersectContext(&context); }
+};
+
+// An Embree ray-hit record for ray over [0, tMax], with no hit yet.
+RTCRayHit MakeEmbreeRayHit(const Ray& ray, Float tMax);
+
 class Accelerator {
   public:
     Accelerator();

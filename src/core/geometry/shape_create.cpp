@@ -207,8 +207,7 @@ std::vector<Shape> Shape::Create(const std::string& name, const Transform* rende
         Float zMin = params.GetOneFloat("zmin", -1);
         Float zMax = params.GetOneFloat("zmax", 1);
         Float phiMax = params.GetOneFloat("phimax", 360);
-        if (radius < 0)
-            throw SceneError(loc, "cylinder radius must not be negative", "cylinder");
+        if (radius < 0) throw SceneError(loc, "cylinder radius must not be negative", "cylinder");
         if (radius == 0 || zMin == zMax) {  // pbrt-v4 accepts it and renders nothing
             diag.Warn(loc, "cylinder of radius 0 or zmin == zmax has no surface; skipped");
             return {};

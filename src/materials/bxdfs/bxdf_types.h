@@ -26,7 +26,9 @@ enum BxDFFlags : unsigned {
     SpecularTransmission = Specular | Transmission,
     All = Diffuse | Glossy | Specular | Reflection | Transmission
 };
-inline BxDFFlags operator|(BxDFFlags a, BxDFFlags b) { return BxDFFlags(unsigned(a) | unsigned(b)); }
+inline BxDFFlags operator|(BxDFFlags a, BxDFFlags b) {
+    return BxDFFlags(unsigned(a) | unsigned(b));
+}
 inline bool IsReflective(BxDFFlags f) { return f & BxDFFlags::Reflection; }
 inline bool IsTransmissive(BxDFFlags f) { return f & BxDFFlags::Transmission; }
 inline bool IsDiffuse(BxDFFlags f) { return f & BxDFFlags::Diffuse; }
