@@ -23,6 +23,12 @@
 // |m - ref| <= 1e-3 (|ref| + mean|ref|) (half-float rounding of the reference); a few may
 // differ (a rare path never sampled by the K renders), at most
 // `maxZeroVarianceMismatchFraction` of the values.
+//
+// Second check, on overall brightness (powerful against global regressions such as a wrong
+// scale or a lost light): each render's total T_k = sum of its values; their mean against the
+// reference's total, with the standard error from the spread of the T_k (and the reference's
+// own noise, smaller by its spp ratio): z = (mean T - T_ref) / sqrt(var(T) / K (1 + K n /
+// nRef)). Accepted: |z| <= `sigmas`.
 #pragma once
 
 #include <algorithm>
@@ -42,10 +48,12 @@ struct NoiseComparison {
     int64_t values = 0;    // (pixel, channel) values with s^2 > 0
     int64_t zeroVarianceValues = 0, zeroVarianceMismatches = 0;
     double maxZeroVarianceMismatchFraction = 0.005;
+    double totalZ = 0;       // z-score of the mean image total against the reference's
+    double totalSigmas = 4;  // allowed |totalZ|
 
     bool Pass() const {
         int64_t all = values + zeroVarianceValues;
-        return std::abs(ratio - 1) <= tolerance &&
+        return std::abs(ratio - 1) <= tolerance && std::abs(totalZ) <= totalSigmas &&
                zeroVarianceMismatches <= maxZeroVarianceMismatchFraction * double(all);
     }
 };
@@ -53,7 +61,7 @@ struct NoiseComparison {
 inline std::ostream& operator<<(std::ostream& os, const NoiseComparison& c) {
     return os << "noise ratio " << c.ratio << " (expected 1 +- " << c.tolerance << ", " << c.values
               << " values; " << c.zeroVarianceMismatches << " of " << c.zeroVarianceValues
-              << " zero-variance values differ)";
+              << " zero-variance values differ; total z " << c.totalZ << ")";
 }
 
 // renders: K >= 6 images (same resolution and channels as reference) rendered with different
@@ -78,6 +86,27 @@ inline NoiseComparison CompareWithNoise(const std::vector<Image>& renders, const
     meanAbsRef /= double(res.x) * res.y * nc;
 
     NoiseComparison out;
+    out.totalSigmas = sigmas;
+    // Overall brightness: per-render totals against the reference's total
+    {
+        std::vector<double> totals;
+        for (const Image& r : renders) {
+            double t = 0;
+            for (int y = 0; y < res.y; ++y)
+                for (int x = 0; x < res.x; ++x)
+                    for (int c = 0; c < nc; ++c) t += scale * r.GetChannel({x, y}, c);
+            totals.push_back(t);
+        }
+        double refTotal = 0;
+        for (int y = 0; y < res.y; ++y)
+            for (int x = 0; x < res.x; ++x)
+                for (int c = 0; c < nc; ++c) refTotal += reference.GetChannel({x, y}, c);
+        double mean = 0, var = 0;
+        for (double t : totals) mean += t / K;
+        for (double t : totals) var += Sqr(t - mean) / (K - 1);
+        double se = std::sqrt(var / K * (1 + refRatio));
+        out.totalZ = se > 0 ? (mean - refTotal) / se : (mean == refTotal ? 0 : 1e9);
+    }
     double sumD2 = 0, sumV = 0, sumV2 = 0;
     for (int y = 0; y < res.y; ++y)
         for (int x = 0; x < res.x; ++x)
