@@ -8,7 +8,7 @@
 //       MSE (e.g. Rousselle et al. 2011) with eps = 0.01 * mean(r)^2 so that it is independent
 //       of the image's exposure; MSE in the images' units squared.
 //   kiln_benchtool plot CSV OUT.png [TITLE]
-//       log-log chart of relmse against seconds, one line per (scene, strategy) of the CSV
+//       log-log chart of relmse against seconds, one line per scene (default strategy)
 //       (columns by header name), written through OpenImageIO.
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -102,8 +102,10 @@ bool ReadSeries(const std::string& csv, std::vector<Series>* series) {
     while (std::getline(in, line)) {
         std::vector<std::string> f = SplitCSV(line);
         if (int(f.size()) != int(header.size())) continue;
+        // One line per scene with its default strategy (other strategies are compared in
+        // strategies.md; a line each would crowd the chart).
+        if (cStrategy >= 0 && f[cStrategy] != "default") continue;
         std::string name = f[cScene];
-        if (cStrategy >= 0 && f[cStrategy] != "default") name += " / " + f[cStrategy];
         double s = std::atof(f[cSeconds].c_str()), e = std::atof(f[cRel].c_str());
         if (!(s > 0 && e > 0)) continue;
         auto [it, added] = index.try_emplace(name, series->size());

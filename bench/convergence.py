@@ -17,8 +17,9 @@ so that no Python packages beyond the standard library are needed.
 Strategies: STRATEGIES maps a name to a Strategy: extra kiln command-line flags and/or extra
 parameters for the scene's `Integrator "path"` directive (applied to a copy of the scene in
 bench/out/scenes/). light-only / BSDF-only / MIS use the path integrator's "strategy"
-parameter; add others (uniform vs power light sampling, wavelengths per path) as kiln gains
-them, and select them with e.g. --strategies default,bsdf. The reference always uses "default".
+parameter; area-lights / uniform-lights pick emitters by area or uniformly instead of by power
+(kiln --light-sampler), one-wavelength traces 1 wavelength per path instead of 4 (kiln
+--wavelengths). Select them with e.g. --strategies default,bsdf,area-lights. The reference always uses "default".
 """
 
 import argparse
@@ -49,8 +50,13 @@ SCENES = [
     BenchScene("cornell-diffuse", "bench/scenes/cornell-diffuse.pbrt"),
     # The glowing spheres of Wilkie & Weidlich 2011, Sec. 4.1, as the lead's scene defines them.
     BenchScene("glowing-spheres", "scenes/wilkie2011/blackbody-lights.pbrt", (160, 100)),
+    # Kirchhoff emission from smooth gold spheres (kiln's point), same ring.
+    BenchScene("kirchhoff-gold", "scenes/wilkie2011/gold-kirchhoff-ambient.pbrt", (160, 100)),
     BenchScene("glossy-conductors", "bench/scenes/glossy-conductors.pbrt"),
     BenchScene("hot-spot", "bench/scenes/hot-spot.pbrt"),
+    # A large thermal emitter mesh with a per-vertex heat field: cool almost everywhere, one
+    # small hot spot (power-proportional emitter selection matters here).
+    BenchScene("hot-spot-mesh", "bench/scenes/hot-spot-mesh.pbrt"),
 ]
 
 @dataclass
@@ -65,6 +71,9 @@ STRATEGIES = {
     "mis": Strategy(integrator='"string strategy" "mis"'),
     "light": Strategy(integrator='"string strategy" "light"'),
     "bsdf": Strategy(integrator='"string strategy" "bsdf"'),
+    "area-lights": Strategy(flags=["--light-sampler", "area"]),
+    "uniform-lights": Strategy(flags=["--light-sampler", "uniform"]),
+    "one-wavelength": Strategy(flags=["--wavelengths", "1"]),
 }
 
 TEST_SEED = 1
@@ -150,6 +159,36 @@ def reference(args, scene: BenchScene, path: str, text: str) -> str:
     return ref
 
 
+def write_strategy_table(rows, path: str) -> None:
+    """Error at equal time of each strategy relative to the default, per scene: relMSE x time
+    at the largest sample count both reached (relMSE falls as 1/time, so this is the ratio of
+    the times needed for equal error; < 1 means better than the default)."""
+    data = {}
+    for scene, strategy, spp, seconds, _, _, relmse, *_ in rows:
+        data.setdefault((scene, strategy), {})[int(spp)] = (float(seconds), float(relmse))
+    scenes = sorted({s for s, _ in data})
+    strategies = sorted({t for _, t in data if t != "default"})
+    lines = ["| scene | " + " | ".join(strategies) + " |",
+             "|---|" + "---|" * len(strategies)]
+    for scene in scenes:
+        base = data.get((scene, "default"), {})
+        cells = []
+        for strategy in strategies:
+            other = data.get((scene, strategy), {})
+            common = sorted(set(base) & set(other))
+            if not common:
+                cells.append("-")
+                continue
+            spp = common[-1]
+            (tb, eb), (to, eo) = base[spp], other[spp]
+            cells.append(f"{eo * to / (eb * tb):.2f}x ({spp} spp)")
+        lines.append(f"| {scene} | " + " | ".join(cells) + " |")
+    with open(path, "w") as f:
+        f.write("Error at equal time relative to the default strategy (MIS, power light "
+                "selection, 4 wavelengths); > 1 is worse.\n\n" + "\n".join(lines) + "\n")
+    log(f"wrote {os.path.relpath(path, ROOT)}")
+
+
 def main() -> int:
     build = os.environ.get("KILN_BUILD_DIR", os.path.join(ROOT, "build"))
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
@@ -213,6 +252,7 @@ def main() -> int:
                     "relmse", "mse", "efficiency", "ref_floor"])
         w.writerows(rows)
     log(f"wrote {os.path.relpath(csv_path, ROOT)}")
+    write_strategy_table(rows, os.path.join(args.results, "strategies.md"))
     png = os.path.join(args.results, "convergence.png")
     subprocess.run([args.tool, "plot", csv_path, png,
                     f"kiln convergence (reference {args.ref_spp} spp)"], check=True)
