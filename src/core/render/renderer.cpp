@@ -17,18 +17,26 @@ namespace kiln {
 
 namespace {
 
+// What the pixel loop does differently per scene, fixed for the whole render: each
+// combination is its own instantiation of the loop, so a render pays for none of the options
+// it does not use (no per-sample tests).
+struct PixelFeatures {
+    bool aovs;              // the film writes albedo/normal/depth layers (first-hit data)
+    bool singleWavelength;  // one wavelength per path (comparisons) instead of 4
+    bool fixedPixelCenter;  // Option "disablepixeljitter"
+};
+
 // One pixel sample: camera ray, radiance along it, film update.
+template <bool AOVs, bool SingleWavelength, bool FixedPixelCenter>
 void RenderPixelSample(const Scene& scene, const PathIntegrator<UnpolarizedRadiance>& integrator,
                        kiln::Sampler& sampler, Point2i pPixel, int sampleIndex) {
     sampler.StartPixelSample(pPixel, sampleIndex);
     // Wavelengths first, then the camera sample (pbrt-v4's order)
     Float lu = sampler.Get1D();
     SampledWavelengths lambda = scene.film->SampleWavelengths(lu);
-    // One wavelength per path instead of the hero wavelength and its companions (for
-    // comparisons: Integrator "integer wavelengths" 1)
-    if (scene.integrator.singleWavelength) lambda.TerminateSecondary();
+    if constexpr (SingleWavelength) lambda.TerminateSecondary();
     CameraSample cs = GetCameraSample(sampler, pPixel, *scene.filter);
-    if (scene.disablePixelJitter) {
+    if constexpr (FixedPixelCenter) {
         cs.pFilm = Point2f(pPixel.x + 0.5f, pPixel.y + 0.5f);
         cs.filterWeight = 1;
     }
@@ -37,9 +45,22 @@ void RenderPixelSample(const Scene& scene, const PathIntegrator<UnpolarizedRadia
     // The first hit's albedo etc. only when the film writes AOV layers (it costs a BSDF
     // albedo estimate per camera ray)
     VisibleSurface visible;
-    VisibleSurface* pVisible = scene.film->UsesVisibleSurface() ? &visible : nullptr;
+    VisibleSurface* pVisible = AOVs ? &visible : nullptr;
     if (cameraRay) L = cameraRay->weight * integrator.Li(cameraRay->ray, lambda, sampler, pVisible);
     scene.film->AddSample(pPixel, L, lambda, pVisible, cs.filterWeight);
+}
+
+using PixelSampleFunction = void (*)(const Scene&, const PathIntegrator<UnpolarizedRadiance>&,
+                                     kiln::Sampler&, Point2i, int);
+
+// The instantiation for the scene's features, chosen once per render.
+PixelSampleFunction PixelSampleFor(PixelFeatures f) {
+    static constexpr PixelSampleFunction table[8] = {
+        RenderPixelSample<false, false, false>, RenderPixelSample<false, false, true>,
+        RenderPixelSample<false, true, false>,  RenderPixelSample<false, true, true>,
+        RenderPixelSample<true, false, false>,  RenderPixelSample<true, false, true>,
+        RenderPixelSample<true, true, false>,   RenderPixelSample<true, true, true>};
+    return table[(f.aovs ? 4 : 0) + (f.singleWavelength ? 2 : 0) + (f.fixedPixelCenter ? 1 : 0)];
 }
 
 }  // namespace
@@ -59,6 +80,9 @@ RenderStats Render(Scene& scene, const RenderSettings& settings) {
             tbb::global_control::max_allowed_parallelism, size_t(settings.threads));
 
     PathIntegrator<UnpolarizedRadiance> integrator(scene, scene.integrator, spp);
+    const PixelSampleFunction renderPixelSample =
+        PixelSampleFor({scene.film->UsesVisibleSurface(), scene.integrator.singleWavelength,
+                        scene.disablePixelJitter});
     tbb::enumerable_thread_specific<kiln::Sampler> samplers([&] { return scene.sampler->Clone(); });
 
     std::ostringstream title;
@@ -80,7 +104,7 @@ RenderStats Render(Scene& scene, const RenderSettings& settings) {
                 for (int y = tile.rows().begin(); y != tile.rows().end(); ++y)
                     for (int x = tile.cols().begin(); x != tile.cols().end(); ++x)
                         for (int s = waveStart; s < waveEnd; ++s)
-                            RenderPixelSample(scene, integrator, sampler, Point2i(x, y), s);
+                            renderPixelSample(scene, integrator, sampler, Point2i(x, y), s);
                 progress.Update(int64_t(tile.rows().size()) * tile.cols().size() *
                                 (waveEnd - waveStart));
             });
