@@ -16,8 +16,7 @@ so that no Python packages beyond the standard library are needed.
 
 Strategies: STRATEGIES maps a name to a Strategy: extra kiln command-line flags and/or extra
 parameters for the scene's `Integrator "path"` directive (applied to a copy of the scene in
-bench/out/scenes/). light-only / BSDF-only / MIS use the path integrator's "strategy"
-parameter; area-lights / uniform-lights pick emitters by area or uniformly instead of by power
+bench/out/scenes/). light-only / BSDF-only / MIS use kiln --strategy; area-lights / uniform-lights pick emitters by area or uniformly instead of by power
 (kiln --light-sampler), one-wavelength traces 1 wavelength per path instead of 4 (kiln
 --wavelengths). Select them with e.g. --strategies default,bsdf,area-lights. The reference always uses "default".
 """
@@ -57,6 +56,8 @@ SCENES = [
     # A large thermal emitter mesh with a per-vertex heat field: cool almost everywhere, one
     # small hot spot (power-proportional emitter selection matters here).
     BenchScene("hot-spot-mesh", "bench/scenes/hot-spot-mesh.pbrt"),
+    # A large emitter whose temperature comes from an image heat map.
+    BenchScene("heat-mapped-emitter", "bench/scenes/heat-mapped-emitter.pbrt"),
 ]
 
 @dataclass
@@ -68,9 +69,9 @@ class Strategy:
 # Strategy name -> how to render with it (see the module docstring).
 STRATEGIES = {
     "default": Strategy(),  # the scene as written (MIS unless the scene says otherwise)
-    "mis": Strategy(integrator='"string strategy" "mis"'),
-    "light": Strategy(integrator='"string strategy" "light"'),
-    "bsdf": Strategy(integrator='"string strategy" "bsdf"'),
+    "mis": Strategy(flags=["--strategy", "mis"]),
+    "light": Strategy(flags=["--strategy", "light"]),
+    "bsdf": Strategy(flags=["--strategy", "bsdf"]),
     "area-lights": Strategy(flags=["--light-sampler", "area"]),
     "uniform-lights": Strategy(flags=["--light-sampler", "uniform"]),
     "one-wavelength": Strategy(flags=["--wavelengths", "1"]),
