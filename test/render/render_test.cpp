@@ -143,3 +143,27 @@ TEST(RenderTest, AutoExposureBringsTheBrightPercentileToTheTarget) {
 
 }  // namespace
 }  // namespace kiln
+
+namespace kiln {
+namespace {
+
+// Ctrl-C sets the render's cancel flag; the loop must stop, report it, and leave a film that
+// can still be written (kiln then writes the image rendered so far).
+TEST(RenderTest, CancelStopsTheRenderAndKeepsAWritableFilm) {
+    Diagnostics diag(nullptr);
+    std::unique_ptr<Scene> scene = testing::BuildScene(kSmallScene, diag);
+    std::atomic<bool> cancel{true};
+    RenderSettings settings;
+    settings.cancel = &cancel;
+    RenderStats stats = Render(*scene, settings);
+    EXPECT_TRUE(stats.cancelled);
+    EXPECT_EQ(stats.completedSamples, 0);
+    EXPECT_EQ(stats.cameraPaths, 0);
+    fs::path out = fs::path(KILN_BINARY_DIR) / "test-output" / "cancelled.exr";
+    fs::create_directories(out.parent_path());
+    scene->film->WriteImage(out.string(), ImageMetadata());
+    EXPECT_TRUE(fs::exists(out));
+}
+
+}  // namespace
+}  // namespace kiln
