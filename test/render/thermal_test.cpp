@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "core/base/rng.h"
 #include "core/base/statistics.h"
 #include "render_test_util.h"
 #include "spectral/cie.h"
@@ -283,6 +284,57 @@ TEST(ThermalTest, ZeroAndTinyTemperaturesAreExact) {
             EXPECT_LT(maxY, 1e-20) << model << " " << T;
         }
     }
+}
+
+// A cool mesh with one hot vertex: the scene's light sampler picks its triangles (each a
+// thermal emitter) with the probabilities it reports (chi-square), those probabilities grow
+// steeply with temperature, and the hottest triangles get most of the samples.
+TEST(ThermalTest, PowerSamplerDrawsHotTrianglesWithTheReportedProbability) {
+    // 4 x 4 grid of quads (32 triangles) at 500 K except one vertex at 1500 K.
+    std::ostringstream P, T, idx;
+    for (int j = 0; j <= 4; ++j)
+        for (int i = 0; i <= 4; ++i) {
+            P << i << " 2 " << j << " ";
+            T << ((i == 3 && j == 1) ? 1500 : 500) << " ";
+        }
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+            int a = j * 5 + i;
+            idx << a << " " << a + 1 << " " << a + 6 << " " << a << " " << a + 6 << " " << a + 5
+                << " ";
+        }
+    std::string text =
+        "Film \"rgb\" \"integer xresolution\" 4 \"integer yresolution\" 4\n"
+        "WorldBegin\nShape \"trianglemesh\" \"integer indices\" [" +
+        idx.str() + "] \"point3 P\" [" + P.str() + "] \"float temperature\" [" + T.str() + "]\n";
+    Diagnostics diag(nullptr);
+    std::unique_ptr<Scene> scene = testing::BuildScene(text, diag);
+    ASSERT_EQ(scene->lights.size(), 32u);
+    ASSERT_EQ(scene->thermalEmitterCount, 32);
+    std::vector<double> observed(32, 0), expected(32, 0);
+    const int n = 200000;
+    RNG rng(7);
+    for (int k = 0; k < n; ++k) {
+        std::optional<SampledLight> sl = scene->lightSampler->Sample(rng.UniformFloat());
+        ASSERT_TRUE(sl);
+        size_t i = size_t(sl->light - scene->lights.data());
+        ASSERT_LT(i, 32u);
+        EXPECT_FLOAT_EQ(sl->p, scene->lightSampler->PMF(sl->light));
+        observed[i] += 1;
+    }
+    double pmfSum = 0, hotPmf = 0, coolPmf = 1;
+    for (size_t i = 0; i < 32; ++i) {
+        double pmf = scene->lightSampler->PMF(&scene->lights[i]);
+        expected[i] = pmf * n;
+        pmfSum += pmf;
+        hotPmf = std::max(hotPmf, pmf);
+        coolPmf = std::min(coolPmf, pmf);
+    }
+    EXPECT_NEAR(pmfSum, 1, 1e-5);
+    ChiSquareResult chi = ChiSquareTest(observed, expected);
+    EXPECT_TRUE(chi.passed) << chi.message;
+    // Triangles touching the 1500 K vertex emit orders of magnitude more than the 500 K ones.
+    EXPECT_GT(hotPmf / coolPmf, 100);
 }
 
 }  // namespace
