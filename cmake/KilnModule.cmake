@@ -1,8 +1,8 @@
 # kiln_add_module(NAME DIR DEPS...): one static library per source folder; every .cpp in DIR
-# (not recursing) that is not a *_test.cpp belongs to it.
+# (not recursing) that is neither a *_test.cpp nor an executable's main.cpp belongs to it.
 function(kiln_add_module name dir)
     file(GLOB srcs CONFIGURE_DEPENDS "${dir}/*.cpp")
-    list(FILTER srcs EXCLUDE REGEX "_test\\.cpp$")
+    list(FILTER srcs EXCLUDE REGEX "(_test|/main)\\.cpp$")
     if(srcs)
         add_library(${name} STATIC ${srcs})
         target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR}/src)

@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "core/image/image.h"
-#include "core/render/auto_exposure.h"
+#include "render/auto_exposure.h"
 #include "render_test_util.h"
 
 namespace kiln {

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "core/parser/parser.h"
-#include "core/render/renderer.h"
-#include "core/render/scene_builder.h"
+#include "render/renderer.h"
+#include "render/scene_builder.h"
 #include "spectral/color.h"
 
 namespace kiln::testing {

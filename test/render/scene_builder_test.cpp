@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "core/parser/parser.h"
-#include "core/render/scene_builder.h"
+#include "render/scene_builder.h"
 
 namespace kiln {
 namespace {

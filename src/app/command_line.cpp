@@ -1,4 +1,4 @@
-#include "core/render/command_line.h"
+#include "app/command_line.h"
 
 #include <unistd.h>
 
@@ -8,11 +8,12 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "app/image_diff.h"
+#include "app/progress.h"
 #include "core/parser/parser.h"
-#include "core/render/auto_exposure.h"
-#include "core/render/image_diff.h"
-#include "core/render/renderer.h"
-#include "core/render/scene_builder.h"
+#include "render/auto_exposure.h"
+#include "render/renderer.h"
+#include "render/scene_builder.h"
 
 #ifndef KILN_VERSION
 #define KILN_VERSION "0.0.0"
@@ -236,8 +237,8 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     RenderSettings settings;
     settings.threads = options.threads.value_or(0);
     settings.cancel = &interruptRequested;
-    settings.progress = options.quiet ? nullptr : &std::cerr;
-    settings.progressIsTerminal = isatty(STDERR_FILENO);
+    ProgressReporter progress(options.quiet ? nullptr : &std::cerr, isatty(STDERR_FILENO));
+    settings.observer = &progress;
     auto previousHandler = std::signal(SIGINT, HandleInterrupt);
     RenderStats stats = Render(*scene, settings);
     std::signal(SIGINT, previousHandler == SIG_ERR ? SIG_DFL : previousHandler);

@@ -1,4 +1,4 @@
-#include "core/render/auto_exposure.h"
+#include "render/auto_exposure.h"
 
 #include <algorithm>
 #include <cmath>

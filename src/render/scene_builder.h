@@ -11,7 +11,7 @@
 
 #include "core/parser/diagnostics.h"
 #include "core/parser/parser_target.h"
-#include "core/render/scene_description.h"
+#include "render/scene_description.h"
 
 namespace kiln {
 

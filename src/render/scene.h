@@ -17,12 +17,12 @@
 #include "core/film/visible_surface.h"
 #include "core/geometry/accelerator.h"
 #include "core/parser/diagnostics.h"
-#include "core/render/scene_description.h"
 #include "lights/light.h"
 #include "lights/light_sampler.h"
 #include "materials/bxdfs/bsdf.h"
 #include "materials/emissivity.h"
 #include "materials/material.h"
+#include "render/scene_description.h"
 #include "textures/texture.h"
 #include "textures/texture_parameter_dictionary.h"
 

@@ -1,4 +1,4 @@
-#include "core/render/image_diff.h"
+#include "app/image_diff.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>

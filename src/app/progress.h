@@ -11,22 +11,26 @@
 #include <string>
 #include <thread>
 
+#include "render/renderer.h"
+
 namespace kiln {
 
-class ProgressReporter {
+// The kiln command's view of a render (a RenderObserver): out == nullptr disables output.
+// The reporter prints from its own thread, started by Started(); Advanced() is wait-free and
+// may be called from any thread.
+class ProgressReporter : public RenderObserver {
   public:
-    // totalWork counts pixel samples; out == nullptr disables output. The reporter prints
-    // from its own thread; Update() is wait-free and may be called from any thread.
-    ProgressReporter(int64_t totalWork, std::string title, std::ostream* out, bool isTerminal);
-    ~ProgressReporter();
+    ProgressReporter(std::ostream* out, bool isTerminal);
+    ~ProgressReporter() override;
     ProgressReporter(const ProgressReporter&) = delete;
     ProgressReporter& operator=(const ProgressReporter&) = delete;
 
-    void Update(int64_t work) { done.fetch_add(work, std::memory_order_relaxed); }
+    // totalWork counts pixel samples.
+    void Started(int64_t totalWork, const std::string& title) override;
+    void Advanced(int64_t work) override { done.fetch_add(work, std::memory_order_relaxed); }
     // Stops the printing thread and prints the final line.
-    void Done();
+    void Finished() override;
     double ElapsedSeconds() const;
-    int64_t WorkDone() const { return done.load(std::memory_order_relaxed); }
 
     // Formats a duration as e.g. "1m23s" or "4.2s".
     static std::string FormatDuration(double seconds);
@@ -35,12 +39,12 @@ class ProgressReporter {
     void PrintLoop();
     void Print(bool final);
 
-    const int64_t total;
-    const std::string title;
+    int64_t total = 1;
+    std::string title;
     std::ostream* out;
     const bool terminal;
     std::atomic<int64_t> done{0};
-    const std::chrono::steady_clock::time_point start;
+    std::chrono::steady_clock::time_point start;
     std::chrono::steady_clock::time_point lastPlainLine;
     std::mutex mutex;
     std::condition_variable cv;

@@ -8,17 +8,27 @@
 
 #include <atomic>
 #include <cstdint>
-#include <ostream>
+#include <string>
 
-#include "core/render/scene.h"
+#include "render/scene.h"
 
 namespace kiln {
+
+// Follows a render's progress (the kiln command's progress bar is one). Advanced() is called
+// from the worker threads, concurrently.
+class RenderObserver {
+  public:
+    virtual ~RenderObserver() = default;
+    // totalWork: pixel samples to trace.
+    virtual void Started(int64_t totalWork, const std::string& title) = 0;
+    virtual void Advanced(int64_t work) = 0;
+    virtual void Finished() = 0;
+};
 
 struct RenderSettings {
     int threads = 0;                            // 0: all hardware threads
     const std::atomic<bool>* cancel = nullptr;  // set (e.g. by Ctrl-C) to stop after the tile
-    std::ostream* progress = nullptr;           // progress output; nullptr = quiet
-    bool progressIsTerminal = false;
+    RenderObserver* observer = nullptr;         // progress reports; nullptr = none
 };
 
 struct RenderStats {

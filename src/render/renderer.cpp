@@ -1,4 +1,4 @@
-#include "core/render/renderer.h"
+#include "render/renderer.h"
 
 #include <tbb/blocked_range2d.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -6,12 +6,12 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <memory>
 #include <sstream>
 
 #include "core/camera/camera_sample.h"
-#include "core/render/path_integrator.h"
-#include "core/render/progress.h"
+#include "render/path_integrator.h"
 
 namespace kiln {
 
@@ -87,8 +87,10 @@ RenderStats Render(Scene& scene, const RenderSettings& settings) {
 
     std::ostringstream title;
     title << "Rendering " << res.x << "x" << res.y << " @ " << spp << " spp";
-    ProgressReporter progress(int64_t(res.x) * res.y * spp, title.str(), settings.progress,
-                              settings.progressIsTerminal);
+    RenderObserver* observer = settings.observer;
+    if (observer) observer->Started(int64_t(res.x) * res.y * spp, title.str());
+    std::atomic<int64_t> pathsTraced{0};
+    const auto start = std::chrono::steady_clock::now();
 
     // Waves of 1, 2, 4, ... samples per pixel (at most 64), as pbrt-v4
     constexpr int tileSize = 16;
@@ -105,8 +107,10 @@ RenderStats Render(Scene& scene, const RenderSettings& settings) {
                     for (int x = tile.cols().begin(); x != tile.cols().end(); ++x)
                         for (int s = waveStart; s < waveEnd; ++s)
                             renderPixelSample(scene, integrator, sampler, Point2i(x, y), s);
-                progress.Update(int64_t(tile.rows().size()) * tile.cols().size() *
-                                (waveEnd - waveStart));
+                int64_t paths =
+                    int64_t(tile.rows().size()) * tile.cols().size() * (waveEnd - waveStart);
+                pathsTraced.fetch_add(paths, std::memory_order_relaxed);
+                if (observer) observer->Advanced(paths);
             });
         if (settings.cancel && settings.cancel->load()) {
             stats.cancelled = true;
@@ -116,9 +120,9 @@ RenderStats Render(Scene& scene, const RenderSettings& settings) {
         waveStart = waveEnd;
         waveSize = std::min(2 * waveSize, 64);
     }
-    progress.Done();
-    stats.seconds = progress.ElapsedSeconds();
-    stats.cameraPaths = progress.WorkDone();
+    if (observer) observer->Finished();
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats.cameraPaths = pathsTraced.load();
     return stats;
 }
 

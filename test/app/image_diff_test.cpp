@@ -1,5 +1,5 @@
 // `kiln diff`: metrics worked by hand, size/channel mismatches, exit codes, difference image.
-#include "core/render/image_diff.h"
+#include "app/image_diff.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-#include "core/render/scene.h"
+#include "render/scene.h"
 
 #include <array>
 #include <set>
 
 #include "core/geometry/triangle.h"
-#include "core/render/thermal_emitters.h"
+#include "render/thermal_emitters.h"
 #include "spectral/color.h"
 #include "textures/temperature_textures.h"
 

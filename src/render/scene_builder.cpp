@@ -1,4 +1,4 @@
-#include "core/render/scene_builder.h"
+#include "render/scene_builder.h"
 
 #include "spectral/color.h"
 

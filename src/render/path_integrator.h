@@ -10,8 +10,8 @@
 #include <optional>
 
 #include "core/camera/sampler.h"
-#include "core/render/radiance.h"
-#include "core/render/scene.h"
+#include "render/radiance.h"
+#include "render/scene.h"
 
 namespace kiln {
 

@@ -1,4 +1,4 @@
-#include "core/render/thermal_emitters.h"
+#include "render/thermal_emitters.h"
 
 #include "materials/bxdfs/bxdf.h"
 #include "textures/basic_textures.h"

@@ -1,4 +1,4 @@
-#include "core/render/progress.h"
+#include "app/progress.h"
 
 #include <cmath>
 #include <cstdio>
@@ -6,18 +6,18 @@
 
 namespace kiln {
 
-ProgressReporter::ProgressReporter(int64_t totalWork, std::string title, std::ostream* out,
-                                   bool isTerminal)
-    : total(std::max<int64_t>(1, totalWork)),
-      title(std::move(title)),
-      out(out),
-      terminal(isTerminal),
-      start(std::chrono::steady_clock::now()),
-      lastPlainLine(start) {
-    if (out) thread = std::thread([this] { PrintLoop(); });
+ProgressReporter::ProgressReporter(std::ostream* out, bool isTerminal)
+    : out(out), terminal(isTerminal) {}
+
+void ProgressReporter::Started(int64_t totalWork, const std::string& renderTitle) {
+    total = std::max<int64_t>(1, totalWork);
+    title = renderTitle;
+    done = 0;
+    start = lastPlainLine = std::chrono::steady_clock::now();
+    if (out && !thread.joinable()) thread = std::thread([this] { PrintLoop(); });
 }
 
-ProgressReporter::~ProgressReporter() { Done(); }
+ProgressReporter::~ProgressReporter() { Finished(); }
 
 double ProgressReporter::ElapsedSeconds() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -78,7 +78,7 @@ void ProgressReporter::Print(bool final) {
     *out << line.str() << std::flush;
 }
 
-void ProgressReporter::Done() {
+void ProgressReporter::Finished() {
     {
         std::lock_guard<std::mutex> lock(mutex);
         if (finished) return;
@@ -86,8 +86,9 @@ void ProgressReporter::Done() {
         exitThread = true;
     }
     cv.notify_all();
-    if (thread.joinable()) thread.join();
-    if (out && terminal) Print(true);
+    if (!thread.joinable()) return;
+    thread.join();
+    if (terminal) Print(true);
 }
 
 }  // namespace kiln

@@ -1,7 +1,7 @@
 // The kiln command's option parsing and frame file names.
 #include <gtest/gtest.h>
 
-#include "core/render/command_line.h"
+#include "app/command_line.h"
 
 namespace kiln {
 namespace {
