@@ -1,0 +1,41 @@
+// Directional albedo of the rough conductor BxDF as a linear functional of its Fresnel
+// reflectance, for Kirchhoff emission (emissivity = 1 - albedo; materials/emissivity.h).
+//
+// pbrt-v4's rough conductor reflects into direction wi = reflect(wo, wm) about a microfacet
+// normal wm with weight F(wo . wm) G2(wo, wi) / G1(wo) when wm is drawn from the normals
+// visible from wo (Sample_f), so its directional albedo is
+//   A(wo) = integral D_wo(wm) F(wo . wm) G2(wo, wi) / G1(wo) [wi.z > 0] dwm.
+// The Fresnel term depends on the material and wavelength, the rest only on alpha and theta_o;
+// interpolating F cubically between fixed nodes mu_j of wo . wm makes A a weighted sum
+//   A(wo) = sum_j W_j(alpha, cos theta_o) F(mu_j).
+// The weights W_j come from deterministic quadrature (microfacet_quadrature.h); their sum is the
+// albedo of a perfect (F = 1) mirror metal, which misses the multiply scattered energy.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+namespace kiln {
+
+class ConductorAlbedoMoments {
+  public:
+    static constexpr int kNodes = 32;
+    // The nodes mu_j of wo . wm, increasing from 0 to 1 (denser towards 0, where the Fresnel
+    // reflectance of conductors rises to 1).
+    static double Node(int j);
+    // Cubic interpolation of F at mu through four nodes: F(mu) ~ sum_a w[a] F(Node(first + a));
+    // returns first.
+    static int InterpolationWeights(double mu, double w[4]);
+    using Weights = std::array<double, kNodes>;
+    // W_j for isotropic roughness alpha (> 0) seen from cos(theta_o) in (0, 1].
+    static Weights Compute(double alpha, double cosThetaO);
+    // Sum over the nodes of W_j F(mu_j), F given as a function of mu.
+    template <typename F>
+    static double Apply(const Weights& w, F&& fresnel) {
+        double a = 0;
+        for (int j = 0; j < kNodes; ++j) a += w[std::size_t(j)] * fresnel(Node(j));
+        return a;
+    }
+};
+
+}  // namespace kiln
