@@ -8,6 +8,7 @@
 #include "core/base/transform.h"
 #include "core/image/image.h"
 #include "lights/light_sample.h"
+#include "materials/bxdfs/bsdf.h"
 #include "spectral/spectrum.h"
 
 namespace kiln {
@@ -32,6 +33,11 @@ class DiffuseAreaLight {
     // Radiance leaving point p (surface normal n, surface coordinates uv) in direction w.
     SampledSpectrum L(Point3f p, Normal3f n, Point2f uv, Vector3f w,
                       const SampledWavelengths& lambda) const;
+    // The same at a surface interaction (Light::L; the BSDF plays no part).
+    SampledSpectrum L(const SurfaceInteraction& si, const BSDF&, Vector3f w,
+                      const SampledWavelengths& lambda) const {
+        return L(si.p, si.n, si.uv, w, lambda);
+    }
     // Samples a point on the shape by solid angle from ctx (the shape's sampling strategy).
     std::optional<LightLiSample> SampleLi(const LightSampleContext& ctx, Point2f u,
                                           const SampledWavelengths& lambda,

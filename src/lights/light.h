@@ -27,6 +27,7 @@
 #include "lights/spot_light.h"
 #include "lights/thermal_area_light.h"
 #include "lights/uniform_infinite_light.h"
+#include "materials/bxdfs/bsdf.h"
 
 // ThermalAreaLight is in the closed set unless thermal emission is compiled out (CMake option
 // KILN_THERMAL_EMISSION, only for overhead measurements).
@@ -74,12 +75,30 @@ class Light {
                  bool allowIncompletePDF = false) const {
         return std::visit([&](auto l) { return l->PDF_Li(ctx, wi, allowIncompletePDF); }, kind);
     }
-    // Area lights: radiance leaving surface point p (normal n, surface uv) in direction w.
-    // 0 for the other kinds.
-    SampledSpectrum L(Point3f p, Normal3f n, Point2f uv, Vector3f w,
-                      const SampledWavelengths& lambda) const;
+    // Area lights: radiance leaving si, a point of the light's shape, towards w; bsdf is the
+    // BSDF at si (thermal emission derives from it). 0 for the other kinds.
+    SampledSpectrum L(const SurfaceInteraction& si, const BSDF& bsdf, Vector3f w,
+                      const SampledWavelengths& lambda) const {
+        return std::visit(
+            [&](auto l) -> SampledSpectrum {
+                if constexpr (requires { l->L(si, bsdf, w, lambda); })
+                    return l->L(si, bsdf, w, lambda);
+                else
+                    return SampledSpectrum(0.f);
+            },
+            kind);
+    }
     // Infinite lights: radiance arriving along a ray that leaves the scene. 0 for the others.
-    SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const;
+    SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const {
+        return std::visit(
+            [&](auto l) -> SampledSpectrum {
+                if constexpr (requires { l->Le(ray, lambda); })
+                    return l->Le(ray, lambda);
+                else
+                    return SampledSpectrum(0.f);
+            },
+            kind);
+    }
     // Tells distant and infinite lights the scene's extent (call before Phi and SampleLi).
     void Preprocess(const Bounds3f& sceneBounds) const {
         std::visit([&](auto l) { l->Preprocess(sceneBounds); }, kind);
@@ -105,7 +124,7 @@ class Light {
                                        const Transform& renderFromLight, const FileLoc& loc,
                                        ObjectArena& arena, Diagnostics& diag);
     // AreaLightSource "diffuse" (L, scale, power, twosided, filename) on `shape`; other names
-    // throw SceneError.
+    // throw SceneError. (Thermal lights are made by scene creation: render/scene_lights.h.)
     static Light CreateArea(const std::string& name, const ParameterDictionary& params,
                             const Transform& renderFromLight, const Shape& shape,
                             const FileLoc& loc, ObjectArena& arena, Diagnostics& diag);

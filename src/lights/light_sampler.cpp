@@ -5,49 +5,33 @@
 
 namespace kiln {
 
-namespace {
-
-// Index of light in lights, or -1 if it is not one of its elements.
-int IndexOf(std::span<const Light> lights, const Light* light) {
-    if (lights.empty() || light < lights.data() || light >= lights.data() + lights.size())
-        return -1;
-    return int(light - lights.data());
-}
-
-}  // namespace
-
 // UniformLightSampler
 std::optional<SampledLight> UniformLightSampler::Sample(Float u) const {
-    if (lights.empty()) return {};
-    int n = int(lights.size());
-    int i = std::min(int(u * n), n - 1);
-    return SampledLight{&lights[i], Float(1) / n};
+    if (count == 0) return {};
+    int i = std::min(int(u * count), count - 1);
+    return SampledLight{i, Float(1) / count};
 }
 
-Float UniformLightSampler::PMF(const Light* light) const {
-    return IndexOf(lights, light) < 0 ? 0 : Float(1) / lights.size();
+Float UniformLightSampler::PMF(int index) const {
+    return index < 0 || index >= count ? 0 : Float(1) / count;
 }
 
 // PowerLightSampler
-PowerLightSampler::PowerLightSampler(std::span<const Light> lights) : lights(lights) {
-    if (lights.empty()) return;
-    // Power averaged over the visible range: Monte Carlo with the visible-wavelength density
+Float PowerLightSampler::Power(const Light& light) {
     SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.5f);
-    std::vector<Float> power;
-    power.reserve(lights.size());
-    for (const Light& light : lights) {
-        Float p = SafeDiv(light.Phi(lambda), lambda.PDF()).Average();
-        power.push_back(std::isfinite(p) && p > 0 ? p : 0);
-    }
-    if (std::accumulate(power.begin(), power.end(), 0.0) == 0)
-        std::fill(power.begin(), power.end(), Float(1));
-    aliasTable = AliasTable(power);
+    Float p = SafeDiv(light.Phi(lambda), lambda.PDF()).Average();
+    return std::isfinite(p) && p > 0 ? p : 0;
 }
 
-PowerLightSampler::PowerLightSampler(std::span<const Light> lights, std::vector<Float> weights)
-    : lights(lights) {
-    if (lights.empty()) return;
-    weights.resize(lights.size(), 0);
+PowerLightSampler::PowerLightSampler(std::span<const Light> lights) {
+    std::vector<Float> power;
+    power.reserve(lights.size());
+    for (const Light& light : lights) power.push_back(Power(light));
+    *this = PowerLightSampler(std::move(power));
+}
+
+PowerLightSampler::PowerLightSampler(std::vector<Float> weights) {
+    if (weights.empty()) return;
     for (Float& w : weights) w = std::isfinite(w) && w > 0 ? w : 0;
     if (std::accumulate(weights.begin(), weights.end(), 0.0) == 0)
         std::fill(weights.begin(), weights.end(), Float(1));
@@ -55,15 +39,14 @@ PowerLightSampler::PowerLightSampler(std::span<const Light> lights, std::vector<
 }
 
 std::optional<SampledLight> PowerLightSampler::Sample(Float u) const {
-    if (lights.empty()) return {};
+    if (aliasTable.Size() == 0) return {};
     Float pmf = 0;
     int i = aliasTable.Sample(u, &pmf);
-    return SampledLight{&lights[i], pmf};
+    return SampledLight{i, pmf};
 }
 
-Float PowerLightSampler::PMF(const Light* light) const {
-    int i = IndexOf(lights, light);
-    return i < 0 ? 0 : aliasTable.PMF(i);
+Float PowerLightSampler::PMF(int index) const {
+    return index < 0 || index >= int(aliasTable.Size()) ? 0 : aliasTable.PMF(index);
 }
 
 }  // namespace kiln

@@ -11,27 +11,27 @@
 
 namespace kiln {
 
+// A light chosen by index into the list the sampler was built for.
 struct SampledLight {
-    const Light* light;
+    int index;
     Float p;  // probability of choosing this light
 };
 
 // Every light with probability 1 / n.
 class UniformLightSampler {
   public:
-    // The span's elements must stay alive at fixed addresses while the sampler is used.
-    explicit UniformLightSampler(std::span<const Light> lights) : lights(lights) {}
+    explicit UniformLightSampler(size_t lightCount) : count(int(lightCount)) {}
 
     std::optional<SampledLight> Sample(Float u) const;
     std::optional<SampledLight> Sample(const LightSampleContext&, Float u) const {
         return Sample(u);
     }
-    // 0 for a light not in the span.
-    Float PMF(const Light* light) const;
-    Float PMF(const LightSampleContext&, const Light* light) const { return PMF(light); }
+    // 0 for an index out of range.
+    Float PMF(int index) const;
+    Float PMF(const LightSampleContext&, int index) const { return PMF(index); }
 
   private:
-    std::span<const Light> lights;
+    int count;
 };
 
 // Probability proportional to emitted power averaged over the visible wavelengths (pbrt-v4:
@@ -40,22 +40,24 @@ class UniformLightSampler {
 // preprocessed before the sampler is built (their power depends on the scene's size).
 class PowerLightSampler {
   public:
-    // The span's elements must stay alive at fixed addresses while the sampler is used.
     explicit PowerLightSampler(std::span<const Light> lights);
     // Probability proportional to the given non-negative weights, one per light (e.g. area,
     // for comparisons); uniform if they are all zero.
-    PowerLightSampler(std::span<const Light> lights, std::vector<Float> weights);
+    explicit PowerLightSampler(std::vector<Float> weights);
 
     std::optional<SampledLight> Sample(Float u) const;
     std::optional<SampledLight> Sample(const LightSampleContext&, Float u) const {
         return Sample(u);
     }
-    // 0 for a light not in the span.
-    Float PMF(const Light* light) const;
-    Float PMF(const LightSampleContext&, const Light* light) const { return PMF(light); }
+    // 0 for an index out of range.
+    Float PMF(int index) const;
+    Float PMF(const LightSampleContext&, int index) const { return PMF(index); }
+
+    // A light's selection weight: its power over 360-830 nm (pbrt-v4: Phi / pdf averaged over
+    // the four wavelengths SampleVisible(0.5) gives), 0 if not finite.
+    static Float Power(const Light& light);
 
   private:
-    std::span<const Light> lights;
     AliasTable aliasTable;
 };
 

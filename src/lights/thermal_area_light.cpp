@@ -1,116 +1,160 @@
 #include "lights/thermal_area_light.h"
 
 #include <cmath>
+#include <vector>
 
 #include "core/geometry/shape.h"
-#include "core/geometry/triangle.h"
-#include "lights/area_light_sampling.h"
-#include "materials/material.h"
+#include "materials/surface_shader.h"
 #include "spectral/planck.h"
 
 namespace kiln {
 
+namespace {
+
+// Grid sizes over the parameterisation: a probe for the power estimate and the uniformity
+// test, and the sampling distribution where the exitance varies
+constexpr int kQuadricProbe = 3, kTriangleProbe = 2, kQuadricGrid = 32, kTriangleGrid = 16;
+
+// Integral of B(lambda, T) over 360-830 nm (same midpoint rule as VisibleExitance), W m^-2 sr^-1.
+Float VisibleBlackbody(Float T) {
+    double sum = 0;
+    for (Float u : {1.f / 16, 9.f / 16}) {
+        SampledSpectrum B =
+            planck_radiance(SampledWavelengths::SampleUniform(u, Lambda_min, Lambda_max), T);
+        for (int i = 0; i < NSpectrumSamples; ++i) sum += B[i];
+    }
+    return Float(sum * (Lambda_max - Lambda_min) / 8);
+}
+
+}  // namespace
+
+SurfaceInteraction ThermalAreaLight::InteractionAt(Point3f p, Float time, Vector3f wo) const {
+    SurfaceInteraction si = shape->InteractionAt(p, time, wo);
+    si.material = material;
+    return si;
+}
+
 ThermalAreaLight::ThermalAreaLight(const Shape* shape, const Material* material,
-                                   FloatTexture temperature, EmissionModel model, Float scale,
-                                   const ReflectanceTable* reflectance)
-    : shape(shape),
-      material(material),
-      temperature(temperature),
-      model(model),
-      scale(scale),
-      reflectance(reflectance) {}
-
-Float ThermalAreaLight::Temperature(Point3f p, Normal3f n, Point2f uv) const {
-    TextureEvalContext ctx;
-    ctx.p = p;
-    ctx.n = n;
-    ctx.uv = uv;
-    // Per-vertex temperatures on triangle meshes need the triangle and barycentrics
-    if (const Triangle* tri = shape->Get<Triangle>()) {
-        ctx.mesh = tri->GetMesh();
-        ctx.triIndex = tri->TriangleIndex();
-        ctx.b = tri->Barycentrics(p);
+                                   const ThermalEmission* emission, const SurfaceShader* shader,
+                                   std::optional<Uniform> uniform)
+    : shape(shape), material(material), emission(emission), shader(shader) {
+    area = shape->Area();
+    if (!(area > 0)) return;
+    if (uniform) {
+        // The caller's exitance holds everywhere: sample by solid angle
+        visiblePower = uniform->exitance * area;
+        meanTemperature = uniform->temperature;
+        return;
     }
-    Float T = temperature.Evaluate(ctx);
-    return std::isfinite(T) && T > 0 ? T : 0;
+    // The exitance M (W m^-2) at the centres of an n x n grid over the parameterisation; the
+    // power is the integral of M dA = integral over u of M / q (q the area density of u), and
+    // the cell values M / q make the sampling distribution
+    struct Grid {
+        int n;
+        std::vector<Float> cells;
+        double power = 0, weightedT = 0;
+        Float lo = Infinity, hi = 0;
+    };
+    auto evaluate = [&](int n) {
+        Grid g{n, std::vector<Float>(size_t(n) * n, 0.f)};
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                std::optional<ShapeSample> ss =
+                    shape->SampleParametric(Point2f((i + 0.5f) / n, (j + 0.5f) / n));
+                if (!ss || !(ss->pdf > 0)) continue;
+                SurfaceInteraction si = InteractionAt(ss->intr.p, 0, Vector3f(ss->intr.n));
+                Float T = emission->Temperature(si), M = 0;
+                if (T > 0) {
+                    SampledWavelengths lambda = SampledWavelengths::FromWavelength(550);
+                    BSDF bsdf = shader->GetBSDF(si, lambda);
+                    M = emission->VisibleExitance(si, bsdf);
+                }
+                Float w = M / ss->pdf;
+                g.cells[size_t(j) * n + i] = w;
+                g.power += w;
+                g.weightedT += double(w) * T;
+                g.lo = std::min(g.lo, M);
+                g.hi = std::max(g.hi, M);
+            }
+        return g;
+    };
+    const Triangle* tri = shape->Get<Triangle>();
+    Grid g = evaluate(tri ? kTriangleProbe : kQuadricProbe);
+    bool varies = !(g.hi <= 1.05f * g.lo);
+    bool mayDistribute = !tri || tri->GetMesh()->NumTriangles() <= kMaxDistributionTriangles;
+    if (varies && mayDistribute) {
+        g = evaluate(tri ? kTriangleGrid : kQuadricGrid);
+        if (g.power > 0) distribution.emplace(g.cells, g.n, g.n);
+    }
+    visiblePower = Float(g.power / (g.n * g.n));
+    meanTemperature = g.power > 0 ? Float(g.weightedT / g.power) : 0;
 }
 
-// Emissivity 1 - R(w) of the material at the point (Kirchhoff's law)
-SampledSpectrum ThermalAreaLight::Emissivity(Point3f p, Normal3f n, Point2f uv, Vector3f w,
-                                             const SampledWavelengths& lambda) const {
-    if (reflectance) {
-        Float cosTheta = AbsDot(Normalize(Vector3f(n)), w);
-        return Clamp(SampledSpectrum(1.f) - reflectance->Reflectance(cosTheta, lambda), Float(0),
-                     Float(1));
-    }
-    // Varying material: evaluate its BSDF here, one wavelength set at a time (a dispersive
-    // coating keeps only the hero wavelength, so then each wavelength is done separately).
-    SampledWavelengths l = lambda;
-    BSDF bsdf = EmissionBSDF(*material, p, n, uv, w, l);
-    SampledSpectrum R = HemisphericalReflectance(bsdf, w, 16);
-    if (l.SecondaryTerminated()) {
-        for (int i = 1; i < NSpectrumSamples; ++i) {
-            SampledWavelengths li = SampledWavelengths::FromWavelength(lambda[i]);
-            BSDF b = EmissionBSDF(*material, p, n, uv, w, li);
-            R[i] = HemisphericalReflectance(b, w, 16)[0];
-        }
-    }
-    return Clamp(SampledSpectrum(1.f) - R, Float(0), Float(1));
+SampledSpectrum ThermalAreaLight::Phi(const SampledWavelengths& lambda) const {
+    if (!(visiblePower > 0) || !(meanTemperature > 0)) return SampledSpectrum(0.f);
+    return visiblePower / VisibleBlackbody(meanTemperature) *
+           planck_radiance(lambda, meanTemperature);
 }
 
-SampledSpectrum ThermalAreaLight::L(Point3f p, Normal3f n, Point2f uv, Vector3f w,
-                                    const SampledWavelengths& lambda) const {
-    Float T = Temperature(p, n, uv);
-    if (T <= 0) return SampledSpectrum(0.f);
-    SampledSpectrum B = scale * planck_radiance(lambda, T);
-    if (model != EmissionModel::Kirchhoff) return B;
-    return B * Emissivity(p, n, uv, w, lambda);
+std::optional<Float> ThermalAreaLight::ParametricPDF(Point3f p) const {
+    Point2f u = shape->InvertParametric(p);
+    std::optional<ShapeSample> ss = shape->SampleParametric(u);
+    if (!ss) return std::nullopt;
+    return distribution->PDF(u) * ss->pdf;
 }
 
 std::optional<LightLiSample> ThermalAreaLight::SampleLi(const LightSampleContext& ctx, Point2f u,
                                                         const SampledWavelengths& lambda,
                                                         bool) const {
-    return SampleAreaLi(*shape, ctx, u, [&](Point3f p, Normal3f n, Point2f uv, Vector3f w) {
-        return L(p, n, uv, w, lambda);
-    });
+    // A point on the shape: by power over its parameterisation, or by solid angle
+    Point3f p;
+    Normal3f n;
+    Float pdf;
+    if (distribution) {
+        Float pdfU;
+        Point2f up = distribution->Sample(u, &pdfU);
+        std::optional<ShapeSample> ss = shape->SampleParametric(up);
+        if (!ss || !(pdfU > 0)) return {};
+        p = ss->intr.p;
+        n = ss->intr.n;
+        Vector3f d = p - ctx.p;
+        Float dist2 = LengthSquared(d), cosLight = AbsDot(n, Normalize(d));
+        if (dist2 == 0 || cosLight == 0) return {};
+        pdf = pdfU * ss->pdf * dist2 / cosLight;
+    } else {
+        std::optional<ShapeSample> ss =
+            shape->Sample(ShapeSampleContext(ctx.p, ctx.n, ctx.ns, 0), u);
+        if (!ss) return {};
+        p = ss->intr.p;
+        n = ss->intr.n;
+        pdf = ss->pdf;
+    }
+    if (!(pdf > 0) || !std::isfinite(pdf) || LengthSquared(p - ctx.p) == 0) return {};
+    Vector3f wi = Normalize(p - ctx.p);
+    // The emission there, from the BSDF built as at a ray hit (on a copy of the wavelengths:
+    // the receiving path keeps all of its own)
+    SurfaceInteraction si = InteractionAt(p, 0, -wi);
+    SampledWavelengths l = lambda;
+    BSDF bsdf = shader->GetBSDF(si, l);
+    SampledSpectrum Le = emission->L(si, bsdf, -wi, lambda);
+    if (!Le) return {};
+    Interaction pLight(si.p, si.n, si.uv);
+    return LightLiSample{Le, wi, pdf, pLight};
 }
 
 Float ThermalAreaLight::PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool) const {
-    return AreaPDF_Li(*shape, ctx, wi);
-}
-
-Float ThermalAreaLight::Area() const { return shape->Area(); }
-
-SampledSpectrum ThermalAreaLight::Phi(const SampledWavelengths& lambda) const {
-    Float area = shape->Area();
-    if (!(area > 0)) return SampledSpectrum(0.f);
-    // Mean over the surface of B(lambda, T) eps_h(lambda) from a fixed stratified point set;
-    // eps_h is the hemispherical emissivity (cosine-weighted mean over directions).
-    constexpr int n = 4;
-    SampledSpectrum sum(0.f);
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            std::optional<ShapeSample> ss = shape->Sample(Point2f((i + 0.5f) / n, (j + 0.5f) / n));
-            if (!ss) continue;
-            const Interaction& it = ss->intr;
-            Float T = Temperature(it.p, it.n, it.uv);
-            if (T <= 0) continue;
-            SampledSpectrum B = planck_radiance(lambda, T);
-            if (model == EmissionModel::Kirchhoff) {
-                // Two directions at the Gauss-Legendre nodes of int eps(mu) 2 mu dmu
-                Vector3f nn = Normalize(Vector3f(it.n)), t1, t2;
-                CoordinateSystem(nn, &t1, &t2);
-                SampledSpectrum eps(0.f);
-                for (Float mu : {0.355051f, 0.844949f}) {
-                    Vector3f w = mu * nn + std::sqrt(1 - mu * mu) * t1;
-                    eps += (mu < 0.5f ? 0.363917f : 0.636083f) *
-                           Emissivity(it.p, it.n, it.uv, w, lambda);
-                }
-                B *= eps;
-            }
-            sum += B;
-        }
-    return 2 * Pi * area * scale * sum / Float(n * n);
+    ShapeSampleContext shapeCtx(ctx.p, ctx.n, ctx.ns, 0);
+    if (!distribution) {
+        Float pdf = shape->PDF(shapeCtx, wi);
+        return std::isfinite(pdf) ? pdf : 0;
+    }
+    std::optional<ShapeIntersection> isect = shape->Intersect(shapeCtx.SpawnRay(wi));
+    if (!isect) return 0;
+    std::optional<Float> pdfArea = ParametricPDF(isect->intr.p);
+    Float cosLight = AbsDot(isect->intr.n, Normalize(wi));
+    if (!pdfArea || cosLight == 0) return 0;
+    Float pdf = *pdfArea * DistanceSquared(ctx.p, isect->intr.p) / cosLight;
+    return std::isfinite(pdf) ? pdf : 0;
 }
 
 }  // namespace kiln

@@ -1,63 +1,79 @@
-// ThermalAreaLight: a shape that glows because it is hot (kiln's reason to exist).
+// ThermalAreaLight: light sampling of a hot shape (for meshes, one triangle). The radiance it
+// returns is the surface's own ThermalEmission (thermal_emission.h) evaluated with the full
+// surface interaction at the sampled point (shading frame, uv, triangle) and the BSDF built
+// there exactly as at a ray hit (materials/surface_shader.h), so a point emits the same
+// radiance whether a path reaches it by light or by BSDF sampling.
 //
-// Every shape whose material or own parameters give it a temperature gets one of these,
-// bound to its material. The radiance leaving a point in direction w is, per wavelength,
-//   kirchhoff (default): B(lambda, T) (1 - R(w, lambda)),   R the material's directional-
-//                        hemispherical reflectance (materials/emissivity.h)
-//   additive:            B(lambda, T)  (the surface also reflects as usual)
-//   diffuse:             B(lambda, T)  (the surface is black: it does not reflect)
-// with B Planck's spectral radiance in W m^-2 sr^-1 nm^-1 (spectral/planck.h) times "scale"
-// (1 by default: absolute units). An opaque surface emits on both sides, like its BSDF
-// reflects on both sides. It is sampled and MIS-weighted like any area light, by solid angle
-// through the shape's own sampling strategy.
+// Where the emitted power varies over the shape (a temperature texture on a sphere, a heat map
+// on a quad), points are sampled in proportion to it: a piecewise-constant distribution over
+// the shape's parameterisation (Shape::SampleParametric), 32 x 32 cells (16 x 16 for a
+// triangle) from the exitance at their centres. Otherwise the shape's own solid-angle sampling is
+// used (spherical triangles, sphere cones). Triangles of meshes with more than
+// kMaxDistributionTriangles triangles rely on per-triangle selection by power alone.
 #pragma once
 
 #include <optional>
 
+#include "core/base/sampling.h"
 #include "lights/light_sample.h"
-#include "materials/emissivity.h"
-#include "textures/texture.h"
+#include "lights/thermal_emission.h"
 
 namespace kiln {
 
 class Shape;
 class Material;
+class SurfaceShader;
 
 class ThermalAreaLight {
   public:
-    // temperature: kelvin, evaluated at the emitting point; material: the shape's material
-    // (not owned); reflectance: its table when the material is uniform (may be null).
-    ThermalAreaLight(const Shape* shape, const Material* material, FloatTexture temperature,
-                     EmissionModel model, Float scale, const ReflectanceTable* reflectance);
+    static constexpr int kMaxDistributionTriangles = 256;
+
+    // Emission the same over the whole shape (uniform temperature and material): exitance
+    // W m^-2 (ThermalEmission::VisibleExitance) and temperature K.
+    struct Uniform {
+        Float exitance, temperature;
+    };
+    // shape, material (the shape's), emission and shader must outlive the light. Estimates
+    // the light's power and, where it varies over the shape, builds the sampling distribution;
+    // with `uniform` given, takes the caller's exitance instead.
+    ThermalAreaLight(const Shape* shape, const Material* material, const ThermalEmission* emission,
+                     const SurfaceShader* shader, std::optional<Uniform> uniform = std::nullopt);
 
     LightType Type() const { return LightType::Area; }
-    EmissionModel Model() const { return model; }
-    Float Area() const;
+    const ThermalEmission& Emission() const { return *emission; }
+    const Shape& GetShape() const { return *shape; }
+    Float Area() const { return area; }
+    bool SamplesByPower() const { return distribution.has_value(); }
 
-    SampledSpectrum L(Point3f p, Normal3f n, Point2f uv, Vector3f w,
-                      const SampledWavelengths& lambda) const;
+    // Radiance leaving si (on this light's shape) towards w; bsdf the BSDF at si.
+    SampledSpectrum L(const SurfaceInteraction& si, const BSDF& bsdf, Vector3f w,
+                      const SampledWavelengths& lambda) const {
+        return emission->L(si, bsdf, w, lambda);
+    }
     std::optional<LightLiSample> SampleLi(const LightSampleContext& ctx, Point2f u,
                                           const SampledWavelengths& lambda,
                                           bool allowIncompletePDF = false) const;
     Float PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool allowIncompletePDF = false) const;
-    // Emitted power (W nm^-1), for power-proportional light selection: area x pi x two sides x
-    // the mean over the surface of B(lambda, T) times the hemispherical emissivity.
+    // Emitted power over 360-830 nm, W (both sides), as estimated at creation.
+    Float VisiblePower() const { return visiblePower; }
+    // Spectral power, W nm^-1, for light selection: VisiblePower() distributed over wavelength
+    // like a blackbody at the light's power-weighted mean temperature (an estimate: the
+    // emissivity's spectral shape is not kept).
     SampledSpectrum Phi(const SampledWavelengths& lambda) const;
     void Preprocess(const Bounds3f&) const {}
 
-    // Temperature (K) at a surface point.
-    Float Temperature(Point3f p, Normal3f n, Point2f uv) const;
-
   private:
-    SampledSpectrum Emissivity(Point3f p, Normal3f n, Point2f uv, Vector3f w,
-                               const SampledWavelengths& lambda) const;
+    // The full interaction at a point of the shape, with the shape's material.
+    SurfaceInteraction InteractionAt(Point3f p, Float time, Vector3f wo) const;
+    std::optional<Float> ParametricPDF(Point3f p) const;
 
     const Shape* shape;
     const Material* material;
-    FloatTexture temperature;
-    EmissionModel model;
-    Float scale;
-    const ReflectanceTable* reflectance;
+    const ThermalEmission* emission;
+    const SurfaceShader* shader;
+    Float area = 0;
+    Float visiblePower = 0, meanTemperature = 0;
+    std::optional<PiecewiseConstant2D> distribution;
 };
 
 }  // namespace kiln

@@ -2,73 +2,81 @@
 // Model for Light Emission from Glowing Solid Objects").
 //
 // By Kirchhoff's law an opaque body in thermal equilibrium emits, in each direction and at each
-// wavelength, exactly what it absorbs: emissivity(w, lambda) = 1 - R(w, lambda), where R is the
-// directional-hemispherical reflectance of the body's own surface model. kiln computes R from
-// the same BSDF it renders reflection with, so a closed isothermal cavity renders B(T)
-// everywhere whatever its materials (the equilibrium test in test/lights).
+// wavelength, exactly what it absorbs: emissivity(wo, lambda) = 1 - A(wo, lambda), where A is
+// the directional albedo of the body's own BSDF: the expected scattering weight f |cos| / pdf
+// of the BSDF the integrator scatters with, at the same point, in the same shading frame. A
+// closed isothermal cavity then renders B(T) in every direction whatever its materials and
+// geometry (test/render/equilibrium_test.cpp).
 //
-// Transmissive materials (dielectric, thindielectric) are treated as non-absorbing: they emit
-// nothing (kiln has no volumetric absorption). A glowing glass-like opaque body is written as
-// coateddiffuse with a black base (the paper's black quartz).
-//
-// Rough conductors use pbrt-v4's single-scattering microfacet model. Its directional albedo
-// misses the energy of multiply scattered light (for a perfect mirror metal about 12 % at
-// alpha 0.3 and 69 % at alpha 1, normal incidence), so 1 - R over-estimates the physical
-// emissivity by at most that loss; reflection and emission stay consistent, so equilibrium
-// holds exactly. EmissivityTest.RoughConductorSingleScatteringLossIsAsDocumented guards this.
+// MaterialAlbedo computes A for the BSDF a material built at a surface point, without Monte
+// Carlo at render time:
+//   diffuse:                  A = reflectance (closed form)
+//   conductor:                Fresnel (smooth), tables of the microfacet albedo (rough;
+//                             conductor_emissivity.h)
+//   coateddiffuse,
+//   coatedconductor:          tables of the layered walk's expectation (coated_emissivity.h)
+//   dielectric,
+//   thindielectric, interface: A = 1, they emit nothing: kiln has no volumetric absorption, so
+//                             a transparent body does not glow (a rough dielectric's single-
+//                             scattering energy loss is not emitted either)
+//   mix:                      the component chosen at the point
+// Rough conductors use pbrt-v4's single-scattering microfacet model, whose albedo misses the
+// multiply scattered energy (for a perfect mirror metal 12 % at alpha 0.3, 69 % at alpha 1,
+// normal incidence); emissivity 1 - A is consistent with it, so equilibrium holds exactly, but
+// the emissivity of very rough metals is higher than a physical one.
 #pragma once
 
 #include <memory>
 #include <optional>
 #include <string_view>
+#include <utility>
+#include <variant>
 #include <vector>
 
+#include "core/base/object_arena.h"
 #include "materials/bxdfs/bsdf.h"
-#include "materials/material.h"
+#include "materials/coated_emissivity.h"
+#include "materials/conductor_emissivity.h"
+#include "materials/emission_model.h"
+#include "materials/emissivity_tables.h"
 #include "spectral/sampled_spectrum.h"
 
 namespace kiln {
 
-// How a hot surface emits (the paper's approaches A, B and C, plus none).
-enum class EmissionModel {
-    None,       // no thermal emission
-    Diffuse,    // A: a diffuse blackbody B(lambda, T); the surface does not reflect
-    Additive,   // B: B(lambda, T) added to the material's ordinary reflection
-    Kirchhoff,  // C: B(lambda, T) (1 - R(w, lambda)) plus ordinary reflection (default)
-};
-std::optional<EmissionModel> ParseEmissionModel(std::string_view name);
-std::string_view EmissionModelName(EmissionModel model);
+class Material;
 
-// Directional-hemispherical reflectance R(wo) of a BSDF at the path's wavelengths
-// (dimensionless, in [0, 1]); woRender in render space. Closed forms for diffuse and smooth
-// conductors and coatings, a deterministic stratified estimate otherwise. For transmissive
-// BSDFs returns 1 (they emit nothing).
-SampledSpectrum HemisphericalReflectance(const BSDF& bsdf, Vector3f woRender, int sqrtSamples = 24);
-
-// R(cos theta, lambda) tabulated once for a material whose parameters do not vary over the
-// surface: 46 polar angles (2 degree steps) x 95 wavelengths (5 nm, 360-830 nm), bilinear
-// interpolation.
-class ReflectanceTable {
+// The directional albedo of the BSDFs one material builds.
+class MaterialAlbedo {
   public:
-    // nullopt if the material varies over the surface (textured parameters) or is a mix.
-    static std::optional<ReflectanceTable> Build(const Material& material);
+    // A of bsdf, which `material` built at a surface point (for a mix material, the component
+    // chosen there: SurfaceInteraction::material after the scene's GetBSDF), seen from woRender
+    // (render space). Per wavelength, in [0, 1]; 1 for an invalid BSDF.
+    SampledSpectrum Evaluate(const Material* material, const BSDF& bsdf, Vector3f woRender,
+                             const SampledWavelengths& lambda) const;
+    // Cosine-weighted hemispherical average 2 integral A(mu) mu dmu at the point (for power
+    // estimates), by 4-point Gauss-Legendre quadrature over mu.
+    SampledSpectrum Hemispherical(const Material* material, const BSDF& bsdf,
+                                  const SampledWavelengths& lambda) const;
+    // False when the material needs the approximate Monte Carlo table (coated_emissivity.h).
+    bool Exact() const;
 
-    SampledSpectrum Reflectance(Float absCosTheta, const SampledWavelengths& lambda) const;
-    // Hemispherical average 2 int R(mu) mu dmu at one wavelength (nm).
-    Float HemisphericalAverage(Float lambda_nm) const;
+    // The albedo of `material` and, for a mix, of every component (tables built here).
+    static const MaterialAlbedo* Create(const Material& material, EmissivityTables& tables,
+                                        ObjectArena& arena);
 
-    static constexpr int kThetaCount = 46, kLambdaCount = 95;
-    static constexpr Float kLambdaMin = 360, kLambdaStep = 5;
+    struct Diffuse {};
+    struct NonAbsorbing {};
+    struct Mix {
+        std::vector<std::pair<const Material*, const MaterialAlbedo*>> components;
+    };
+    using Kind = std::variant<Diffuse, NonAbsorbing, ConductorEmissivity, CoatedDiffuseEmissivity,
+                              CoatedConductorEmissivity, Mix>;
+    explicit MaterialAlbedo(Kind kind) : kind(std::move(kind)) {}
 
   private:
-    std::vector<float> values;  // [theta][lambda]
+    SampledSpectrum EvaluateLocal(const Material* material, const BSDF& bsdf, Vector3f wo,
+                                  const SampledWavelengths& lambda) const;
+    Kind kind;
 };
-
-// Whether every texture of the material is a constant (so one BSDF serves the whole surface).
-bool IsSpatiallyUniform(const Material& material);
-
-// A BSDF of the material at a surface point for emission purposes (shading frame from n).
-BSDF EmissionBSDF(const Material& material, Point3f p, Normal3f n, Point2f uv, Vector3f wo,
-                  SampledWavelengths& lambda);
 
 }  // namespace kiln

@@ -23,9 +23,13 @@ BSDF Material::GetBSDF(const MaterialEvalContext& ctx, SampledWavelengths& lambd
             if constexpr (std::is_same_v<T, InterfaceMaterial> || std::is_same_v<T, MixMaterial>)
                 return BSDF();
             else
-                return BSDF(ctx.ns, ctx.dpdus, BxDF(mtl->GetBxDF(ctx, lambda)));
+                return BSDF(ctx.ns, ctx.dpdus, BxDF(mtl->GetBxDF(ctx, lambda)), ctx.n);
         },
         m->Variant());
+}
+
+const ThermalProperties& Material::Thermal() const {
+    return std::visit([](const auto* m) -> const ThermalProperties& { return m->thermal; }, v);
 }
 
 // Material creation
@@ -77,40 +81,39 @@ ConductorSpec GetConductor(const TextureParameterDictionary& params, const std::
     return c;
 }
 
-Material CreateDiffuse(const TextureParameterDictionary& params, ObjectArena& arena) {
-    return arena.New<DiffuseMaterial>(
-        params.GetSpectrumTexture("reflectance", Constant(0.5f), SpectrumType::Albedo, arena));
-}
-
-Material CreateMix(const TextureParameterDictionary& params,
-                   const std::map<std::string, Material>& namedMaterials, const FileLoc& loc,
-                   ObjectArena& arena) {
-    std::vector<std::string> names = params.GetStringArray("materials");
-    FileLoc at = params.Has("materials") ? params.Loc("materials") : loc;
-    if (names.size() != 2)
-        throw SceneError(at, "mix material needs two values for \"string materials\"", "materials");
-    std::optional<Material> m[2];
-    for (int i = 0; i < 2; ++i) {
-        if (names[i].empty() || names[i] == "none" || names[i] == "interface") {
-            m[i] = arena.New<InterfaceMaterial>();
-            continue;
-        }
-        auto it = namedMaterials.find(names[i]);
-        if (it == namedMaterials.end())
-            throw SceneError(at, "named material \"" + names[i] + "\" not defined", names[i]);
-        m[i] = it->second;
-    }
-    return arena.New<MixMaterial>(*m[0], *m[1], params.GetFloatTexture("amount", 0.5f, arena));
-}
-
 }  // namespace
 
 Material Material::Create(const std::string& type, const TextureParameterDictionary& params,
                           const std::map<std::string, Material>& namedMaterials, const FileLoc& loc,
                           ObjectArena& arena, Diagnostics& diag) {
+    // The material's heat (its own property), then its scattering
+    ThermalProperties thermal = ReadThermalProperties(params, false, arena);
+    auto make = [&](auto* m) {
+        m->thermal = thermal;
+        return Material(m);
+    };
     if (type.empty() || type == "none" || type == "interface")
-        return arena.New<InterfaceMaterial>();
-    if (type == "mix") return CreateMix(params, namedMaterials, loc, arena);
+        return make(arena.New<InterfaceMaterial>());
+    if (type == "mix") {
+        std::vector<std::string> names = params.GetStringArray("materials");
+        FileLoc at = params.Has("materials") ? params.Loc("materials") : loc;
+        if (names.size() != 2)
+            throw SceneError(at, "mix material needs two values for \"string materials\"",
+                             "materials");
+        std::optional<Material> m[2];
+        for (int i = 0; i < 2; ++i) {
+            if (names[i].empty() || names[i] == "none" || names[i] == "interface") {
+                m[i] = arena.New<InterfaceMaterial>();
+                continue;
+            }
+            auto it = namedMaterials.find(names[i]);
+            if (it == namedMaterials.end())
+                throw SceneError(at, "named material \"" + names[i] + "\" not defined", names[i]);
+            m[i] = it->second;
+        }
+        return make(
+            arena.New<MixMaterial>(*m[0], *m[1], params.GetFloatTexture("amount", 0.5f, arena)));
+    }
 
     // Unsupported shading modifiers: warn, and read them so they are not reported as unused
     if (params.Has("displacement")) {
@@ -123,19 +126,21 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
     }
 
     auto remap = [&] { return params.GetOneBool("remaproughness", true); };
-    if (type == "diffuse") return CreateDiffuse(params, arena);
+    if (type == "diffuse")
+        return make(arena.New<DiffuseMaterial>(
+            params.GetSpectrumTexture("reflectance", Constant(0.5f), SpectrumType::Albedo, arena)));
     if (type == "conductor") {
         ConductorSpec c = GetConductor(params, "", loc, arena);
         auto [u, v] = GetRoughness(params, "", arena);
-        return arena.New<ConductorMaterial>(c.eta, c.k, c.reflectance, u, v, remap());
+        return make(arena.New<ConductorMaterial>(c.eta, c.k, c.reflectance, u, v, remap()));
     }
     if (type == "dielectric") {
         Spectrum eta = GetEta(params, "eta", 1.5f);
         auto [u, v] = GetRoughness(params, "", arena);
-        return arena.New<DielectricMaterial>(eta, u, v, remap());
+        return make(arena.New<DielectricMaterial>(eta, u, v, remap()));
     }
     if (type == "thindielectric")
-        return arena.New<ThinDielectricMaterial>(GetEta(params, "eta", 1.5f));
+        return make(arena.New<ThinDielectricMaterial>(GetEta(params, "eta", 1.5f)));
     if (type == "coateddiffuse") {
         SpectrumTexture reflectance =
             params.GetSpectrumTexture("reflectance", Constant(0.5f), SpectrumType::Albedo, arena);
@@ -147,8 +152,8 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
         FloatTexture g = params.GetFloatTexture("g", 0, arena);
         SpectrumTexture albedo =
             params.GetSpectrumTexture("albedo", Constant(0), SpectrumType::Albedo, arena);
-        return arena.New<CoatedDiffuseMaterial>(reflectance, albedo, u, v, thickness, g, eta,
-                                                maxDepth, nSamples, remap());
+        return make(arena.New<CoatedDiffuseMaterial>(reflectance, albedo, u, v, thickness, g, eta,
+                                                     maxDepth, nSamples, remap()));
     }
     if (type == "coatedconductor") {
         auto [iu, iv] = GetRoughness(params, "interface.", arena);
@@ -169,12 +174,12 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
             params.GetOneInt("maxdepth", 10),
             params.GetOneInt("nsamples", 1),
             remap()};
-        return arena.New<CoatedConductorMaterial>(std::move(p));
+        return make(arena.New<CoatedConductorMaterial>(std::move(p)));
     }
     if (type == "measured" || type == "hair" || type == "subsurface" ||
         type == "diffusetransmission") {
         diag.Warn(loc, "\"" + type + "\" material is not supported; using diffuse 0.5");
-        return arena.New<DiffuseMaterial>(arena.New<SpectrumConstantTexture>(Constant(0.5f)));
+        return make(arena.New<DiffuseMaterial>(arena.New<SpectrumConstantTexture>(Constant(0.5f))));
     }
     throw SceneError(loc, "unknown material type \"" + type + "\"", type);
 }

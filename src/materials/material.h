@@ -23,6 +23,7 @@ class CoatedConductorMaterial;
 class MixMaterial;
 class InterfaceMaterial;
 class TextureParameterDictionary;
+struct ThermalProperties;
 
 // Material Definition
 class Material {
@@ -46,6 +47,9 @@ class Material {
     // material for non-mix materials.
     const Material* ChooseMaterial(const MaterialEvalContext& ctx) const;
 
+    // The material's own temperature and emission model (thermal_properties.h).
+    const ThermalProperties& Thermal() const;
+
     bool IsInterface() const { return Is<InterfaceMaterial>(); }
     bool IsMix() const { return Is<MixMaterial>(); }
 
@@ -61,6 +65,7 @@ class Material {
     const Kind& Variant() const { return v; }
 
     // Creates a material of pbrt-v4 type `type` ("diffuse", "conductor", "dielectric",
+    // with kiln's "temperature" and "emission" (thermal_properties.h) read into it
     // "thindielectric", "coateddiffuse", "coatedconductor", "mix", "interface"; "" and "none"
     // give interface).
     // Other pbrt-v4 types are replaced by diffuse with a warning at loc; unknown types throw

@@ -1,6 +1,7 @@
 #include "materials/materials.h"
 
 #include "core/base/rng.h"
+#include "textures/basic_textures.h"
 
 namespace kiln {
 
@@ -21,6 +22,35 @@ Float SampleEta(const Spectrum& eta, SampledWavelengths& lambda) {
     if (!eta.Is<ConstantSpectrum>()) lambda.TerminateSecondary();
     // Handle a zero eta from a poorly specified spectrum as pbrt-v4 does
     return sampledEta == 0 ? 1 : sampledEta;
+}
+
+namespace {
+
+bool Constant(const FloatTexture& t) { return t.Is<FloatConstantTexture>(); }
+bool Constant(const SpectrumTexture& t) { return t.Is<SpectrumConstantTexture>(); }
+bool Constant(const std::optional<SpectrumTexture>& t) { return !t || Constant(*t); }
+
+}  // namespace
+
+bool HasUniformParameters(const Material& material) {
+    if (const auto* m = material.GetIf<DiffuseMaterial>()) return Constant(m->Reflectance());
+    if (const auto* m = material.GetIf<ConductorMaterial>())
+        return Constant(m->Eta()) && Constant(m->K()) && Constant(m->Reflectance()) &&
+               Constant(m->URoughness()) && Constant(m->VRoughness());
+    if (const auto* m = material.GetIf<DielectricMaterial>())
+        return Constant(m->URoughness()) && Constant(m->VRoughness());
+    if (const auto* m = material.GetIf<CoatedDiffuseMaterial>())
+        return Constant(m->Reflectance()) && Constant(m->Albedo()) && Constant(m->URoughness()) &&
+               Constant(m->VRoughness()) && Constant(m->Thickness()) && Constant(m->G());
+    if (const auto* m = material.GetIf<CoatedConductorMaterial>()) {
+        const CoatedConductorMaterial::Params& p = m->Parameters();
+        return Constant(p.interfaceURoughness) && Constant(p.interfaceVRoughness) &&
+               Constant(p.thickness) && Constant(p.g) && Constant(p.conductorEta) &&
+               Constant(p.k) && Constant(p.reflectance) && Constant(p.conductorURoughness) &&
+               Constant(p.conductorVRoughness) && Constant(p.albedo);
+    }
+    if (material.Is<MixMaterial>()) return false;  // chosen point by point
+    return true;                                   // thin dielectric, interface
 }
 
 namespace {

@@ -12,22 +12,31 @@
 
 #include "materials/bxdfs/bxdf.h"
 #include "materials/material.h"
+#include "materials/thermal_properties.h"
 #include "spectral/spectrum.h"
 #include "textures/texture.h"
 
 namespace kiln {
 
+// What every material holds besides its scattering: its heat (thermal_properties.h).
+struct MaterialBase {
+    ThermalProperties thermal;
+};
+
 // Trowbridge-Reitz distribution from roughness textures evaluated at ctx.
 TrowbridgeReitzDistribution RoughnessDistribution(FloatTexture uRoughness, FloatTexture vRoughness,
                                                   bool remapRoughness,
                                                   const TextureEvalContext& ctx);
+// Whether every texture of the material is a constant, so that it scatters alike at every point
+// (false for mix materials, which choose a component point by point).
+bool HasUniformParameters(const Material& material);
 // A dielectric's relative IOR at the hero wavelength lambda[0]; terminates the secondary
 // wavelengths if eta varies with wavelength (is not a ConstantSpectrum). 0 is taken as 1.
 Float SampleEta(const Spectrum& eta, SampledWavelengths& lambda);
 
 // DiffuseMaterial Definition
 // Lambertian reflection; reflectance (albedo) clamped to [0, 1].
-class DiffuseMaterial {
+class DiffuseMaterial : public MaterialBase {
   public:
     explicit DiffuseMaterial(SpectrumTexture reflectance) : reflectance(reflectance) {}
     DiffuseBxDF GetBxDF(const MaterialEvalContext& ctx, const SampledWavelengths& lambda) const;
@@ -40,7 +49,7 @@ class DiffuseMaterial {
 // ConductorMaterial Definition
 // Either eta and k (complex IOR relative to the outside) or, pbrt-v4's alternative, an albedo
 // "reflectance" r giving eta = 1, k = 2 sqrt(r) / sqrt(1 - r).
-class ConductorMaterial {
+class ConductorMaterial : public MaterialBase {
   public:
     ConductorMaterial(std::optional<SpectrumTexture> eta, std::optional<SpectrumTexture> k,
                       std::optional<SpectrumTexture> reflectance, FloatTexture uRoughness,
@@ -69,7 +78,7 @@ class ConductorMaterial {
 
 // DielectricMaterial Definition
 // Smooth or rough glass-like interface; eta is the IOR inside relative to outside.
-class DielectricMaterial {
+class DielectricMaterial : public MaterialBase {
   public:
     DielectricMaterial(Spectrum eta, FloatTexture uRoughness, FloatTexture vRoughness,
                        bool remapRoughness)
@@ -92,7 +101,7 @@ class DielectricMaterial {
 
 // ThinDielectricMaterial Definition
 // A thin smooth slab (window pane): reflection and straight-through transmission.
-class ThinDielectricMaterial {
+class ThinDielectricMaterial : public MaterialBase {
   public:
     explicit ThinDielectricMaterial(Spectrum eta) : eta(eta) {}
     ThinDielectricBxDF GetBxDF(const MaterialEvalContext& ctx, SampledWavelengths& lambda) const;
@@ -105,7 +114,7 @@ class ThinDielectricMaterial {
 // CoatedDiffuseMaterial Definition
 // A dielectric coating over a diffuse base, with an optional scattering medium of the given
 // thickness (mean free paths), single-scattering albedo and HG asymmetry g in between.
-class CoatedDiffuseMaterial {
+class CoatedDiffuseMaterial : public MaterialBase {
   public:
     CoatedDiffuseMaterial(SpectrumTexture reflectance, SpectrumTexture albedo,
                           FloatTexture uRoughness, FloatTexture vRoughness, FloatTexture thickness,
@@ -145,7 +154,7 @@ class CoatedDiffuseMaterial {
 // CoatedConductorMaterial Definition
 // A dielectric coating ("interface.*") over a conductor ("conductor.*" or "reflectance"); the
 // conductor's eta and k are taken relative to the coating.
-class CoatedConductorMaterial {
+class CoatedConductorMaterial : public MaterialBase {
   public:
     struct Params {
         FloatTexture interfaceURoughness, interfaceVRoughness, thickness, g;
@@ -166,7 +175,7 @@ class CoatedConductorMaterial {
 
 // MixMaterial Definition
 // Stochastic selection between two materials: materials[1] with probability amount.
-class MixMaterial {
+class MixMaterial : public MaterialBase {
   public:
     MixMaterial(Material m0, Material m1, FloatTexture amount)
         : materials{m0, m1}, amount(amount) {}
@@ -183,6 +192,6 @@ class MixMaterial {
 
 // InterfaceMaterial Definition
 // No scattering: marks the boundary of a participating medium.
-class InterfaceMaterial {};
+class InterfaceMaterial : public MaterialBase {};
 
 }  // namespace kiln

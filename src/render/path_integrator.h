@@ -1,10 +1,11 @@
 // Unidirectional path tracing with multiple importance sampling (pbrt-v4's PathIntegrator).
 //
 // The radiance representation is a template parameter (see radiance.h): the same code renders
-// unpolarised and, later, polarised light. At each surface the integrator adds emission found
-// by BSDF sampling (MIS-weighted against light sampling), samples one light with the power
-// light sampler (MIS-weighted against BSDF sampling), then continues the path by sampling the
-// BSDF, with Russian roulette after the first bounces.
+// unpolarised and, later, polarised light. At each surface the integrator builds the BSDF,
+// adds the surface's emission (computed from that BSDF, in its shading frame: thermal emission
+// is a property of the surface; MIS-weighted against light sampling when the surface is a
+// light), samples one light (MIS-weighted against BSDF sampling), then continues the path by
+// sampling the BSDF, with Russian roulette after the first bounces.
 #pragma once
 
 #include <optional>
@@ -21,8 +22,8 @@ class PathIntegrator {
     using Spectrum = typename Radiance::Spectrum;
     using Throughput = typename Radiance::Throughput;
 
-    PathIntegrator(const Scene& scene, PathIntegratorSettings settings, int samplesPerPixel)
-        : scene(scene), settings(settings), samplesPerPixel(samplesPerPixel) {}
+    PathIntegrator(const Scene& scene, PathIntegratorSettings settings)
+        : scene(scene), settings(settings) {}
 
     // Radiance arriving along ray at the wavelengths lambda. visibleSurface (if non-null) gets
     // the first hit's geometry and albedo for AOVs.
@@ -41,14 +42,15 @@ class PathIntegrator {
 
             // Escaped rays: add emission from infinite lights
             if (!si) {
-                for (const Light* light : scene.infiniteLights) {
-                    SampledSpectrum Le = light->Le(ray, lambda);
+                for (int index : scene.infiniteLights) {
+                    const Light& light = scene.lights[size_t(index)];
+                    SampledSpectrum Le = light.Le(ray, lambda);
                     if (!Le) continue;
                     if (depth == 0 || specularBounce) {
                         L += Radiance::Apply(beta, Radiance::Emitted(Le));
                     } else {
-                        Float lightPdf = scene.lightSampler->PMF(light) *
-                                         light->PDF_Li(prevContext, ray.d, true);
+                        Float lightPdf = scene.lightSampler->PMF(prevContext, index) *
+                                         light.PDF_Li(prevContext, ray.d, true);
                         Float w = EmissionWeight(prevBsdfPdf, lightPdf);
                         L += Radiance::Apply(beta, Radiance::Emitted(w * Le));
                     }
@@ -57,23 +59,21 @@ class PathIntegrator {
             }
             SurfaceInteraction& isect = si->intr;
 
-            // Emission from an area light hit by the path
-            if (const Light* area = isect.areaLight) {
-                SampledSpectrum Le = area->L(isect.p, isect.n, isect.uv, -ray.d, lambda);
-                if (Le) {
-                    if (depth == 0 || specularBounce) {
-                        L += Radiance::Apply(beta, Radiance::Emitted(Le));
-                    } else {
-                        Float lightPdf =
-                            scene.lightSampler->PMF(area) * area->PDF_Li(prevContext, ray.d, true);
-                        Float w = EmissionWeight(prevBsdfPdf, lightPdf);
-                        L += Radiance::Apply(beta, Radiance::Emitted(w * Le));
-                    }
+            // The BSDF at the hit (invalid for interface materials, which only mark
+            // boundaries); emission is computed from it, in its shading frame
+            BSDF bsdf = scene.GetBSDF(isect, lambda);
+            if (SampledSpectrum Le = scene.SurfaceLe(isect, bsdf, -ray.d, lambda)) {
+                if (depth == 0 || specularBounce || isect.lightIndex < 0) {
+                    // All of it: light sampling could not have found it
+                    L += Radiance::Apply(beta, Radiance::Emitted(Le));
+                } else {
+                    const Light& light = scene.lights[size_t(isect.lightIndex)];
+                    Float lightPdf = scene.lightSampler->PMF(prevContext, isect.lightIndex) *
+                                     light.PDF_Li(prevContext, ray.d, true);
+                    Float w = EmissionWeight(prevBsdfPdf, lightPdf);
+                    L += Radiance::Apply(beta, Radiance::Emitted(w * Le));
                 }
             }
-
-            // BSDF at the hit; interface materials only mark boundaries
-            BSDF bsdf = scene.GetBSDF(isect, lambda, ray, samplesPerPixel);
             if (!bsdf) {
                 specularBounce = true;
                 ray = isect.SpawnRay(ray.d);
@@ -143,10 +143,10 @@ class PathIntegrator {
 
         Float uLight = sampler.Get1D();
         Point2f uPoint = sampler.Get2D();
-        std::optional<SampledLight> sampled = scene.lightSampler->Sample(uLight);
+        std::optional<SampledLight> sampled = scene.lightSampler->Sample(ctx, uLight);
         if (!sampled) return {};
-        const Light* light = sampled->light;
-        std::optional<LightLiSample> ls = light->SampleLi(ctx, uPoint, lambda, true);
+        const Light& light = scene.lights[size_t(sampled->index)];
+        std::optional<LightLiSample> ls = light.SampleLi(ctx, uPoint, lambda, true);
         if (!ls || !ls->L || ls->pdf == 0) return {};
 
         Vector3f wo = intr.wo, wi = ls->wi;
@@ -155,7 +155,7 @@ class PathIntegrator {
         if (scene.aggregate->IntersectP(intr.SpawnRayTo(ls->pLight), 1 - ShadowEpsilon)) return {};
 
         Float lightPdf = sampled->p * ls->pdf;
-        if (IsDeltaLight(light->Type())) return ls->L * f / lightPdf;
+        if (IsDeltaLight(light.Type())) return ls->L * f / lightPdf;
         Float bsdfPdf = bsdf.PDF(wo, wi);
         Float w = settings.strategy == LightStrategy::MIS ? PowerHeuristic(1, lightPdf, 1, bsdfPdf)
                                                           : Float(1);
@@ -164,7 +164,6 @@ class PathIntegrator {
 
     const Scene& scene;
     PathIntegratorSettings settings;
-    int samplesPerPixel;
 };
 
 }  // namespace kiln

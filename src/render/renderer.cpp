@@ -79,7 +79,7 @@ RenderStats Render(Scene& scene, const RenderSettings& settings) {
         threadLimit = std::make_unique<tbb::global_control>(
             tbb::global_control::max_allowed_parallelism, size_t(settings.threads));
 
-    PathIntegrator<UnpolarizedRadiance> integrator(scene, scene.integrator, spp);
+    PathIntegrator<UnpolarizedRadiance> integrator(scene, scene.integrator);
     const PixelSampleFunction renderPixelSample =
         PixelSampleFor({scene.film->UsesVisibleSurface(), scene.integrator.singleWavelength,
                         scene.disablePixelJitter});

@@ -1,6 +1,8 @@
 // Scene: the renderable objects created from a SceneDescription (pbrt-v4's BasicScene
 // creation step): camera, film, sampler, textures, materials, lights, shapes in an Embree
-// accelerator, and the integrator's settings.
+// accelerator, and the integrator's settings. Creation runs in named steps
+// (scene_create.cpp: camera and film, textures, materials, shapes and their heat
+// (scene_emitters.h), lights, aggregate, light sampler, features).
 #pragma once
 
 #include <map>
@@ -20,11 +22,11 @@
 #include "lights/light.h"
 #include "lights/light_sampler.h"
 #include "materials/bxdfs/bsdf.h"
-#include "materials/emissivity.h"
+#include "materials/emission_model.h"
+#include "materials/emissivity_tables.h"
 #include "materials/material.h"
+#include "materials/surface_shader.h"
 #include "render/scene_description.h"
-#include "textures/texture.h"
-#include "textures/texture_parameter_dictionary.h"
 
 namespace kiln {
 
@@ -45,8 +47,8 @@ struct SceneOverrides {
 // two alone (kiln's Integrator "path" "string strategy" "mis" | "light" | "bsdf", for
 // comparisons and tests; all three converge to the same image).
 enum class LightStrategy { MIS, LightOnly, BSDFOnly };
-// How next-event estimation picks a light: by emitted power (default; pbrt-v4's "bvh" and
-// "power" map here), uniformly, or in proportion to area (area lights; others weigh 1).
+// How next-event estimation picks a light: by emitted power (pbrt-v4's "power"), uniformly
+// ("uniform"), or in proportion to area (kiln's "area": area lights by area, others weigh 1).
 enum class LightSelection { Power, Uniform, Area };
 
 struct PathIntegratorSettings {
@@ -70,6 +72,20 @@ struct SceneFeatures {
     std::string ToString() const;
 };
 
+// The scene's SurfaceShader: the BSDF at a surface point, with the texture footprint of a
+// camera ray there (pbrt-v4's Camera::Approximate_dp_dxy, a function of the point alone, so
+// hits and light samples agree).
+class SceneShader : public SurfaceShader {
+  public:
+    SceneShader(const Camera* camera, int samplesPerPixel)
+        : camera(camera), samplesPerPixel(samplesPerPixel) {}
+    BSDF GetBSDF(SurfaceInteraction& si, SampledWavelengths& lambda) const override;
+
+  private:
+    const Camera* camera;
+    int samplesPerPixel;
+};
+
 class Scene {
   public:
     // Creates every object; throws SceneError for invalid input and reports warnings
@@ -80,10 +96,15 @@ class Scene {
     Scene& operator=(const Scene&) = delete;
     ~Scene();
 
-    // The BSDF at a surface hit (resolving mix materials and texture footprints); invalid for
-    // interface materials.
-    BSDF GetBSDF(SurfaceInteraction& isect, SampledWavelengths& lambda, const Ray& ray,
-                 int samplesPerPixel) const;
+    // The BSDF at a surface hit (SceneShader::GetBSDF): invalid for interface materials;
+    // isect.material becomes the material that built it (a mix's component).
+    BSDF GetBSDF(SurfaceInteraction& isect, SampledWavelengths& lambda) const {
+        return shader->GetBSDF(isect, lambda);
+    }
+    // Radiance the surface at isect emits towards wo: its thermal emission, or its area
+    // light's. bsdf: the BSDF GetBSDF returned there.
+    SampledSpectrum SurfaceLe(const SurfaceInteraction& isect, const BSDF& bsdf, Vector3f wo,
+                              const SampledWavelengths& lambda) const;
     VisibleSurface MakeVisibleSurface(const SurfaceInteraction& isect, const BSDF& bsdf,
                                       const SampledWavelengths& lambda) const;
 
@@ -92,15 +113,17 @@ class Scene {
     RGBFilm* film = nullptr;
     std::optional<Camera> camera;
     std::optional<kiln::Sampler> sampler;  // prototype: each thread renders with a Clone()
+    std::unique_ptr<SceneShader> shader;
+    std::unique_ptr<EmissivityTables> emissivityTables;
     std::unique_ptr<kiln::Accelerator> aggregate;
-    std::vector<Light> lights;  // addresses are stable after creation
-    std::vector<const Light*> infiniteLights;
+    std::vector<Light> lights;        // identified by index (SurfaceInteraction::lightIndex)
+    std::vector<int> infiniteLights;  // indices into lights
     std::unique_ptr<PowerLightSampler> lightSampler;
     PathIntegratorSettings integrator;
     bool disablePixelJitter = false;
     bool autoExposure = false;  // film "bool autoexposure" (kiln): see auto_exposure.h
     int shapeCount = 0;
-    int thermalEmitterCount = 0;  // shapes glowing because of their temperature
+    int thermalEmitterCount = 0;  // lights of shapes glowing because of their temperature
     SceneFeatures features;
 
   private:

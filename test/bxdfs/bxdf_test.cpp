@@ -8,7 +8,6 @@
 #include "core/base/sampling.h"
 #include "core/base/statistics.h"
 #include "materials/bxdfs/bsdf.h"
-#include "materials/bxdfs/directional_albedo.h"
 #include "materials/bxdfs/fresnel.h"
 
 using namespace kiln;
@@ -90,7 +89,6 @@ TEST(BxDF, DiffuseAlbedoEqualsR) {
         uc[i] = rng.UniformFloat(), u[i] = {rng.UniformFloat(), rng.UniformFloat()};
     for (Float c : {1.0f, 0.5f, 0.01f}) {
         EXPECT_NEAR(bxdf.rho(Dir(c, 0), uc, u)[0], 0.37f, 1e-5f);
-        EXPECT_NEAR(DirectionalAlbedo(bxdf, Dir(c, 0))[2], 0.37f, 1e-5f);
     }
 }
 
@@ -102,42 +100,9 @@ TEST(BxDF, SmoothConductorAlbedoEqualsFresnel) {
     for (Float c : {1.0f, 0.5f, 0.1f, 1e-3f}) {
         SampledSpectrum F = FrComplex(c, eta, k);
         SampledSpectrum rho = bxdf.rho(Dir(c, 0.2f), uc, u);
-        SampledSpectrum da = DirectionalAlbedo(bxdf, Dir(c, 0.2f));
-        for (int i = 0; i < NSpectrumSamples; ++i) {
+        for (int i = 0; i < NSpectrumSamples; ++i)
             EXPECT_NEAR(rho[i], F[i], 2e-5f * std::max<Float>(1, F[i]));
-            EXPECT_EQ(da[i], F[i]);
-        }
     }
-}
-
-TEST(BxDF, DirectionalAlbedoRoughIsBoundedAndSmooth) {
-    SampledSpectrum eta(0.2f), k(3.5f);
-    BxDF bxdf = ConductorBxDF(TrowbridgeReitzDistribution(0.3f, 0.3f), eta, k);
-    Float prev = -1;
-    for (int i = 1; i <= 40; ++i) {
-        Float c = i / 40.f;
-        Float R = DirectionalAlbedo(bxdf, Dir(c, 0))[0];
-        EXPECT_GE(R, 0);
-        EXPECT_LE(R, 1);
-        if (prev >= 0) {
-            EXPECT_NEAR(R, prev, 0.03f) << c;  // no sample noise between neighbours
-        }
-        prev = R;
-    }
-    // Agrees with an independent Monte Carlo estimate.
-    RunningStats s = Albedo(bxdf, Dir(0.6f, 0), 40000, 5);
-    EXPECT_NEAR(DirectionalAlbedo(bxdf, Dir(0.6f, 0), 64)[0], s.Mean(),
-                4 * s.StandardError() + 2e-3);
-    // Smooth dielectric: reflection only, exactly Fresnel.
-    BxDF glass = DielectricBxDF(1.5f, TrowbridgeReitzDistribution(0, 0));
-    EXPECT_EQ(DirectionalAlbedo(glass, Dir(0.3f, 0))[0], FrDielectric(0.3f, 1.5f));
-    // Coated diffuse: finite and within [0, 1].
-    BxDF coated = CoatedDiffuseBxDF(DielectricBxDF(1.5f, TrowbridgeReitzDistribution(0, 0)),
-                                    DiffuseBxDF(SampledSpectrum(0.5f)), 0.01f, SampledSpectrum(0.f),
-                                    0, 10, 1);
-    SampledSpectrum rc = DirectionalAlbedo(coated, Dir(0.5f, 0));
-    EXPECT_GT(rc[0], 0.2f);
-    EXPECT_LT(rc[0], 0.8f);
 }
 
 TEST(BxDF, Reciprocity) {

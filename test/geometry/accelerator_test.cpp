@@ -1,5 +1,5 @@
-// Accelerator: nearest hits over mixed shapes, instancing, shadow rays, material and area
-// light pointers, and self-intersection-free re-spawning far from the origin.
+// Accelerator: nearest hits over mixed shapes, instancing, shadow rays, materials, light indices
+// and thermal emission, and self-intersection-free re-spawning far from the origin.
 #include "core/geometry/accelerator.h"
 
 #include <gtest/gtest.h>
@@ -9,14 +9,14 @@
 namespace kiln {
 namespace {
 
-// Opaque tags standing in for materials and lights (only their addresses are used).
+// Opaque tags standing in for materials and emission (only their addresses are used).
 const Material* Tag(int i) {
     static const int tags[8] = {};
     return reinterpret_cast<const Material*>(&tags[i]);
 }
-const Light* LightTag(int i) {
+const ThermalEmission* EmissionTag(int i) {
     static const int tags[8] = {};
-    return reinterpret_cast<const Light*>(&tags[i]);
+    return reinterpret_cast<const ThermalEmission*>(&tags[i]);
 }
 
 struct Scene {
@@ -39,10 +39,10 @@ TEST(Accelerator, NearestHitMaterialsAndLights) {
     Scene s;
     Accelerator accel;
     std::vector<Shape> quadric = {Shape(&s.sphere), Shape(&s.disk)};
-    const Light* lights[2] = {LightTag(1), LightTag(2)};
-    accel.Add(quadric, Tag(1), lights);
+    const int lights[2] = {7, 8};
+    accel.Add(quadric, Tag(1), lights, EmissionTag(1));
     std::vector<Shape> tris = {Shape(&s.tris[0]), Shape(&s.tris[1])};
-    accel.Add(tris, Tag(2), {});
+    accel.Add(tris, Tag(2), {}, nullptr);
     accel.Commit();
 
     // Nearest along +z from the origin: the triangles at z = 3.
@@ -50,17 +50,19 @@ TEST(Accelerator, NearestHitMaterialsAndLights) {
     ASSERT_TRUE(h);
     EXPECT_NEAR(h->tHit, 1.5f, 1e-6f);
     EXPECT_EQ(h->intr.material, Tag(2));
-    EXPECT_EQ(h->intr.areaLight, nullptr);
+    EXPECT_EQ(h->intr.lightIndex, -1);
+    EXPECT_EQ(h->intr.thermal, nullptr);
     // Outside the quad: the sphere (z = 4), then the disk.
     h = accel.Intersect(Ray(Point3f(0, 0.5f, 3.5f), Vector3f(0, 0, 1)));
     ASSERT_TRUE(h);
     EXPECT_NEAR(h->intr.p.z, 5 - std::sqrt(0.75f), 1e-5f);
     EXPECT_EQ(h->intr.material, Tag(1));
-    EXPECT_EQ(h->intr.areaLight, LightTag(1));
+    EXPECT_EQ(h->intr.lightIndex, 7);
+    EXPECT_EQ(h->intr.thermal, EmissionTag(1));
     h = accel.Intersect(Ray(Point3f(2, 0, 0), Vector3f(0, 0, 1)));
     ASSERT_TRUE(h);
     EXPECT_NEAR(h->tHit, 10, 1e-5f);
-    EXPECT_EQ(h->intr.areaLight, LightTag(2));
+    EXPECT_EQ(h->intr.lightIndex, 8);
     // tMax and shadow rays.
     EXPECT_FALSE(accel.Intersect(Ray(Point3f(2, 0, 0), Vector3f(0, 0, 1)), 9.9f));
     EXPECT_TRUE(accel.IntersectP(Ray(Point3f(2, 0, 0), Vector3f(0, 0, 1))));
@@ -78,7 +80,7 @@ TEST(Accelerator, InstancesArePlaced) {
     Transform id;
     Sphere unit(&id, &id, false, 1, -1, 1, 360);
     std::vector<Shape> shapes = {Shape(&unit), Shape(&s.tris[0]), Shape(&s.tris[1])};
-    accel.AddToInstanceDefinition(def, shapes, Tag(3));
+    accel.AddToInstanceDefinition(def, shapes, Tag(3), EmissionTag(2));
     accel.AddInstance(def, Translate(Vector3f(10, 0, 0)));
     accel.AddInstance(def, Translate(Vector3f(-10, 0, 0)) * Scale(2, 2, 2));
     accel.Commit();
@@ -88,6 +90,8 @@ TEST(Accelerator, InstancesArePlaced) {
     EXPECT_NEAR(h->intr.p.z, -1, 1e-5f);
     test::ExpectNearV(h->intr.n, Normal3f(0, 0, -1), 1e-5f);
     EXPECT_EQ(h->intr.material, Tag(3));
+    EXPECT_EQ(h->intr.thermal, EmissionTag(2));
+    EXPECT_EQ(h->intr.lightIndex, -1);
     // Triangles of the scaled instance: z = 2 * 3 = 6, beyond the sphere of radius 2 -> the
     // sphere is hit first at z = -2.
     h = accel.Intersect(Ray(Point3f(-10, 0, -5), Vector3f(0, 0, 1)));
@@ -115,7 +119,7 @@ TEST(Accelerator, NoSelfIntersectionFarFromOrigin) {
     auto tris = Triangle::FromMesh(&mesh);
     Accelerator accel;
     std::vector<Shape> shapes = {Shape(&sphere), Shape(&tris[0]), Shape(&tris[1])};
-    accel.Add(shapes, nullptr, {});
+    accel.Add(shapes, nullptr, {}, nullptr);
     accel.Commit();
     RNG rng(17);
     int nHits = 0, nSelf = 0;

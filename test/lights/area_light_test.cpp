@@ -59,6 +59,16 @@ void CheckSampling(const Light& light, Point3f p, Point3f towards, Float cosMax)
 
 }  // namespace
 
+// Radiance an area light sends from a surface point (p, n, uv) towards w.
+SampledSpectrum Lat(const Light& light, Point3f p, Normal3f n, Point2f uv, Vector3f w,
+                    const SampledWavelengths& lambda) {
+    SurfaceInteraction si;
+    si.p = p;
+    si.n = si.shading.n = n;
+    si.uv = uv;
+    return light.L(si, BSDF(), w, lambda);
+}
+
 TEST(DiffuseAreaLight, SphereSamplingChiSquare) {
     Scene s;
     Light light = s.Area(s.MakeSphere(Point3f(0.5f, 0, 3), 1), {});
@@ -90,7 +100,8 @@ TEST(DiffuseAreaLight, DefaultEmissionHasUnitLuminance) {
     Scene s;
     Light light = s.Area(s.MakeSphere(Point3f(0, 0, 0), 1), {FloatParam("float", "scale", {3})});
     double Y = LuminanceOf([&](const SampledWavelengths& lambda) {
-        return light.L(Point3f(0, 0, 1), Normal3f(0, 0, 1), Point2f(), Vector3f(0, 0, 1), lambda);
+        return Lat(light, Point3f(0, 0, 1), Normal3f(0, 0, 1), Point2f(), Vector3f(0, 0, 1),
+                   lambda);
     });
     EXPECT_NEAR(Y, 3, 3e-3);
 }
@@ -109,7 +120,7 @@ TEST(DiffuseAreaLight, PowerGivesRequestedLuminousPower) {
             EXPECT_NEAR(Y, 100, 0.1) << "twosided " << twoSided << " blackbody " << blackbody;
             // Radiance then is power / (pi A (2 if two-sided))
             double YL = LuminanceOf([&](const SampledWavelengths& l) {
-                return light.L(Point3f(), Normal3f(0, 0, 1), Point2f(), Vector3f(0, 0, 1), l);
+                return Lat(light, Point3f(), Normal3f(0, 0, 1), Point2f(), Vector3f(0, 0, 1), l);
             });
             EXPECT_NEAR(YL, 100 / (Pi * 4 * Pi * (twoSided ? 2 : 1)), 1e-3);
         }
@@ -119,7 +130,7 @@ TEST(DiffuseAreaLight, BlackbodyIsNormalisedToUnitLuminance) {
     Scene s;
     Light light = s.Area(s.MakeDisk(Transform(), 1), {FloatParam("blackbody", "L", {1500})});
     double Y = LuminanceOf([&](const SampledWavelengths& l) {
-        return light.L(Point3f(), Normal3f(0, 0, 1), Point2f(), Vector3f(0, 0, 1), l);
+        return Lat(light, Point3f(), Normal3f(0, 0, 1), Point2f(), Vector3f(0, 0, 1), l);
     });
     EXPECT_NEAR(Y, 1, 2e-3);
 }
@@ -132,12 +143,12 @@ TEST(DiffuseAreaLight, TwoSided) {
     SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.5f);
     Normal3f n(0, 0, 1);
     Vector3f up = Normalize(Vector3f(0.3f, 0, 1)), down = Normalize(Vector3f(0.3f, 0, -1));
-    EXPECT_TRUE(bool(one.L(Point3f(), n, Point2f(), up, lambda)));
-    EXPECT_FALSE(bool(one.L(Point3f(), n, Point2f(), down, lambda)));
-    EXPECT_EQ(two.L(Point3f(), n, Point2f(), up, lambda),
-              two.L(Point3f(), n, Point2f(), down, lambda));
-    EXPECT_EQ(two.L(Point3f(), n, Point2f(), down, lambda),
-              one.L(Point3f(), n, Point2f(), up, lambda));
+    EXPECT_TRUE(bool(Lat(one, Point3f(), n, Point2f(), up, lambda)));
+    EXPECT_FALSE(bool(Lat(one, Point3f(), n, Point2f(), down, lambda)));
+    EXPECT_EQ(Lat(two, Point3f(), n, Point2f(), up, lambda),
+              Lat(two, Point3f(), n, Point2f(), down, lambda));
+    EXPECT_EQ(Lat(two, Point3f(), n, Point2f(), down, lambda),
+              Lat(one, Point3f(), n, Point2f(), up, lambda));
     SampledSpectrum ratio = SafeDiv(two.Phi(lambda), one.Phi(lambda));
     for (int i = 0; i < NSpectrumSamples; ++i) EXPECT_FLOAT_EQ(ratio[i], 2);
     // From below, a one-sided disk facing up sends nothing
@@ -156,7 +167,9 @@ TEST(DiffuseAreaLight, ZeroAreaShapeIsHarmless) {
     EXPECT_FALSE(bool(phi));
     LightSampleContext ctx(Point3f(0, 0, 1), Normal3f(), Normal3f());
     auto ls = light.SampleLi(ctx, Point2f(0.5f, 0.5f), lambda);
-    if (ls) EXPECT_FALSE(ls->L.HasNaN() || std::isnan(ls->pdf));
+    if (ls) {
+        EXPECT_FALSE(ls->L.HasNaN() || std::isnan(ls->pdf));
+    }
     EXPECT_FALSE(std::isnan(light.PDF_Li(ctx, Vector3f(0, 0, -1))));
 }
 

@@ -8,7 +8,7 @@
 namespace kiln {
 
 class Material;
-class Light;
+class ThermalEmission;
 class TriangleMesh;
 
 // Shadow rays stop this fraction short of their target so they do not hit the target itself.
@@ -52,7 +52,11 @@ struct SurfaceInteraction : Interaction {
     } shading;
     int faceIndex = 0;
     const Material* material = nullptr;
-    const Light* areaLight = nullptr;  // emitter attached to the hit shape, if any
+    // The scene light this surface point belongs to (its index in the scene's light list), -1
+    // if none; and the surface's thermal emission (lights/thermal_emission.h), also for hot
+    // shapes that are not lights (inside object instances)
+    int lightIndex = -1;
+    const ThermalEmission* thermal = nullptr;
     // Screen-space footprint (for texture filtering); zero when unknown.
     Vector3f dpdx, dpdy;
     Float dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;

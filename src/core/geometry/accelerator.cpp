@@ -19,8 +19,9 @@ struct GeomRecord {
     std::vector<int> triIndices;  // primID -> triangle index; empty when the identity
     std::vector<Shape> shapes;    // User: primID -> shape
     const Material* material = nullptr;
-    std::vector<const Light*> lights;  // primID -> area light; empty when none
-    Transform renderFromInstance;      // Instance
+    std::vector<int> lights;  // primID -> index of the light in the scene's list; empty: none
+    const ThermalEmission* thermal = nullptr;
+    Transform renderFromInstance;  // Instance
 };
 
 struct SceneBVH {
@@ -101,13 +102,13 @@ struct Accelerator::Impl {
         s.records.push_back(std::move(rec));
     }
     void AddShapes(SceneBVH& s, std::span<const Shape> shapes, const Material* material,
-                   std::span<const Light* const> areaLights);
+                   std::span<const int> areaLights, const ThermalEmission* thermal);
 };
 
 // Adding shapes
 void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
-                                  const Material* material,
-                                  std::span<const Light* const> areaLights) {
+                                  const Material* material, std::span<const int> areaLights,
+                                  const ThermalEmission* thermal) {
     bool haveLights = !areaLights.empty();
     // Triangles grouped by mesh (first-seen order), everything else as one user geometry.
     std::vector<std::pair<const TriangleMesh*, std::vector<size_t>>> meshes;
@@ -130,6 +131,7 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
         rec->kind = GeomRecord::Kind::Triangles;
         rec->mesh = mesh;
         rec->material = material;
+        rec->thermal = thermal;
         bool identity = int(idx.size()) == mesh->nTriangles;
         for (size_t k = 0; k < idx.size(); ++k) {
             int tri = shapes[idx[k]].Get<Triangle>()->TriangleIndex();
@@ -160,6 +162,7 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
         auto rec = std::make_unique<GeomRecord>();
         rec->kind = GeomRecord::Kind::User;
         rec->material = material;
+        rec->thermal = thermal;
         for (size_t i : others) {
             rec->shapes.push_back(shapes[i]);
             if (haveLights) rec->lights.push_back(areaLights[i]);
@@ -187,10 +190,10 @@ Accelerator::~Accelerator() {
 }
 
 void Accelerator::Add(std::span<const Shape> shapes, const Material* material,
-                      std::span<const Light* const> areaLights) {
-    if (!areaLights.empty() && areaLights.size() != shapes.size())
-        throw std::invalid_argument("Accelerator::Add: need one area light per shape or none");
-    impl->AddShapes(impl->top, shapes, material, areaLights);
+                      std::span<const int> lightIndices, const ThermalEmission* thermal) {
+    if (!lightIndices.empty() && lightIndices.size() != shapes.size())
+        throw std::invalid_argument("Accelerator::Add: need one light per shape or none");
+    impl->AddShapes(impl->top, shapes, material, lightIndices, thermal);
 }
 
 int Accelerator::NewInstanceDefinition() {
@@ -199,8 +202,9 @@ int Accelerator::NewInstanceDefinition() {
 }
 
 void Accelerator::AddToInstanceDefinition(int definition, std::span<const Shape> shapes,
-                                          const Material* material) {
-    impl->AddShapes(impl->definitions.at(definition), shapes, material, {});
+                                          const Material* material,
+                                          const ThermalEmission* thermal) {
+    impl->AddShapes(impl->definitions.at(definition), shapes, material, {}, thermal);
 }
 
 void Accelerator::AddInstance(int definition, const Transform& renderFromInstance) {
@@ -277,7 +281,8 @@ std::optional<ShapeIntersection> Accelerator::Intersect(const Ray& ray, Float tM
     }
     if (renderFromInstance) si.intr = TransformInteraction(*renderFromInstance, si.intr);
     si.intr.material = rec->material;
-    si.intr.areaLight = rec->lights.empty() ? nullptr : rec->lights[prim];
+    si.intr.lightIndex = rec->lights.empty() ? -1 : rec->lights[prim];
+    si.intr.thermal = rec->thermal;
     return si;
 }
 

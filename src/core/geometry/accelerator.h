@@ -18,7 +18,7 @@
 namespace kiln {
 
 class Material;
-class Light;
+class ThermalEmission;
 
 // The context of a closest-hit query on Accelerator::EmbreeScene(): kiln's user-geometry
 // callbacks (quadrics, bilinear patches) store their full hit after the Embree context, so raw
@@ -39,15 +39,17 @@ class Accelerator {
     Accelerator(const Accelerator&) = delete;
     Accelerator& operator=(const Accelerator&) = delete;
 
-    // The shapes of one Shape directive with their material (nullptr = interface) and area
-    // lights (empty, or one per shape in the same order). Shapes and lights must outlive the
-    // accelerator.
+    // The shapes of one Shape directive with their material (nullptr = interface), the indices
+    // of their lights in the scene's light list (empty, or one per shape in the same order) and
+    // their thermal emission (nullptr when cold). Shapes, materials and emission must outlive
+    // the accelerator; hits report them in SurfaceInteraction.
     void Add(std::span<const Shape> shapes, const Material* material,
-             std::span<const Light* const> areaLights);
-    // Object instancing: a definition's shapes are given in the definition's own space.
+             std::span<const int> lightIndices, const ThermalEmission* thermal);
+    // Object instancing: a definition's shapes are given in the definition's own space (they
+    // can glow, but are no lights).
     int NewInstanceDefinition();
     void AddToInstanceDefinition(int definition, std::span<const Shape> shapes,
-                                 const Material* material);
+                                 const Material* material, const ThermalEmission* thermal);
     void AddInstance(int definition, const Transform& renderFromInstance);
     // Builds the BVHs; call once after everything has been added.
     void Commit();

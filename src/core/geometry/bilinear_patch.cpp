@@ -240,15 +240,14 @@ std::optional<ShapeSample> BilinearPatch::Sample(Point2f u) const {
     return ShapeSample{Interaction(p, n, st), pdf / jac};
 }
 
-Float BilinearPatch::PDF(const Interaction& intr) const {
-    // Recover the patch parameters of intr.p by Newton iterations on the bilinear map.
+Point2f BilinearPatch::Parameters(Point3f pt) const {
     auto [p00, p10, p01, p11] = Corners();
     Point2f uv(0.5f, 0.5f);
     for (int it = 0; it < 12; ++it) {
         Point3f p = Lerp(uv.y, Lerp(uv.x, p00, p10), Lerp(uv.x, p01, p11));
         Vector3f dpdu = Lerp(uv.y, p10, p11) - Lerp(uv.y, p00, p01);
         Vector3f dpdv = Lerp(uv.x, p01, p11) - Lerp(uv.x, p00, p10);
-        Vector3f r = intr.p - p;
+        Vector3f r = pt - p;
         // Least-squares step: [dpdu dpdv] duv = r.
         Float a = Dot(dpdu, dpdu), b = Dot(dpdu, dpdv), c = Dot(dpdv, dpdv);
         Float ru = Dot(dpdu, r), rv = Dot(dpdv, r);
@@ -257,10 +256,30 @@ Float BilinearPatch::PDF(const Interaction& intr) const {
         uv = Point2f(Clamp(uv.x + (c * ru - b * rv) / det, 0, 1),
                      Clamp(uv.y + (a * rv - b * ru) / det, 0, 1));
     }
+    return uv;
+}
+
+Float BilinearPatch::PDF(const Interaction& intr) const {
+    auto [p00, p10, p01, p11] = Corners();
+    Point2f uv = Parameters(intr.p);
     Vector3f dpdu = Lerp(uv.y, p10, p11) - Lerp(uv.y, p00, p01);
     Vector3f dpdv = Lerp(uv.x, p01, p11) - Lerp(uv.x, p00, p10);
     Float jac = Length(Cross(dpdu, dpdv));
     return jac == 0 ? 0 : BilinearPDF(uv, SamplingWeights()) / jac;
+}
+
+SurfaceInteraction BilinearPatch::InteractionAt(Point3f p, Float time, Vector3f wo) const {
+    return InteractionFromParameters(Parameters(p), time, wo);
+}
+
+std::optional<ShapeSample> BilinearPatch::SampleParametric(Point2f uv) const {
+    SurfaceInteraction si = InteractionFromParameters(uv, 0, Vector3f(0, 0, 1));
+    auto [p00, p10, p01, p11] = Corners();
+    Vector3f dpdu = Lerp(uv.y, p10, p11) - Lerp(uv.y, p00, p01);
+    Vector3f dpdv = Lerp(uv.x, p01, p11) - Lerp(uv.x, p00, p10);
+    Float jac = Length(Cross(dpdu, dpdv));
+    if (jac == 0) return std::nullopt;
+    return ShapeSample{Interaction(si.p, si.n, si.uv), 1 / jac};
 }
 
 std::optional<ShapeSample> BilinearPatch::Sample(const ShapeSampleContext& ctx, Point2f u) const {

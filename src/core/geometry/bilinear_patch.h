@@ -49,6 +49,13 @@ class BilinearPatch {
     std::optional<ShapeSample> Sample(const ShapeSampleContext& ctx, Point2f u) const;
     Float PDF(const ShapeSampleContext& ctx, Vector3f wi) const;
 
+    // Shape::InteractionAt, SampleParametric, InvertParametric (shape.h); the parameterisation
+    // is the patch's own (u, v), with area density 1 / |dp/du x dp/dv|.
+    SurfaceInteraction InteractionAt(Point3f p, Float time, Vector3f wo) const;
+    std::optional<ShapeSample> SampleParametric(Point2f u) const;
+    Point2f InvertParametric(Point3f p) const { return Parameters(p); }
+    // The patch parameters (u, v) of a point on (or near) the patch, by Newton iterations.
+    Point2f Parameters(Point3f p) const;
     // Differential geometry at patch parameters (u, v).
     SurfaceInteraction InteractionFromParameters(Point2f uv, Float time, Vector3f wo) const;
     bool IsRectangle() const;

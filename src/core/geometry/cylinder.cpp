@@ -53,10 +53,7 @@ std::optional<std::pair<Float, Point3f>> Cylinder::BasicIntersect(const Ray& r, 
     return std::nullopt;
 }
 
-std::optional<ShapeIntersection> Cylinder::Intersect(const Ray& ray, Float tMax) const {
-    auto hit = BasicIntersect(ray, tMax);
-    if (!hit) return std::nullopt;
-    Point3f pHit = hit->second;
+SurfaceInteraction Cylinder::InteractionFromHit(Point3f pHit, Vector3f woObject, Float time) const {
     Float phi = std::atan2(pHit.y, pHit.x);
     if (phi < 0) phi += 2 * Pi;
     Float u = phi / phiMax, v = (pHit.z - zMin) / (zMax - zMin);
@@ -66,9 +63,34 @@ std::optional<ShapeIntersection> Cylinder::Intersect(const Ray& ray, Float tMax)
     WeingartenNormalDerivatives(dpdu, dpdv, d2Pduu, Vector3f(0, 0, 0), Vector3f(0, 0, 0), &dndu,
                                 &dndv);
     bool flip = reverseOrientation ^ transformSwapsHandedness;
-    Vector3f wo = -(*objectFromRender)(ray.d);
-    SurfaceInteraction si(pHit, Point2f(u, v), wo, dpdu, dpdv, dndu, dndv, ray.time, flip);
-    return ShapeIntersection{TransformInteraction(*renderFromObject, si), hit->first};
+    SurfaceInteraction si(pHit, Point2f(u, v), woObject, dpdu, dpdv, dndu, dndv, time, flip);
+    return TransformInteraction(*renderFromObject, si);
+}
+
+std::optional<ShapeIntersection> Cylinder::Intersect(const Ray& ray, Float tMax) const {
+    auto hit = BasicIntersect(ray, tMax);
+    if (!hit) return std::nullopt;
+    return ShapeIntersection{InteractionFromHit(hit->second, -(*objectFromRender)(ray.d), ray.time),
+                             hit->first};
+}
+
+SurfaceInteraction Cylinder::InteractionAt(Point3f p, Float time, Vector3f wo) const {
+    Point3f pObj = (*objectFromRender)(p);
+    Float r = std::sqrt(Sqr(pObj.x) + Sqr(pObj.y));
+    if (r > 0) pObj.x *= radius / r, pObj.y *= radius / r;
+    pObj.z = Clamp(pObj.z, zMin, zMax);
+    return InteractionFromHit(pObj, (*objectFromRender)(wo), time);
+}
+
+// Sample(u) is itself a bijective area-uniform map: u = ((z - zmin) / (zmax - zmin), phi / phimax)
+std::optional<ShapeSample> Cylinder::SampleParametric(Point2f u) const { return Sample(u); }
+
+Point2f Cylinder::InvertParametric(Point3f p) const {
+    Point3f pObj = (*objectFromRender)(p);
+    Float phi = std::atan2(pObj.y, pObj.x);
+    if (phi < 0) phi += 2 * Pi;
+    Float u0 = zMax > zMin ? (pObj.z - zMin) / (zMax - zMin) : 0;
+    return Point2f(Clamp(u0, 0, 1), Clamp(phiMax > 0 ? phi / phiMax : 0, 0, 1));
 }
 
 bool Cylinder::IntersectP(const Ray& ray, Float tMax) const {

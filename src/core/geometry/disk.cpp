@@ -34,10 +34,7 @@ std::optional<std::pair<Float, Point3f>> Disk::BasicIntersect(const Ray& r, Floa
     return std::make_pair(Float(tShapeHit), Point3f(Float(px), Float(py), height));
 }
 
-std::optional<ShapeIntersection> Disk::Intersect(const Ray& ray, Float tMax) const {
-    auto hit = BasicIntersect(ray, tMax);
-    if (!hit) return std::nullopt;
-    Point3f pHit = hit->second;
+SurfaceInteraction Disk::InteractionFromHit(Point3f pHit, Vector3f woObject, Float time) const {
     Float phi = std::atan2(pHit.y, pHit.x);
     if (phi < 0) phi += 2 * Pi;
     Float rHit = std::sqrt(Sqr(pHit.x) + Sqr(pHit.y));
@@ -47,10 +44,42 @@ std::optional<ShapeIntersection> Disk::Intersect(const Ray& ray, Float tMax) con
                              : Vector3f(innerRadius - radius, 0, 0);
     if (rHit == 0) dpdu = Vector3f(0, phiMax * 1e-6f * radius, 0);
     bool flip = reverseOrientation ^ transformSwapsHandedness;
-    Vector3f wo = -(*objectFromRender)(ray.d);
-    SurfaceInteraction si(pHit, Point2f(u, v), wo, dpdu, dpdv, Normal3f(0, 0, 0), Normal3f(0, 0, 0),
-                          ray.time, flip);
-    return ShapeIntersection{TransformInteraction(*renderFromObject, si), hit->first};
+    SurfaceInteraction si(pHit, Point2f(u, v), woObject, dpdu, dpdv, Normal3f(0, 0, 0),
+                          Normal3f(0, 0, 0), time, flip);
+    return TransformInteraction(*renderFromObject, si);
+}
+
+std::optional<ShapeIntersection> Disk::Intersect(const Ray& ray, Float tMax) const {
+    auto hit = BasicIntersect(ray, tMax);
+    if (!hit) return std::nullopt;
+    return ShapeIntersection{InteractionFromHit(hit->second, -(*objectFromRender)(ray.d), ray.time),
+                             hit->first};
+}
+
+SurfaceInteraction Disk::InteractionAt(Point3f p, Float time, Vector3f wo) const {
+    Point3f pObj = (*objectFromRender)(p);
+    pObj.z = height;
+    return InteractionFromHit(pObj, (*objectFromRender)(wo), time);
+}
+
+// Polar parameterisation: r^2 uniform between the radii, phi uniform
+std::optional<ShapeSample> Disk::SampleParametric(Point2f u) const {
+    Float r = std::sqrt(Lerp(u[0], Sqr(innerRadius), Sqr(radius))), phi = u[1] * phiMax;
+    Point3f pObj(r * std::cos(phi), r * std::sin(phi), height);
+    Normal3f n = SafeNormalize((*renderFromObject)(Normal3f(0, 0, 1)));
+    if (reverseOrientation) n = -n;
+    Point2f uv(phi / phiMax, (radius - r) / (radius - innerRadius));
+    return ShapeSample{Interaction((*renderFromObject)(pObj), n, uv), 1 / Area()};
+}
+
+Point2f Disk::InvertParametric(Point3f p) const {
+    Point3f pObj = (*objectFromRender)(p);
+    Float r2 = Sqr(pObj.x) + Sqr(pObj.y);
+    Float phi = std::atan2(pObj.y, pObj.x);
+    if (phi < 0) phi += 2 * Pi;
+    Float d = Sqr(radius) - Sqr(innerRadius);
+    return Point2f(Clamp(d > 0 ? (r2 - Sqr(innerRadius)) / d : 0, 0, 1),
+                   Clamp(phiMax > 0 ? phi / phiMax : 0, 0, 1));
 }
 
 bool Disk::IntersectP(const Ray& ray, Float tMax) const {

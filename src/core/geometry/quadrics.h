@@ -44,6 +44,10 @@ class Sphere : public QuadricBase {
     // Cone sampling of the subtended directions from outside, area sampling from inside.
     std::optional<ShapeSample> Sample(const ShapeSampleContext& ctx, Point2f u) const;
     Float PDF(const ShapeSampleContext& ctx, Vector3f wi) const;
+    // Shape::InteractionAt, SampleParametric, InvertParametric (shape.h)
+    SurfaceInteraction InteractionAt(Point3f p, Float time, Vector3f wo) const;
+    std::optional<ShapeSample> SampleParametric(Point2f u) const;
+    Point2f InvertParametric(Point3f p) const;
 
     Float radius, zMin, zMax, thetaZMin, thetaZMax, phiMax;
 
@@ -68,11 +72,16 @@ class Disk : public QuadricBase {
     Float PDF(const Interaction&) const { return 1 / Area(); }
     std::optional<ShapeSample> Sample(const ShapeSampleContext& ctx, Point2f u) const;
     Float PDF(const ShapeSampleContext& ctx, Vector3f wi) const;
+    // Shape::InteractionAt, SampleParametric, InvertParametric (shape.h)
+    SurfaceInteraction InteractionAt(Point3f p, Float time, Vector3f wo) const;
+    std::optional<ShapeSample> SampleParametric(Point2f u) const;
+    Point2f InvertParametric(Point3f p) const;
 
     Float height, radius, innerRadius, phiMax;
 
   private:
     std::optional<std::pair<Float, Point3f>> BasicIntersect(const Ray& r, Float tMax) const;
+    SurfaceInteraction InteractionFromHit(Point3f pHit, Vector3f woObject, Float time) const;
 };
 
 // Cylinder about the z axis: radius, zmin <= z <= zmax, sweep phimax (degrees).
@@ -89,11 +98,16 @@ class Cylinder : public QuadricBase {
     Float PDF(const Interaction&) const { return 1 / Area(); }
     std::optional<ShapeSample> Sample(const ShapeSampleContext& ctx, Point2f u) const;
     Float PDF(const ShapeSampleContext& ctx, Vector3f wi) const;
+    // Shape::InteractionAt, SampleParametric, InvertParametric (shape.h)
+    SurfaceInteraction InteractionAt(Point3f p, Float time, Vector3f wo) const;
+    std::optional<ShapeSample> SampleParametric(Point2f u) const;
+    Point2f InvertParametric(Point3f p) const;
 
     Float radius, zMin, zMax, phiMax;
 
   private:
     std::optional<std::pair<Float, Point3f>> BasicIntersect(const Ray& r, Float tMax) const;
+    SurfaceInteraction InteractionFromHit(Point3f pHit, Vector3f woObject, Float time) const;
 };
 
 }  // namespace kiln

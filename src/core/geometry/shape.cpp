@@ -21,6 +21,15 @@ std::optional<ShapeSample> Shape::Sample(const ShapeSampleContext& ctx, Point2f 
 Float Shape::PDF(const ShapeSampleContext& ctx, Vector3f wi) const {
     return Dispatch([&](auto s) { return s->PDF(ctx, wi); });
 }
+SurfaceInteraction Shape::InteractionAt(Point3f p, Float time, Vector3f wo) const {
+    return Dispatch([&](auto s) { return s->InteractionAt(p, time, wo); });
+}
+std::optional<ShapeSample> Shape::SampleParametric(Point2f u) const {
+    return Dispatch([&](auto s) { return s->SampleParametric(u); });
+}
+Point2f Shape::InvertParametric(Point3f p) const {
+    return Dispatch([&](auto s) { return s->InvertParametric(p); });
+}
 std::optional<ShapeIntersection> Shape::Intersect(const Ray& ray, Float tMax) const {
     return Dispatch([&](auto s) { return s->Intersect(ray, tMax); });
 }

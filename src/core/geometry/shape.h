@@ -39,6 +39,15 @@ class Shape {
     // A point sampled from the viewpoint ctx; pdf per steradian.
     std::optional<ShapeSample> Sample(const ShapeSampleContext& ctx, Point2f u) const;
     Float PDF(const ShapeSampleContext& ctx, Vector3f wi) const;
+    // The full differential geometry at point p of the surface (render space), exactly as a ray
+    // hit there computes it (shading frame, uv, triangle and barycentrics), for outgoing
+    // direction wo at shutter time `time`.
+    SurfaceInteraction InteractionAt(Point3f p, Float time, Vector3f wo) const;
+    // A bijective parameterisation of the surface by [0,1]^2 for sampling emitters in
+    // proportion to power (lights/thermal_area_light.h): the point at u with the area density
+    // (per unit area) that a uniform u gives it, and the parameter of a point on the surface.
+    std::optional<ShapeSample> SampleParametric(Point2f u) const;
+    Point2f InvertParametric(Point3f p) const;
     // tMax in the parametric units of ray (ray.d need not be unit).
     std::optional<ShapeIntersection> Intersect(const Ray& ray, Float tMax = Infinity) const;
     bool IntersectP(const Ray& ray, Float tMax = Infinity) const;

@@ -60,7 +60,10 @@ std::vector<Shape> CreateTriangleMesh(const Transform* renderFromObject, bool re
     std::vector<Normal3f> N = params.GetNormal3fArray("N");
     std::vector<Vector3f> S = params.GetVector3fArray("S");
     std::vector<int> faceIndices = params.GetIntArray("faceIndices");
+    // Per-vertex temperatures: one value per vertex (a single value is a uniform temperature,
+    // which scene creation reads; kiln's thermal_properties.h)
     std::vector<Float> temperature = params.GetFloatArray("temperature");
+    if (temperature.size() == 1) temperature.clear();
     if (P.empty()) throw SceneError(loc, "vertex positions \"P\" must be provided", "trianglemesh");
     if (indices.empty()) {
         if (P.size() != 3)

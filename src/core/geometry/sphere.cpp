@@ -91,6 +91,14 @@ bool Sphere::IntersectP(const Ray& ray, Float tMax) const {
     return BasicIntersect(ray, tMax).has_value();
 }
 
+SurfaceInteraction Sphere::InteractionAt(Point3f p, Float time, Vector3f wo) const {
+    Point3f pObj = (*objectFromRender)(p);
+    Float len = Length(Vector3f(pObj));
+    if (len > 0) pObj = Point3f(Vector3f(pObj) * (radius / len));
+    if (pObj.x == 0 && pObj.y == 0) pObj.x = 1e-5f * radius;
+    return InteractionFromHit(pObj, (*objectFromRender)(wo), time);
+}
+
 // Sphere sampling
 std::optional<ShapeSample> Sphere::Sample(Point2f u) const {
     // Archimedes: z is uniform over the slab for uniform area density.
@@ -102,6 +110,19 @@ std::optional<ShapeSample> Sphere::Sample(Point2f u) const {
     Float theta = SafeACos(pObj.z / radius);
     Point2f uv(phi / phiMax, (theta - thetaZMin) / (thetaZMax - thetaZMin));
     return ShapeSample{Interaction((*renderFromObject)(pObj), n, uv), 1 / Area()};
+}
+
+// Sample(u) is itself a bijective area-uniform map: u = ((z - zmin) / (zmax - zmin), phi / phimax)
+std::optional<ShapeSample> Sphere::SampleParametric(Point2f u) const { return Sample(u); }
+
+Point2f Sphere::InvertParametric(Point3f p) const {
+    Point3f pObj = (*objectFromRender)(p);
+    Float len = Length(Vector3f(pObj));
+    Float z = len > 0 ? pObj.z * radius / len : 0;
+    Float phi = std::atan2(pObj.y, pObj.x);
+    if (phi < 0) phi += 2 * Pi;
+    Float u0 = zMax > zMin ? (z - zMin) / (zMax - zMin) : 0;
+    return Point2f(Clamp(u0, 0, 1), Clamp(phiMax > 0 ? phi / phiMax : 0, 0, 1));
 }
 
 std::optional<ShapeSample> Sphere::Sample(const ShapeSampleContext& ctx, Point2f u) const {

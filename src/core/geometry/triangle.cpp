@@ -247,6 +247,29 @@ std::optional<ShapeSample> Triangle::Sample(Point2f u) const {
     return ShapeSample{PointAt(SampleUniformTriangle(u), 0), 1 / Area()};
 }
 
+SurfaceInteraction Triangle::InteractionAt(Point3f p, Float time, Vector3f wo) const {
+    std::array<Float, 3> b = Barycentrics(p);
+    // Onto the triangle (points from sampling lie on it up to rounding)
+    for (Float& bi : b) bi = std::max<Float>(bi, 0);
+    Float sum = b[0] + b[1] + b[2];
+    if (sum > 0)
+        for (Float& bi : b) bi /= sum;
+    return InteractionFromBarycentrics(b, time, wo);
+}
+
+std::optional<ShapeSample> Triangle::SampleParametric(Point2f u) const {
+    Float su0 = std::sqrt(u[0]);
+    std::array<Float, 3> b = {1 - su0, u[1] * su0, 0};
+    b[2] = std::max<Float>(0, 1 - b[0] - b[1]);
+    return ShapeSample{PointAt(b, 0), 1 / Area()};
+}
+
+Point2f Triangle::InvertParametric(Point3f p) const {
+    std::array<Float, 3> b = Barycentrics(p);
+    Float s = Clamp(1 - b[0], 0, 1);
+    return Point2f(Sqr(s), s > 0 ? Clamp(b[1] / s, 0, 1) : 0);
+}
+
 Float Triangle::SolidAngle(Point3f p) const { return SphericalTriangleArea(Vertices(), p); }
 
 // Cosine-warp weights at the corners of [0,1]^2 for spherical triangle samples (pbrt-v4).

@@ -77,6 +77,11 @@ class Triangle {
     // area sampling converted to solid angle otherwise.
     std::optional<ShapeSample> Sample(const ShapeSampleContext& ctx, Point2f u) const;
     Float PDF(const ShapeSampleContext& ctx, Vector3f wi) const;
+    // Shape::InteractionAt, SampleParametric, InvertParametric (shape.h); the parameterisation
+    // is b0 = 1 - sqrt(u0), b1 = u1 sqrt(u0).
+    SurfaceInteraction InteractionAt(Point3f p, Float time, Vector3f wo) const;
+    std::optional<ShapeSample> SampleParametric(Point2f u) const;
+    Point2f InvertParametric(Point3f p) const;
     // Solid angle (sr) subtended at p.
     Float SolidAngle(Point3f p) const;
 

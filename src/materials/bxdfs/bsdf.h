@@ -1,5 +1,16 @@
 // BSDF: a BxDF placed in the local shading frame of a surface point; converts directions
 // between render space and the shading frame (normal on +z).
+//
+// Opaque surfaces with shading normals (interpolated or bumped normals that differ from the
+// geometric normal ng): a reflection-only BxDF in the shading frame can send light to the
+// other side of the geometric surface, where pbrt-v4 lets it leak through. kiln folds such
+// directions back: a direction w on the wrong side of the surface is mirrored about the
+// geometric tangent plane, m(w) = w - 2 (w . ng) ng, so the BSDF becomes, on wo's side,
+//   f_fold(wo, wi) |wi . ns| = f(wo, wi) |wi . ns| + f(wo, m(wi)) |m(wi) . ns|
+// and zero on the other side. The directional albedo is unchanged (so Kirchhoff emission
+// 1 - albedo stays exact and a closed cavity stays in equilibrium), no light passes through an
+// opaque surface, and the same estimate holds for light and BSDF sampling (MIS). A deliberate
+// difference from pbrt-v4, visible only where shading and geometric normals differ strongly.
 #pragma once
 
 #include <optional>
@@ -14,8 +25,9 @@ class BSDF {
     // Invalid BSDF (operator bool false): the surface is only an interface between media.
     BSDF() = default;
     // ns: shading normal; dpdus: shading dp/du. The frame's x axis is dpdus made orthogonal to
-    // ns (Gram-Schmidt); if dpdus is degenerate any tangent is used.
-    BSDF(Normal3f ns, Vector3f dpdus, const BxDF& bxdf);
+    // ns (Gram-Schmidt); if dpdus is degenerate any tangent is used. ng: the geometric normal
+    // (zero when unknown), for folding (see above).
+    BSDF(Normal3f ns, Vector3f dpdus, const BxDF& bxdf, Normal3f ng = Normal3f(0, 0, 0));
 
     explicit operator bool() const { return valid; }
 
@@ -43,8 +55,15 @@ class BSDF {
     const BxDF& GetBxDF() const { return bxdf; }
 
   private:
+    // Mirror image of w about the geometric tangent plane.
+    Vector3f Mirror(Vector3f w) const { return w - 2 * Dot(w, ng) * ng; }
+    // Whether w leaves on wo's side of the geometric surface.
+    bool SameSide(Vector3f wo, Vector3f w) const { return Dot(wo, ng) * Dot(w, ng) > 0; }
+
     BxDF bxdf;
     Frame shadingFrame;
+    Vector3f ng;        // geometric normal when folding, else zero
+    bool fold = false;  // opaque BxDF whose shading normal differs from the geometric one
     bool valid = false;
 };
 

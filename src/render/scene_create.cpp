@@ -1,0 +1,388 @@
+// Scene creation in named steps (pbrt-v4's scene.cpp: CreateMaterials, CreateLights,
+// CreateAggregate): camera and film, textures, materials, shapes with their heat, lights (with
+// a shape-to-lights map, lights identified by index), aggregate, light sampler, features.
+#include <map>
+#include <set>
+
+#include "core/geometry/triangle.h"
+#include "render/scene.h"
+#include "render/scene_emitters.h"
+#include "spectral/color.h"
+#include "textures/basic_textures.h"
+#include "textures/texture_parameter_dictionary.h"
+
+namespace kiln {
+
+namespace {
+
+// Camera, film, filter, sampler and the integrator's settings
+PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, bool given, Diagnostics& diag) {
+    PathIntegratorSettings s;
+    if (e.name == "volpath") {
+        if (given)
+            diag.Warn(e.loc,
+                      "participating media are not supported: integrator \"volpath\" "
+                      "renders as \"path\"");
+    } else if (e.name != "path") {
+        diag.Warn(e.loc, "integrator \"" + e.name + "\" is not supported; using \"path\"");
+    }
+    s.maxDepth = e.parameters.GetOneInt("maxdepth", 5);
+    if (s.maxDepth < 0) throw SceneError(e.parameters.Loc("maxdepth"), "maxdepth must be >= 0");
+    s.regularize = e.parameters.GetOneBool("regularize", false);
+    int wavelengths = e.parameters.GetOneInt("wavelengths", NSpectrumSamples);
+    if (wavelengths != 1 && wavelengths != NSpectrumSamples)
+        throw SceneError(e.parameters.Loc("wavelengths"),
+                         "\"wavelengths\" must be 1 or " + std::to_string(NSpectrumSamples),
+                         std::to_string(wavelengths));
+    s.singleWavelength = wavelengths == 1;
+    std::string strategy = e.parameters.GetOneString("strategy", "mis");
+    if (strategy == "mis")
+        s.strategy = LightStrategy::MIS;
+    else if (strategy == "light")
+        s.strategy = LightStrategy::LightOnly;
+    else if (strategy == "bsdf")
+        s.strategy = LightStrategy::BSDFOnly;
+    else
+        throw SceneError(e.parameters.Loc("strategy"),
+                         "unknown strategy (expected \"mis\", \"light\" or \"bsdf\")", strategy);
+    std::string ls = e.parameters.GetOneString("lightsampler", "bvh");
+    if (ls == "uniform")
+        s.lightSelection = LightSelection::Uniform;
+    else if (ls == "area")
+        s.lightSelection = LightSelection::Area;
+    else if (ls != "bvh" && ls != "power")
+        diag.Warn(e.parameters.Loc("lightsampler"),
+                  "light sampler \"" + ls + "\" is not supported; using \"power\"");
+    return s;
+}
+
+void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const SceneOverrides& overrides,
+                         Diagnostics& diag) {
+    ObjectArena& arena = scene.arena;
+    scene.filter =
+        Filter::Create(desc.filter.name, desc.filter.parameters, desc.filter.loc, arena, diag);
+    Float shutterOpen = desc.camera.parameters.GetOneFloat("shutteropen", 0);
+    Float shutterClose = desc.camera.parameters.GetOneFloat("shutterclose", 1);
+    if (shutterClose < shutterOpen)
+        throw SceneError(desc.camera.loc, "shutterclose is before shutteropen", "shutterclose");
+    if (overrides.cropWindow) {
+        ParsedParameter crop;
+        crop.type = "float";
+        crop.name = "cropwindow";
+        const Bounds2f& c = *overrides.cropWindow;
+        crop.floats = {c.pMin.x, c.pMax.x, c.pMin.y, c.pMax.y};
+        desc.film.parameters.Set(crop);
+    }
+    scene.autoExposure = desc.film.parameters.GetOneBool("autoexposure", false);
+    scene.film = RGBFilm::Create(desc.film.name, desc.film.parameters, shutterClose - shutterOpen,
+                                 *scene.filter, desc.filmColorSpace, desc.film.loc, arena, diag);
+    scene.camera =
+        Camera::Create(desc.camera.name, desc.camera.parameters, desc.camera.cameraTransform,
+                       scene.film->FullResolution(), desc.camera.loc, arena, diag);
+    std::optional<int> seed = overrides.seed ? overrides.seed : desc.seedOption;
+    scene.sampler =
+        Sampler::Create(desc.sampler.name, desc.sampler.parameters, scene.film->FullResolution(),
+                        desc.sampler.loc, diag, overrides.samplesPerPixel, seed);
+    scene.integrator =
+        CreateIntegratorSettings(desc.integrator, desc.integrator.loc.line > 0, diag);
+    scene.disablePixelJitter = desc.disablePixelJitter;
+    if (desc.accelerator.name != "bvh" && desc.accelerator.name != "kdtree")
+        diag.Warn(desc.accelerator.loc,
+                  "unknown accelerator \"" + desc.accelerator.name + "\"; kiln uses Embree");
+    for (SceneEntity* e : {&desc.filter, &desc.film, static_cast<SceneEntity*>(&desc.camera),
+                           &desc.sampler, &desc.integrator, &desc.accelerator})
+        e->parameters.ReportUnused(diag);
+    scene.shader = std::make_unique<SceneShader>(&*scene.camera, scene.sampler->SamplesPerPixel());
+}
+
+// Textures
+// Sets "float <name>" to value unless the texture's parameters already have it.
+void SetIfAbsent(ParameterDictionary& params, const std::string& name, Float value) {
+    if (params.Has(name)) return;
+    ParsedParameter p;
+    p.type = "float";
+    p.name = name;
+    p.floats = {value};
+    params.Set(p);
+}
+
+NamedTextures& CreateTextures(SceneDescription& desc, const SceneOverrides& overrides, Scene& scene,
+                              Diagnostics& diag) {
+    ObjectArena& arena = scene.arena;
+    NamedTextures& textures = *arena.New<NamedTextures>();
+    textures.renderFromWorld = desc.camera.cameraTransform.RenderFromWorld();
+    for (auto& [name, tex] : desc.floatTextures) {
+        // Animation time for time-dependent temperature textures
+        if (overrides.timeSeconds && (tex.texName == "cooling" || tex.texName == "keyframes"))
+            SetIfAbsent(tex.parameters, "time", *overrides.timeSeconds);
+        if (overrides.frame && tex.texName == "heatmap" &&
+            tex.parameters.GetOneString("filename", "").find('#') != std::string::npos)
+            SetIfAbsent(tex.parameters, "frame", Float(*overrides.frame));
+        TextureParameterDictionary params(&tex.parameters, &textures);
+        textures.floatTextures.insert_or_assign(
+            name,
+            CreateFloatTexture(tex.texName, tex.renderFromObject, params, tex.loc, arena, diag));
+        tex.parameters.ReportUnused(diag);
+    }
+    for (auto& [name, tex] : desc.spectrumTextures) {
+        // As pbrt-v4: one texture per way a spectrum can be used.
+        TextureParameterDictionary params(&tex.parameters, &textures);
+        textures.albedoSpectrumTextures.insert_or_assign(
+            name, CreateSpectrumTexture(tex.texName, tex.renderFromObject, params,
+                                        SpectrumType::Albedo, tex.loc, arena, diag));
+        textures.unboundedSpectrumTextures.insert_or_assign(
+            name, CreateSpectrumTexture(tex.texName, tex.renderFromObject, params,
+                                        SpectrumType::Unbounded, tex.loc, arena, diag));
+        textures.illuminantSpectrumTextures.insert_or_assign(
+            name, CreateSpectrumTexture(tex.texName, tex.renderFromObject, params,
+                                        SpectrumType::Illuminant, tex.loc, arena, diag));
+        tex.parameters.ReportUnused(diag);
+    }
+    return textures;
+}
+
+// Materials: named (in dependency order: mix materials may refer to named materials defined
+// later in the file) and anonymous
+struct SceneMaterials {
+    std::map<std::string, const Material*> named;
+    std::vector<const Material*> anonymous;
+
+    const Material* Of(const ShapeSceneEntity& s) const {
+        if (!s.materialName.empty()) {
+            auto it = named.find(s.materialName);
+            if (it == named.end())
+                throw SceneError(s.loc, "named material '" + s.materialName + "' not defined",
+                                 s.materialName);
+            return it->second;
+        }
+        return anonymous.at(size_t(s.materialIndex));
+    }
+};
+
+SceneMaterials CreateMaterials(SceneDescription& desc, const NamedTextures& textures,
+                               ObjectArena& arena, Diagnostics& diag) {
+    std::map<std::string, Material> named;
+    std::vector<std::pair<std::string, SceneEntity>*> pending;
+    for (auto& nm : desc.namedMaterials) pending.push_back(&nm);
+    while (!pending.empty()) {
+        std::vector<std::pair<std::string, SceneEntity>*> deferred;
+        for (auto* nm : pending) {
+            SceneEntity& e = nm->second;
+            std::string type = e.parameters.GetOneString("type", "");
+            if (type.empty())
+                throw SceneError(
+                    e.loc,
+                    "MakeNamedMaterial \"" + nm->first + "\" needs a \"string type\" parameter",
+                    nm->first);
+            if (type == "mix") {
+                bool ready = true;
+                for (const std::string& m : e.parameters.GetStringArray("materials"))
+                    if (!named.count(m)) ready = false;
+                if (!ready) {
+                    deferred.push_back(nm);
+                    continue;
+                }
+            }
+            TextureParameterDictionary params(&e.parameters, &textures);
+            named.emplace(nm->first, Material::Create(type, params, named, e.loc, arena, diag));
+            e.parameters.ReportUnused(diag);
+        }
+        if (deferred.size() == pending.size()) {
+            // Whatever remains refers to undefined (or cyclic) materials: let Create report it.
+            for (auto* nm : deferred) {
+                SceneEntity& e = nm->second;
+                TextureParameterDictionary params(&e.parameters, &textures);
+                named.emplace(nm->first,
+                              Material::Create("mix", params, named, e.loc, arena, diag));
+            }
+            break;
+        }
+        pending = std::move(deferred);
+    }
+    SceneMaterials materials;
+    for (auto& [name, m] : named) materials.named[name] = arena.New<Material>(m);
+    for (SceneEntity& e : desc.materials) {
+        TextureParameterDictionary params(&e.parameters, &textures);
+        materials.anonymous.push_back(
+            arena.New<Material>(Material::Create(e.name, params, named, e.loc, arena, diag)));
+        e.parameters.ReportUnused(diag);
+    }
+    return materials;
+}
+
+// Shapes of one directive with their material and heat
+struct SceneShapes {
+    std::vector<Shape> shapes;
+    ShapeHeat heat;
+};
+
+SceneShapes CreateShapes(ShapeSceneEntity& s, const NamedTextures& textures,
+                         const SceneMaterials& materials, ThermalEmitters& emitters,
+                         ObjectArena& arena, Diagnostics& diag) {
+    SceneShapes result;
+    TextureParameterDictionary params(&s.parameters, &textures);
+    ThermalProperties own = ReadThermalProperties(params, s.name == "trianglemesh", arena);
+    const kiln::Transform* renderFromObject = arena.New<kiln::Transform>(s.renderFromObject);
+    const kiln::Transform* objectFromRender =
+        arena.New<kiln::Transform>(Inverse(s.renderFromObject));
+    result.shapes = Shape::Create(s.name, renderFromObject, objectFromRender, s.reverseOrientation,
+                                  s.parameters, s.loc, arena, diag);
+    s.parameters.ReportUnused(diag);
+    if (!result.shapes.empty())
+        result.heat = emitters.Heat(s, own, materials.Of(s), result.shapes, s.areaLightIndex >= 0);
+    return result;
+}
+
+// Lights: the scene's lights, then one area or thermal light per shape of each hot or
+// emitting shape directive. Returns, per shape directive, the indices of its shapes' lights.
+std::vector<std::vector<int>> CreateLights(Scene& scene, SceneDescription& desc,
+                                           const std::vector<SceneShapes>& shapes,
+                                           ThermalEmitters& emitters, Diagnostics& diag) {
+    ObjectArena& arena = scene.arena;
+    for (TransformedSceneEntity& e : desc.lights) {
+        std::optional<Light> light =
+            Light::Create(e.name, e.parameters, e.renderFromObject, e.loc, arena, diag);
+        if (light) scene.lights.push_back(*light);
+    }
+    std::vector<std::vector<int>> shapeLights(desc.shapes.size());
+    for (size_t i = 0; i < desc.shapes.size(); ++i) {
+        const ShapeSceneEntity& s = desc.shapes[i];
+        if (s.areaLightIndex >= 0) {
+            TransformedSceneEntity& le = desc.areaLights[size_t(s.areaLightIndex)];
+            if (le.name != "diffuse")
+                diag.Warn(le.loc,
+                          "area light \"" + le.name + "\" is not supported; using \"diffuse\"");
+            for (const Shape& shape : shapes[i].shapes) {
+                shapeLights[i].push_back(int(scene.lights.size()));
+                scene.lights.push_back(Light::CreateArea(
+                    "diffuse", le.parameters, le.renderFromObject, shape, le.loc, arena, diag));
+            }
+        } else if (shapes[i].heat.emission) {
+            shapeLights[i] = emitters.CreateLights(shapes[i].shapes, shapes[i].heat, scene.lights);
+            scene.thermalEmitterCount += int(shapeLights[i].size());
+        }
+    }
+    return shapeLights;
+}
+
+// Lights learn the scene's extent (infinite and distant lights need it)
+void PreprocessLights(Scene& scene) {
+    Bounds3f bounds = scene.aggregate->Bounds();
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        scene.lights[i].Preprocess(bounds);
+        if (scene.lights[i].Type() == LightType::Infinite) scene.infiniteLights.push_back(int(i));
+    }
+}
+
+// The aggregate: shapes with their materials, lights and thermal emission, then instances
+void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<SceneShapes>& shapes,
+                     const std::vector<std::vector<int>>& shapeLights,
+                     const NamedTextures& textures, const SceneMaterials& materials,
+                     ThermalEmitters& emitters, Diagnostics& diag) {
+    scene.aggregate = std::make_unique<kiln::Accelerator>();
+    for (size_t i = 0; i < desc.shapes.size(); ++i) {
+        if (shapes[i].shapes.empty()) continue;
+        scene.aggregate->Add(shapes[i].shapes, shapes[i].heat.material, shapeLights[i],
+                             shapes[i].heat.emission);
+        scene.shapeCount += int(shapes[i].shapes.size());
+    }
+    std::map<std::string, int> definitionIds;
+    for (const InstanceSceneEntity& inst : desc.instances) {
+        auto it = definitionIds.find(inst.name);
+        if (it == definitionIds.end()) {
+            InstanceDefinitionSceneEntity& def = desc.instanceDefinitions.at(inst.name);
+            int id = scene.aggregate->NewInstanceDefinition();
+            for (ShapeSceneEntity& s : def.shapes) {
+                SceneShapes defShapes =
+                    CreateShapes(s, textures, materials, emitters, scene.arena, diag);
+                if (!defShapes.shapes.empty())
+                    scene.aggregate->AddToInstanceDefinition(
+                        id, defShapes.shapes, defShapes.heat.material, defShapes.heat.emission);
+            }
+            it = definitionIds.emplace(inst.name, id).first;
+        }
+        scene.aggregate->AddInstance(it->second, inst.renderFromInstance);
+    }
+    scene.aggregate->Commit();
+}
+
+// Light selection for next-event estimation (after PreprocessLights: the power of distant and
+// infinite lights depends on the scene's size)
+void CreateLightSampler(Scene& scene) {
+    switch (scene.integrator.lightSelection) {
+        case LightSelection::Power:
+            scene.lightSampler = std::make_unique<PowerLightSampler>(scene.lights);
+            break;
+        case LightSelection::Uniform:
+            scene.lightSampler =
+                std::make_unique<PowerLightSampler>(std::vector<Float>(scene.lights.size(), 1.f));
+            break;
+        case LightSelection::Area: {
+            std::vector<Float> area;
+            for (const Light& light : scene.lights)
+                area.push_back(std::visit(
+                    [](auto l) -> Float {
+                        if constexpr (requires { l->Area(); })
+                            return l->Area();
+                        else
+                            return 1;
+                    },
+                    light.Variant()));
+            scene.lightSampler = std::make_unique<PowerLightSampler>(std::move(area));
+            break;
+        }
+    }
+}
+
+// What the scene uses
+SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
+                             const std::vector<SceneShapes>& shapes) {
+    SceneFeatures f;
+    f.thermalEmission = false;
+    for (const SceneShapes& s : shapes)
+        if (s.heat.emission) {
+            f.thermalEmission = true;
+            if (!s.heat.emission->TemperatureTexture().Is<FloatConstantTexture>())
+                f.varyingTemperatures = true;
+        }
+    f.areaLights = !desc.areaLights.empty();
+    f.environmentLight = !scene.infiniteLights.empty();
+    for (const auto& [name, tex] : desc.floatTextures)
+        f.imageTextures |= tex.texName == "imagemap" || tex.texName == "heatmap";
+    for (const auto& [name, tex] : desc.spectrumTextures)
+        f.imageTextures |= tex.texName == "imagemap";
+    auto dispersive = [](const ParameterDictionary& p) {
+        return p.TypeOf("eta") == "spectrum" && p.GetOneString("type", "") != "conductor";
+    };
+    for (const SceneEntity& m : desc.materials)
+        f.dispersion |= m.name != "conductor" && dispersive(m.parameters);
+    for (const auto& [name, m] : desc.namedMaterials) f.dispersion |= dispersive(m.parameters);
+    f.aovs = scene.film->UsesVisibleSurface();
+    return f;
+}
+
+}  // namespace
+
+std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverrides& overrides,
+                                     Diagnostics& diag) {
+    std::unique_ptr<Scene> scene(new Scene());
+    CreateCameraAndFilm(*scene, desc, overrides, diag);
+    NamedTextures& textures = CreateTextures(desc, overrides, *scene, diag);
+    SceneMaterials materials = CreateMaterials(desc, textures, scene->arena, diag);
+    scene->emissivityTables = std::make_unique<EmissivityTables>();
+    ThermalEmitters emitters(*scene->shader, *scene->emissivityTables, scene->arena, diag,
+                             overrides.emission);
+    std::vector<SceneShapes> shapes;
+    for (ShapeSceneEntity& s : desc.shapes)
+        shapes.push_back(CreateShapes(s, textures, materials, emitters, scene->arena, diag));
+    std::vector<std::vector<int>> shapeLights = CreateLights(*scene, desc, shapes, emitters, diag);
+    CreateAggregate(*scene, desc, shapes, shapeLights, textures, materials, emitters, diag);
+    PreprocessLights(*scene);
+    CreateLightSampler(*scene);
+    scene->features = DecideFeatures(*scene, desc, shapes);
+    if (scene->lights.empty() && !scene->features.thermalEmission)
+        diag.Warn(FileLoc(), "the scene has no lights; the image will be black");
+    return scene;
+}
+
+}  // namespace kiln

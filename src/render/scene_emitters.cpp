@@ -1,0 +1,139 @@
+#include "render/scene_emitters.h"
+
+#include <tbb/parallel_for.h>
+
+#include "core/geometry/triangle.h"
+#include "lights/thermal_area_light.h"
+#include "materials/materials.h"
+#include "textures/basic_textures.h"
+#include "textures/temperature_textures.h"
+#include "textures/texture_parameter_dictionary.h"
+
+namespace kiln {
+
+namespace {
+
+// A material's heat; a mix material without its own takes its first hot component's.
+ThermalProperties MaterialHeat(const Material& m) {
+    const ThermalProperties& own = m.Thermal();
+    if (own.temperature) return own;
+    if (const MixMaterial* mix = m.GetIf<MixMaterial>())
+        for (int i = 0; i < 2; ++i) {
+            ThermalProperties c = MaterialHeat(mix->GetMaterial(i));
+            if (c.temperature) {
+                if (own.model) c.model = own.model;
+                return c;
+            }
+        }
+    return own;
+}
+
+}  // namespace
+
+ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalProperties& own,
+                                const Material* material, std::span<const Shape> shapes,
+                                bool hasAreaLight) {
+    ShapeHeat heat;
+    heat.material = material;
+    ThermalProperties fromMaterial = material ? MaterialHeat(*material) : ThermalProperties{};
+    std::optional<FloatTexture> temperature =
+        own.temperature ? own.temperature : fromMaterial.temperature;
+    // Per-vertex temperatures of a mesh (PLY vertex property or one value per vertex)
+    if (!temperature && !shapes.empty())
+        if (const Triangle* tri = shapes.front().Get<Triangle>();
+            tri && tri->GetMesh()->HasAttribute("temperature"))
+            temperature = FloatTexture(arena.New<VertexAttributeTexture>("temperature", 0.f));
+    if (!temperature) return heat;
+    EmissionModel model =
+        overrideModel ? *overrideModel
+                      : own.model.value_or(fromMaterial.model.value_or(EmissionModel::Kirchhoff));
+    if (model == EmissionModel::None) return heat;
+    if (hasAreaLight) {
+        diag.Warn(entity.loc,
+                  "shape has both an AreaLightSource and a temperature; the area "
+                  "light is used");
+        return heat;
+    }
+    if (!material || material->IsInterface()) {
+        diag.Warn(entity.loc,
+                  "a shape with the interface material has no surface to glow; its "
+                  "temperature is ignored");
+        return heat;
+    }
+#if KILN_THERMAL_EMISSION
+    // Approach A: a black surface that only emits
+    if (model == EmissionModel::Diffuse) heat.material = Black();
+    const MaterialAlbedo* albedo =
+        model == EmissionModel::Kirchhoff ? AlbedoOf(heat.material, entity.loc) : nullptr;
+    heat.emission = arena.New<ThermalEmission>(*temperature, model, albedo);
+#else
+    diag.Warn(entity.loc, "kiln was built without thermal emission; the shape does not glow");
+#endif
+    return heat;
+}
+
+std::vector<int> ThermalEmitters::CreateLights(std::span<const Shape> shapes, const ShapeHeat& heat,
+                                               std::vector<Light>& lights) {
+    std::vector<int> indices;
+#if KILN_THERMAL_EMISSION
+    if (!heat.emission || shapes.empty()) return indices;
+    // Uniform temperature and material: one exitance for every shape of the directive
+    std::optional<ThermalAreaLight::Uniform> uniform;
+    if (heat.emission->TemperatureTexture().Is<FloatConstantTexture>() &&
+        HasUniformParameters(*heat.material)) {
+        std::optional<ShapeSample> ss = shapes.front().SampleParametric(Point2f(0.5f, 0.5f));
+        if (ss) {
+            SurfaceInteraction si =
+                shapes.front().InteractionAt(ss->intr.p, 0, Vector3f(ss->intr.n));
+            si.material = heat.material;
+            SampledWavelengths lambda = SampledWavelengths::FromWavelength(550);
+            BSDF bsdf = shader.GetBSDF(si, lambda);
+            uniform = ThermalAreaLight::Uniform{heat.emission->VisibleExitance(si, bsdf),
+                                                heat.emission->Temperature(si)};
+        }
+    }
+    // One light per shape, built in parallel (each estimates its power), kept in shape order
+    std::vector<const ThermalAreaLight*> created(shapes.size());
+    tbb::parallel_for(size_t(0), shapes.size(), [&](size_t i) {
+        const Shape* stored = arena.New<Shape>(shapes[i]);
+        created[i] =
+            arena.New<ThermalAreaLight>(stored, heat.material, heat.emission, &shader, uniform);
+    });
+    for (const ThermalAreaLight* light : created) {
+        indices.push_back(int(lights.size()));
+        lights.push_back(Light(light));
+    }
+#else
+    (void)shapes, (void)heat, (void)lights;
+#endif
+    return indices;
+}
+
+const MaterialAlbedo* ThermalEmitters::AlbedoOf(const Material* material, const FileLoc& loc) {
+    auto it = albedos.find(material);
+    if (it != albedos.end()) return it->second;
+    const MaterialAlbedo* albedo = MaterialAlbedo::Create(*material, tables, arena);
+    if (!albedo->Exact())
+        diag.Warn(loc,
+                  "the emissivity of this hot material is approximated by a Monte Carlo "
+                  "table (a coated material with a scattering layer, textured thickness "
+                  "or conductor constants, or a dispersive coat over a conductor): "
+                  "Kirchhoff equilibrium holds to about 1 % only");
+    albedos.emplace(material, albedo);
+    return albedo;
+}
+
+const Material* ThermalEmitters::Black() {
+    if (black) return black;
+    ParsedParameter p;
+    p.type = "rgb";
+    p.name = "reflectance";
+    p.floats = {0, 0, 0};
+    ParameterDictionary dict({p}, nullptr);
+    NamedTextures none;
+    TextureParameterDictionary tp(&dict, &none);
+    black = arena.New<Material>(Material::Create("diffuse", tp, {}, FileLoc(), arena, diag));
+    return black;
+}
+
+}  // namespace kiln

@@ -1,0 +1,61 @@
+// Scene creation, thermal part: which shapes are hot, at what temperature and with which
+// emission model; their ThermalEmission (lights/thermal_emission.h) and, for shapes outside
+// object instances, their ThermalAreaLights (one per shape; for meshes one per triangle).
+//
+// A shape is hot when its own parameters, an Attribute "shape", its material (a material
+// property; a mix material without one takes its first hot component's) or a per-vertex
+// "temperature" of its mesh give it a temperature (materials/thermal_properties.h). The shape's
+// own temperature and model win over its material's; `kiln --emission` overrides every model.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "core/base/object_arena.h"
+#include "core/geometry/shape.h"
+#include "core/parser/diagnostics.h"
+#include "lights/light.h"
+#include "lights/thermal_emission.h"
+#include "materials/emissivity.h"
+#include "materials/surface_shader.h"
+#include "materials/thermal_properties.h"
+#include "render/scene_description.h"
+
+namespace kiln {
+
+// What scene creation needs to know about one Shape directive's heat.
+struct ShapeHeat {
+    const ThermalEmission* emission = nullptr;  // nullptr: cold
+    const Material* material = nullptr;         // the material to render it with
+};
+
+class ThermalEmitters {
+  public:
+    ThermalEmitters(const SurfaceShader& shader, EmissivityTables& tables, ObjectArena& arena,
+                    Diagnostics& diag, std::optional<EmissionModel> overrideModel)
+        : shader(shader), tables(tables), arena(arena), diag(diag), overrideModel(overrideModel) {}
+
+    // The heat of one shape directive: own = its thermal parameters, material = its material,
+    // shapes = what it created. A shape with an area light keeps the area light (warning).
+    ShapeHeat Heat(const ShapeSceneEntity& entity, const ThermalProperties& own,
+                   const Material* material, std::span<const Shape> shapes, bool hasAreaLight);
+    // One light per shape, appended to lights; returns their indices.
+    std::vector<int> CreateLights(std::span<const Shape> shapes, const ShapeHeat& heat,
+                                  std::vector<Light>& lights);
+
+  private:
+    const MaterialAlbedo* AlbedoOf(const Material* material, const FileLoc& loc);
+    const Material* Black();
+
+    const SurfaceShader& shader;
+    EmissivityTables& tables;
+    ObjectArena& arena;
+    Diagnostics& diag;
+    std::optional<EmissionModel> overrideModel;
+    std::map<const Material*, const MaterialAlbedo*> albedos;
+    const Material* black = nullptr;
+};
+
+}  // namespace kiln
