@@ -1,0 +1,152 @@
+// Kirchhoff equilibrium, kiln's sharpest test: inside a closed cavity whose walls and contents
+// are all at one temperature T, every direction must see exactly B(T), whatever the materials
+// and geometry, because emission is 1 - albedo of the very BSDF that scatters. Each case puts
+// one large object of the tested material (a sphere, or a low-poly triangle mesh with smooth
+// per-vertex shading normals) in front of the camera inside a closed wall (a textured diffuse
+// sphere, or a mesh with shading normals too), at 1000 K and 5000 K. The image mean must be
+// B(T) within 4 standard errors of the pixel noise (plus 1e-3 for the tables), and the test
+// renders enough samples for that to be tighter than 0.5 %.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "core/base/statistics.h"
+#include "render_test_util.h"
+#include "spectral/cie.h"
+#include "spectral/planck.h"
+
+namespace kiln {
+namespace {
+
+double BlackbodyLuminance(double T) {
+    double sum = 0;
+    for (int l = cie::kCMFLambdaMin; l <= cie::kCMFLambdaMax; ++l)
+        sum += planck_radiance(l, T) * CIE_Y(Float(l));
+    return sum / CIE_Y_integral;
+}
+
+// A closed UV sphere of triangles with per-vertex normals (inward for a wall) and uv.
+std::string MeshSphere(double r, int nu, int nv, double cx, double cy, double cz, bool inward) {
+    std::ostringstream P, N, UV, I;
+    for (int j = 0; j <= nv; ++j)
+        for (int i = 0; i <= nu; ++i) {
+            double th = Pi * j / nv, ph = 2 * Pi * i / nu;
+            double n[3] = {std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)};
+            P << cx + r * n[0] << " " << cy + r * n[1] << " " << cz + r * n[2] << " ";
+            double s = inward ? -1 : 1;
+            N << s * n[0] << " " << s * n[1] << " " << s * n[2] << " ";
+            UV << double(i) / nu << " " << double(j) / nv << " ";
+        }
+    for (int j = 0; j < nv; ++j)
+        for (int i = 0; i < nu; ++i) {
+            // Two triangles per cell, leaving out the degenerate ones at the poles
+            int a = j * (nu + 1) + i, b = a + 1, c = a + nu + 1, d = c + 1;
+            if (j > 0) {
+                if (inward)
+                    I << a << " " << b << " " << c << " ";
+                else
+                    I << a << " " << c << " " << b << " ";
+            }
+            if (j < nv - 1) {
+                if (inward)
+                    I << b << " " << d << " " << c << " ";
+                else
+                    I << b << " " << c << " " << d << " ";
+            }
+        }
+    return "Shape \"trianglemesh\" \"integer indices\" [" + I.str() + "] \"point3 P\" [" + P.str() +
+           "] \"normal N\" [" + N.str() + "] \"point2 uv\" [" + UV.str() + "]\n";
+}
+
+struct Case {
+    const char* name;
+    const char* material;
+};
+
+std::string Cavity(const Case& c, bool meshes, double T, int spp) {
+    std::ostringstream s;
+    s << "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 24\n"
+      << "Sampler \"zsobol\" \"integer pixelsamples\" " << spp << "\n"
+      << "Integrator \"path\" \"integer maxdepth\" 500\n"
+      << "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
+      << "WorldBegin\n"
+      << "Attribute \"shape\" \"float temperature\" " << T << "\n"
+      << "Texture \"checks\" \"spectrum\" \"checkerboard\" \"float uscale\" 8 \"float vscale\" 8"
+         " \"rgb tex1\" [0.9 0.8 0.7] \"rgb tex2\" [0.1 0.2 0.05]\n"
+      << "Texture \"rough\" \"float\" \"checkerboard\" \"float uscale\" 6 \"float vscale\" 6"
+         " \"float tex1\" 0.001 \"float tex2\" 0.5\n"
+      << "MakeNamedMaterial \"gold\" \"string type\" \"conductor\" \"spectrum eta\" "
+         "\"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\" \"float roughness\" 0.05\n"
+      << "MakeNamedMaterial \"checks\" \"string type\" \"diffuse\" \"texture reflectance\" "
+         "\"checks\"\n"
+      << "NamedMaterial \"checks\"\n"
+      << (meshes ? MeshSphere(6, 12, 8, 0, 0, 0, true) : "Shape \"sphere\" \"float radius\" 6\n")
+      << "Material " << c.material << "\n"
+      << (meshes ? MeshSphere(1.2, 10, 6, 0, 0, 0.3, false)
+                 : "AttributeBegin Translate 0 0 0.3 Shape \"sphere\" \"float radius\" 1.2 "
+                   "AttributeEnd\n");
+    return s.str();
+}
+
+class Equilibrium : public ::testing::TestWithParam<std::tuple<Case, bool>> {};
+
+TEST_P(Equilibrium, CavityRendersTheBlackbody) {
+    auto [c, meshes] = GetParam();
+    for (double T : {1000.0, 5000.0}) {
+        SCOPED_TRACE(T);
+        const double B = BlackbodyLuminance(T);
+        testing::RenderedScene r = testing::RenderText(Cavity(c, meshes, T, 256));
+        for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
+        RunningStats s;
+        Bounds2i b = r.scene->film->PixelBounds();
+        for (int y = b.pMin.y; y < b.pMax.y; ++y)
+            for (int x = b.pMin.x; x < b.pMax.x; ++x) s.Add(testing::PixelY(*r.scene, {x, y}) / B);
+        double se = s.StandardError();
+        std::printf("%-28s %-7s %5.0f K: mean %.5f of B(T), standard error %.5f\n", c.name,
+                    meshes ? "meshes" : "spheres", T, s.Mean(), se);
+        EXPECT_LT(4 * se, 0.005);  // the test can see a 0.5 % error
+        EXPECT_NEAR(s.Mean(), 1, 4 * se + 1e-3);
+    }
+}
+
+const Case kCases[] = {
+    {"diffuse, textured", "\"diffuse\" \"texture reflectance\" \"checks\""},
+    {"gold, roughness 0.001",
+     "\"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" "
+     "\"metal-Au-k\" \"float roughness\" 0.001"},
+    {"copper, roughness 0.01",
+     "\"conductor\" \"spectrum eta\" \"metal-Cu-eta\" \"spectrum k\" "
+     "\"metal-Cu-k\" \"float roughness\" 0.01"},
+    {"silver, roughness 0.1",
+     "\"conductor\" \"spectrum eta\" \"metal-Ag-eta\" \"spectrum k\" "
+     "\"metal-Ag-k\" \"float roughness\" 0.1"},
+    {"platinum, roughness 1",
+     "\"conductor\" \"spectrum eta\" \"metal-Pt-eta\" \"spectrum k\" "
+     "\"metal-Pt-k\" \"float roughness\" 1"},
+    {"gold, textured roughness",
+     "\"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" "
+     "\"metal-Au-k\" \"texture roughness\" \"rough\""},
+    {"coateddiffuse, textured",
+     "\"coateddiffuse\" \"texture reflectance\" \"checks\" "
+     "\"texture roughness\" \"rough\""},
+    {"coatedconductor",
+     "\"coatedconductor\" \"float interface.roughness\" 0.05 "
+     "\"float conductor.roughness\" 0.2"},
+    {"mix gold/diffuse",
+     "\"mix\" \"string materials\" [\"gold\" \"checks\"] "
+     "\"float amount\" 0.4"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Cavities, Equilibrium,
+                         ::testing::Combine(::testing::ValuesIn(kCases), ::testing::Bool()),
+                         [](const auto& info) {
+                             std::string n = std::get<0>(info.param).name;
+                             std::string id;
+                             for (char ch : n)
+                                 if (std::isalnum(static_cast<unsigned char>(ch))) id += ch;
+                             return id + (std::get<1>(info.param) ? "_Meshes" : "_Spheres");
+                         });
+
+}  // namespace
+}  // namespace kiln
