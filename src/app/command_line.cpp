@@ -74,7 +74,8 @@ std::string UsageText() {
            "  --frames A-B          render frames A..B of an animation (time = frame / fps);\n"
            "                        '#'s in -o are replaced by the frame number (####: 0007)\n"
            "  --fps F               frames per second for --frames (default 24)\n"
-           "  --light-sampler S     how lights are picked: power (default), uniform, area\n"
+           "  --light-sampler S     how lights are picked: bvh (default), power, uniform,\n"
+           "                        area\n"
            "  --exposure EV|auto    exposure change in stops, or automatic (the 99th\n"
            "                        percentile luminance goes to 0.9; film \"autoexposure\")\n"
            "  --strategy S          direct light by mis (default), light or bsdf sampling\n"
@@ -134,9 +135,9 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
                     *o.emission + "'");
         } else if (a == "--light-sampler") {
             o.lightSampler = value();
-            if (*o.lightSampler != "power" && *o.lightSampler != "uniform" &&
-                *o.lightSampler != "area")
-                throw std::invalid_argument("--light-sampler expects power, uniform or area");
+            if (*o.lightSampler != "bvh" && *o.lightSampler != "power" &&
+                *o.lightSampler != "uniform" && *o.lightSampler != "area")
+                throw std::invalid_argument("--light-sampler expects bvh, power, uniform or area");
         } else if (a == "--strategy") {
             o.strategy = value();
             if (*o.strategy != "mis" && *o.strategy != "light" && *o.strategy != "bsdf")

@@ -22,6 +22,7 @@
 #include "lights/diffuse_area_light.h"
 #include "lights/distant_light.h"
 #include "lights/image_infinite_light.h"
+#include "lights/light_bounds.h"
 #include "lights/light_sample.h"
 #include "lights/point_light.h"
 #include "lights/spot_light.h"
@@ -99,6 +100,12 @@ class Light {
             },
             kind);
     }
+    // The light's weight for light selection: its power over 360-830 nm, W (pbrt-v4: Phi /
+    // pdf averaged over the four wavelengths SampleVisible(0.5) gives); 0 if not finite.
+    Float Power() const;
+    // Spatial and directional bounds of the emission (lights at infinity: none), with phi =
+    // Power().
+    std::optional<LightBounds> Bounds() const;
     // Tells distant and infinite lights the scene's extent (call before Phi and SampleLi).
     void Preprocess(const Bounds3f& sceneBounds) const {
         std::visit([&](auto l) { l->Preprocess(sceneBounds); }, kind);

@@ -44,4 +44,10 @@ struct LightLiSample {
     Interaction pLight;
 };
 
+// A light chosen by a light sampler, by its index in the scene's light list.
+struct SampledLight {
+    int index;
+    Float p;  // probability of choosing this light
+};
+
 }  // namespace kiln

@@ -17,16 +17,10 @@ Float UniformLightSampler::PMF(int index) const {
 }
 
 // PowerLightSampler
-Float PowerLightSampler::Power(const Light& light) {
-    SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.5f);
-    Float p = SafeDiv(light.Phi(lambda), lambda.PDF()).Average();
-    return std::isfinite(p) && p > 0 ? p : 0;
-}
-
 PowerLightSampler::PowerLightSampler(std::span<const Light> lights) {
     std::vector<Float> power;
     power.reserve(lights.size());
-    for (const Light& light : lights) power.push_back(Power(light));
+    for (const Light& light : lights) power.push_back(light.Power());
     *this = PowerLightSampler(std::move(power));
 }
 

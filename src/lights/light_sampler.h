@@ -4,18 +4,14 @@
 
 #include <optional>
 #include <span>
+#include <variant>
 #include <vector>
 
 #include "core/base/sampling.h"
+#include "lights/bvh_light_sampler.h"
 #include "lights/light.h"
 
 namespace kiln {
-
-// A light chosen by index into the list the sampler was built for.
-struct SampledLight {
-    int index;
-    Float p;  // probability of choosing this light
-};
 
 // Every light with probability 1 / n.
 class UniformLightSampler {
@@ -34,7 +30,7 @@ class UniformLightSampler {
     int count;
 };
 
-// Probability proportional to emitted power averaged over the visible wavelengths (pbrt-v4:
+// Probability proportional to emitted power over the visible wavelengths (Light::Power; pbrt-v4:
 // Phi / pdf at the 4 wavelengths SampleVisible(0.5) gives); uniform if every light has zero
 // power. Sampling is O(1) through an alias table. Distant and infinite lights must have been
 // preprocessed before the sampler is built (their power depends on the scene's size).
@@ -53,12 +49,28 @@ class PowerLightSampler {
     Float PMF(int index) const;
     Float PMF(const LightSampleContext&, int index) const { return PMF(index); }
 
-    // A light's selection weight: its power over 360-830 nm (pbrt-v4: Phi / pdf averaged over
-    // the four wavelengths SampleVisible(0.5) gives), 0 if not finite.
-    static Float Power(const Light& light);
-
   private:
     AliasTable aliasTable;
+};
+
+// The light sampler a scene uses (closed set): pbrt-v4's "bvh" (default), "power" and
+// "uniform", and kiln's "area" (a PowerLightSampler over the lights' areas).
+class LightSampler {
+  public:
+    using Kind = std::variant<BVHLightSampler, PowerLightSampler, UniformLightSampler>;
+    template <typename T>
+    explicit LightSampler(T sampler) : kind(std::move(sampler)) {}
+
+    std::optional<SampledLight> Sample(const LightSampleContext& ctx, Float u) const {
+        return std::visit([&](const auto& s) { return s.Sample(ctx, u); }, kind);
+    }
+    Float PMF(const LightSampleContext& ctx, int index) const {
+        return std::visit([&](const auto& s) { return s.PMF(ctx, index); }, kind);
+    }
+    const Kind& Variant() const { return kind; }
+
+  private:
+    Kind kind;
 };
 
 }  // namespace kiln

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/base/transform.h"
+#include "lights/light_bounds.h"
 #include "lights/light_sample.h"
 #include "spectral/spectrum.h"
 
@@ -29,6 +30,12 @@ class SpotLight {
     // scale I 2 pi ((1 - cos start) + (cos start - cos end) / 2), W nm^-1.
     SampledSpectrum Phi(const SampledWavelengths& lambda) const;
     void Preprocess(const Bounds3f&) const {}
+    // Its position, spot axis and cone (phi left 0: Light::Bounds fills it in).
+    LightBounds Bounds() const {
+        Vector3f w = Normalize(renderFromLight(Vector3f(0, 0, 1)));
+        Float cosThetaE = std::cos(SafeACos(cosFalloffEnd) - SafeACos(cosFalloffStart));
+        return LightBounds(Bounds3f(position), w, 0, cosFalloffStart, cosThetaE, false);
+    }
 
     // The solid-angle factor of Phi: 2 pi ((1 - cos start) + (cos start - cos end) / 2), sr.
     static Float ConeSolidAngle(Float cosFalloffStart, Float cosFalloffEnd);

@@ -47,15 +47,16 @@ struct SceneOverrides {
 // two alone (kiln's Integrator "path" "string strategy" "mis" | "light" | "bsdf", for
 // comparisons and tests; all three converge to the same image).
 enum class LightStrategy { MIS, LightOnly, BSDFOnly };
-// How next-event estimation picks a light: by emitted power (pbrt-v4's "power"), uniformly
-// ("uniform"), or in proportion to area (kiln's "area": area lights by area, others weigh 1).
-enum class LightSelection { Power, Uniform, Area };
+// How next-event estimation picks a light (Integrator "string lightsampler"): pbrt-v4's "bvh"
+// (default: a light BVH, by importance at the receiving point), "power" (by emitted power) and
+// "uniform", and kiln's "area" (area lights by area, others weigh 1).
+enum class LightSelection { BVH, Power, Uniform, Area };
 
 struct PathIntegratorSettings {
     int maxDepth = 5;         // pbrt-v4 "maxdepth"
     bool regularize = false;  // pbrt-v4 "regularize"
     LightStrategy strategy = LightStrategy::MIS;
-    LightSelection lightSelection = LightSelection::Power;
+    LightSelection lightSelection = LightSelection::BVH;
     // kiln "integer wavelengths": 4 (hero wavelength sampling, default) or 1.
     bool singleWavelength = false;
 };
@@ -118,7 +119,7 @@ class Scene {
     std::unique_ptr<kiln::Accelerator> aggregate;
     std::vector<Light> lights;        // identified by index (SurfaceInteraction::lightIndex)
     std::vector<int> infiniteLights;  // indices into lights
-    std::unique_ptr<PowerLightSampler> lightSampler;
+    std::unique_ptr<LightSampler> lightSampler;
     PathIntegratorSettings integrator;
     bool disablePixelJitter = false;
     bool autoExposure = false;  // film "bool autoexposure" (kiln): see auto_exposure.h

@@ -46,13 +46,19 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, bool given, Diag
         throw SceneError(e.parameters.Loc("strategy"),
                          "unknown strategy (expected \"mis\", \"light\" or \"bsdf\")", strategy);
     std::string ls = e.parameters.GetOneString("lightsampler", "bvh");
-    if (ls == "uniform")
+    if (ls == "bvh")
+        s.lightSelection = LightSelection::BVH;
+    else if (ls == "power")
+        s.lightSelection = LightSelection::Power;
+    else if (ls == "uniform")
         s.lightSelection = LightSelection::Uniform;
     else if (ls == "area")
         s.lightSelection = LightSelection::Area;
-    else if (ls != "bvh" && ls != "power")
-        diag.Warn(e.parameters.Loc("lightsampler"),
-                  "light sampler \"" + ls + "\" is not supported; using \"power\"");
+    else
+        throw SceneError(e.parameters.Loc("lightsampler"),
+                         "unknown light sampler (expected \"bvh\", \"power\", \"uniform\" or "
+                         "\"area\")",
+                         ls);
     return s;
 }
 
@@ -310,12 +316,15 @@ void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<Sce
 // infinite lights depends on the scene's size)
 void CreateLightSampler(Scene& scene) {
     switch (scene.integrator.lightSelection) {
+        case LightSelection::BVH:
+            scene.lightSampler = std::make_unique<LightSampler>(BVHLightSampler(scene.lights));
+            break;
         case LightSelection::Power:
-            scene.lightSampler = std::make_unique<PowerLightSampler>(scene.lights);
+            scene.lightSampler = std::make_unique<LightSampler>(PowerLightSampler(scene.lights));
             break;
         case LightSelection::Uniform:
             scene.lightSampler =
-                std::make_unique<PowerLightSampler>(std::vector<Float>(scene.lights.size(), 1.f));
+                std::make_unique<LightSampler>(UniformLightSampler(scene.lights.size()));
             break;
         case LightSelection::Area: {
             std::vector<Float> area;
@@ -328,7 +337,7 @@ void CreateLightSampler(Scene& scene) {
                             return 1;
                     },
                     light.Variant()));
-            scene.lightSampler = std::make_unique<PowerLightSampler>(std::move(area));
+            scene.lightSampler = std::make_unique<LightSampler>(PowerLightSampler(std::move(area)));
             break;
         }
     }

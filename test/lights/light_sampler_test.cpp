@@ -77,3 +77,45 @@ TEST(UniformLightSampler, Uniform) {
     EXPECT_TRUE(r.passed) << r.message;
     EXPECT_FALSE(UniformLightSampler(0).Sample(0.5f).has_value());
 }
+
+// BVHLightSampler: at receiving points near and far from a field of lights of very different
+// power, the lights it draws follow the probabilities PMF reports (chi-square), those sum to
+// one, zero-power lights are never drawn, and lights at infinity get n_inf / (n_inf + 1).
+TEST(BVHLightSampler, SamplesFollowThePMFAtEveryReceiver) {
+    std::vector<PointLight> points;
+    RNG rng(3);
+    for (int i = 0; i < 40; ++i) {
+        Point3f p(8 * rng.UniformFloat(), 8 * rng.UniformFloat(), rng.UniformFloat());
+        Float I = i == 7 ? 0.f : std::pow(10.f, 3 * rng.UniformFloat());
+        points.emplace_back(Translate(Vector3f(p)), Spectrum(ConstantSpectrum(I)), 1);
+    }
+    SpotLight spot(Translate(Vector3f(4, 4, 3)), Spectrum(ConstantSpectrum(50)), 1, 30, 20);
+    DistantLight distant(Transform(), Spectrum(ConstantSpectrum(0.1f)), 1);
+    std::vector<Light> lights;
+    for (const PointLight& p : points) lights.push_back(Light(&p));
+    lights.push_back(Light(&spot));
+    lights.push_back(Light(&distant));
+    for (const Light& l : lights) l.Preprocess(Bounds3f(Point3f(0, 0, 0), Point3f(8, 8, 3)));
+    BVHLightSampler sampler(lights);
+    for (Point3f p : {Point3f(1, 1, 0.5f), Point3f(4, 4, -2), Point3f(30, -5, 10)}) {
+        SCOPED_TRACE(p.x);
+        LightSampleContext ctx(p, Normal3f(0, 0, 1), Normal3f(0, 0, 1));
+        double sum = 0;
+        for (size_t i = 0; i < lights.size(); ++i) sum += sampler.PMF(ctx, int(i));
+        EXPECT_NEAR(sum, 1, 1e-4);
+        EXPECT_EQ(sampler.PMF(ctx, 7), 0);                                // zero power
+        EXPECT_FLOAT_EQ(sampler.PMF(ctx, int(lights.size()) - 1), 0.5f);  // one infinite light
+        std::vector<double> observed(lights.size(), 0), expected(lights.size(), 0);
+        const int n = 200000;
+        RNG r(11);
+        for (int k = 0; k < n; ++k) {
+            std::optional<SampledLight> s = sampler.Sample(ctx, r.UniformFloat());
+            if (!s) continue;
+            EXPECT_NEAR(s->p, sampler.PMF(ctx, s->index), 1e-5f * s->p);
+            observed[size_t(s->index)] += 1;
+        }
+        for (size_t i = 0; i < lights.size(); ++i) expected[i] = n * sampler.PMF(ctx, int(i));
+        ChiSquareResult chi = ChiSquareTest(observed, expected, 0.01, 3);
+        EXPECT_TRUE(chi.passed) << chi.message;
+    }
+}

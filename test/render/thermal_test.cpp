@@ -305,6 +305,7 @@ TEST(ThermalTest, PowerSamplerDrawsHotTrianglesWithTheReportedProbability) {
         }
     std::string text =
         "Film \"rgb\" \"integer xresolution\" 4 \"integer yresolution\" 4\n"
+        "Integrator \"path\" \"string lightsampler\" \"power\"\n"
         "WorldBegin\nShape \"trianglemesh\" \"integer indices\" [" +
         idx.str() + "] \"point3 P\" [" + P.str() + "] \"float temperature\" [" + T.str() + "]\n";
     Diagnostics diag(nullptr);
@@ -313,18 +314,19 @@ TEST(ThermalTest, PowerSamplerDrawsHotTrianglesWithTheReportedProbability) {
     ASSERT_EQ(scene->thermalEmitterCount, 32);
     std::vector<double> observed(32, 0), expected(32, 0);
     const int n = 200000;
+    LightSampleContext ctx;  // the power sampler ignores the receiving point
     RNG rng(7);
     for (int k = 0; k < n; ++k) {
-        std::optional<SampledLight> sl = scene->lightSampler->Sample(rng.UniformFloat());
+        std::optional<SampledLight> sl = scene->lightSampler->Sample(ctx, rng.UniformFloat());
         ASSERT_TRUE(sl);
         size_t i = size_t(sl->index);
         ASSERT_LT(i, 32u);
-        EXPECT_FLOAT_EQ(sl->p, scene->lightSampler->PMF(sl->index));
+        EXPECT_FLOAT_EQ(sl->p, scene->lightSampler->PMF(ctx, sl->index));
         observed[i] += 1;
     }
     double pmfSum = 0, hotPmf = 0, coolPmf = 1;
     for (size_t i = 0; i < 32; ++i) {
-        double pmf = scene->lightSampler->PMF(int(i));
+        double pmf = scene->lightSampler->PMF(ctx, int(i));
         expected[i] = pmf * n;
         pmfSum += pmf;
         hotPmf = std::max(hotPmf, pmf);

@@ -1,5 +1,7 @@
 #include "core/geometry/shape.h"
 
+#include "core/geometry/shape_util.h"
+
 namespace kiln {
 
 // Shape dispatch
@@ -29,6 +31,18 @@ std::optional<ShapeSample> Shape::SampleParametric(Point2f u) const {
 }
 Point2f Shape::InvertParametric(Point3f p) const {
     return Dispatch([&](auto s) { return s->InvertParametric(p); });
+}
+std::pair<Vector3f, Float> Shape::NormalBounds() const {
+    constexpr std::pair<Vector3f, Float> all = {Vector3f(0, 0, 1), -1};
+    if (const Triangle* t = Get<Triangle>()) {
+        Interaction c = t->PointAt({1.f / 3, 1.f / 3, 1.f / 3}, 0);
+        return {Vector3f(c.n), 1};
+    }
+    if (const Disk* d = Get<Disk>()) {
+        Normal3f n = SafeNormalize((*d->renderFromObject)(Normal3f(0, 0, 1)));
+        return {Vector3f(d->reverseOrientation ? -n : n), 1};
+    }
+    return all;  // curved surfaces
 }
 std::optional<ShapeIntersection> Shape::Intersect(const Ray& ray, Float tMax) const {
     return Dispatch([&](auto s) { return s->Intersect(ray, tMax); });

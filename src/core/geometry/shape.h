@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -48,6 +49,9 @@ class Shape {
     // (per unit area) that a uniform u gives it, and the parameter of a point on the surface.
     std::optional<ShapeSample> SampleParametric(Point2f u) const;
     Point2f InvertParametric(Point3f p) const;
+    // The directions of the surface normals (w, cos of the spread; cos -1: all directions), for
+    // light bounds (pbrt-v4's Shape::NormalBounds).
+    std::pair<Vector3f, Float> NormalBounds() const;
     // tMax in the parametric units of ray (ray.d need not be unit).
     std::optional<ShapeIntersection> Intersect(const Ray& ray, Float tMax = Infinity) const;
     bool IntersectP(const Ray& ray, Float tMax = Infinity) const;
