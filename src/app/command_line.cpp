@@ -78,6 +78,9 @@ std::string UsageText() {
            "                        area\n"
            "  --exposure EV|auto    exposure change in stops, or automatic (the 99th\n"
            "                        percentile luminance goes to 0.9; film \"autoexposure\")\n"
+           "  --emitter-sampling S  points on a hot shape whose emission varies over it: in\n"
+           "                        proportion to power (default) or by the shape's own\n"
+           "                        sampling (shape)\n"
            "  --strategy S          direct light by mis (default), light or bsdf sampling\n"
            "  --wavelengths N       wavelengths per path: 4 (hero, default) or 1\n"
            "  --view NAME           display view for PNG/JPEG/TIFF outputs: Standard, Filmic,\n"
@@ -138,6 +141,10 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             if (*o.lightSampler != "bvh" && *o.lightSampler != "power" &&
                 *o.lightSampler != "uniform" && *o.lightSampler != "area")
                 throw std::invalid_argument("--light-sampler expects bvh, power, uniform or area");
+        } else if (a == "--emitter-sampling") {
+            o.emitterSampling = value();
+            if (*o.emitterSampling != "power" && *o.emitterSampling != "shape")
+                throw std::invalid_argument("--emitter-sampling expects power or shape");
         } else if (a == "--strategy") {
             o.strategy = value();
             if (*o.strategy != "mis" && *o.strategy != "light" && *o.strategy != "bsdf")
@@ -211,6 +218,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
         };
         if (options.lightSampler) setString("lightsampler", *options.lightSampler);
         if (options.strategy) setString("strategy", *options.strategy);
+        if (options.emitterSampling) setString("emittersampling", *options.emitterSampling);
         if (options.wavelengths) {
             ParsedParameter p;
             p.type = "integer";

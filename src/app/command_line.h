@@ -20,10 +20,11 @@ struct CommandLineOptions {
     bool quiet = false;
     bool verbose = false;
     std::string view;  // display view override for PNG/JPEG/... outputs ("" = the film's)
-    std::optional<std::string> exposure;      // EV stops added to the film's, or "auto"
-    std::optional<std::string> lightSampler;  // bvh | power | uniform | area
-    std::optional<std::string> strategy;      // mis | light | bsdf
-    std::optional<int> wavelengths;           // 1 | 4
+    std::optional<std::string> exposure;         // EV stops added to the film's, or "auto"
+    std::optional<std::string> lightSampler;     // bvh | power | uniform | area
+    std::optional<std::string> strategy;         // mis | light | bsdf
+    std::optional<std::string> emitterSampling;  // power | shape
+    std::optional<int> wavelengths;              // 1 | 4
     bool help = false, version = false;
 };
 

@@ -36,7 +36,7 @@ SurfaceInteraction ThermalAreaLight::InteractionAt(Point3f p, Float time, Vector
 
 ThermalAreaLight::ThermalAreaLight(const Shape* shape, const Material* material,
                                    const ThermalEmission* emission, const SurfaceShader* shader,
-                                   std::optional<Uniform> uniform)
+                                   std::optional<Uniform> uniform, bool powerSampling)
     : shape(shape), material(material), emission(emission), shader(shader) {
     area = shape->Area();
     if (!(area > 0)) return;
@@ -81,7 +81,8 @@ ThermalAreaLight::ThermalAreaLight(const Shape* shape, const Material* material,
     const Triangle* tri = shape->Get<Triangle>();
     Grid g = evaluate(tri ? kTriangleProbe : kQuadricProbe);
     bool varies = !(g.hi <= 1.05f * g.lo);
-    bool mayDistribute = !tri || tri->GetMesh()->NumTriangles() <= kMaxDistributionTriangles;
+    bool mayDistribute =
+        powerSampling && (!tri || tri->GetMesh()->NumTriangles() <= kMaxDistributionTriangles);
     if (varies && mayDistribute) {
         g = evaluate(tri ? kTriangleGrid : kQuadricGrid);
         if (g.power > 0) distribution.emplace(g.cells, g.n, g.n);

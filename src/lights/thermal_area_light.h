@@ -34,10 +34,11 @@ class ThermalAreaLight {
         Float exitance, temperature;
     };
     // shape, material (the shape's), emission and shader must outlive the light. Estimates
-    // the light's power and, where it varies over the shape, builds the sampling distribution;
-    // with `uniform` given, takes the caller's exitance instead.
+    // the light's power and, where it varies over the shape and powerSampling is set, builds
+    // the sampling distribution; with `uniform` given, takes the caller's exitance instead.
     ThermalAreaLight(const Shape* shape, const Material* material, const ThermalEmission* emission,
-                     const SurfaceShader* shader, std::optional<Uniform> uniform = std::nullopt);
+                     const SurfaceShader* shader, std::optional<Uniform> uniform = std::nullopt,
+                     bool powerSampling = true);
 
     LightType Type() const { return LightType::Area; }
     const ThermalEmission& Emission() const { return *emission; }

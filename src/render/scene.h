@@ -59,6 +59,10 @@ struct PathIntegratorSettings {
     LightSelection lightSelection = LightSelection::BVH;
     // kiln "integer wavelengths": 4 (hero wavelength sampling, default) or 1.
     bool singleWavelength = false;
+    // kiln "string emittersampling": points on hot shapes whose emission varies over them are
+    // sampled in proportion to power ("power", default) or by the shape's own sampling
+    // ("shape", for comparisons).
+    bool emitterPowerSampling = true;
 };
 
 // What a scene uses, decided at load (kiln --verbose prints it).

@@ -45,6 +45,11 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, bool given, Diag
     else
         throw SceneError(e.parameters.Loc("strategy"),
                          "unknown strategy (expected \"mis\", \"light\" or \"bsdf\")", strategy);
+    std::string es = e.parameters.GetOneString("emittersampling", "power");
+    if (es != "power" && es != "shape")
+        throw SceneError(e.parameters.Loc("emittersampling"),
+                         "unknown emitter sampling (expected \"power\" or \"shape\")", es);
+    s.emitterPowerSampling = es == "power";
     std::string ls = e.parameters.GetOneString("lightsampler", "bvh");
     if (ls == "bvh")
         s.lightSelection = LightSelection::BVH;
@@ -380,7 +385,7 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
     SceneMaterials materials = CreateMaterials(desc, textures, scene->arena, diag);
     scene->emissivityTables = std::make_unique<EmissivityTables>();
     ThermalEmitters emitters(*scene->shader, *scene->emissivityTables, scene->arena, diag,
-                             overrides.emission);
+                             overrides.emission, scene->integrator.emitterPowerSampling);
     std::vector<SceneShapes> shapes;
     for (ShapeSceneEntity& s : desc.shapes)
         shapes.push_back(CreateShapes(s, textures, materials, emitters, scene->arena, diag));

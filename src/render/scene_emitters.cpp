@@ -96,8 +96,8 @@ std::vector<int> ThermalEmitters::CreateLights(std::span<const Shape> shapes, co
     std::vector<const ThermalAreaLight*> created(shapes.size());
     tbb::parallel_for(size_t(0), shapes.size(), [&](size_t i) {
         const Shape* stored = arena.New<Shape>(shapes[i]);
-        created[i] =
-            arena.New<ThermalAreaLight>(stored, heat.material, heat.emission, &shader, uniform);
+        created[i] = arena.New<ThermalAreaLight>(stored, heat.material, heat.emission, &shader,
+                                                 uniform, powerSampling);
     });
     for (const ThermalAreaLight* light : created) {
         indices.push_back(int(lights.size()));

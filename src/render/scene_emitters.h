@@ -33,9 +33,16 @@ struct ShapeHeat {
 
 class ThermalEmitters {
   public:
+    // powerSampling: sample points on shapes whose emission varies over them by power.
     ThermalEmitters(const SurfaceShader& shader, EmissivityTables& tables, ObjectArena& arena,
-                    Diagnostics& diag, std::optional<EmissionModel> overrideModel)
-        : shader(shader), tables(tables), arena(arena), diag(diag), overrideModel(overrideModel) {}
+                    Diagnostics& diag, std::optional<EmissionModel> overrideModel,
+                    bool powerSampling = true)
+        : shader(shader),
+          tables(tables),
+          arena(arena),
+          diag(diag),
+          overrideModel(overrideModel),
+          powerSampling(powerSampling) {}
 
     // The heat of one shape directive: own = its thermal parameters, material = its material,
     // shapes = what it created. A shape with an area light keeps the area light (warning).
@@ -54,6 +61,7 @@ class ThermalEmitters {
     ObjectArena& arena;
     Diagnostics& diag;
     std::optional<EmissionModel> overrideModel;
+    bool powerSampling;
     std::map<const Material*, const MaterialAlbedo*> albedos;
     const Material* black = nullptr;
 };

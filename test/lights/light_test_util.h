@@ -58,7 +58,8 @@ inline ParsedParameter StringParam(const std::string& name, const std::string& s
 // Samples directions with `sample` (nullopt counts as a sample that fell nowhere), bins them
 // by (1 - cos theta, phi) about `axis` for cos theta in [cosMax, 1], and compares the counts with
 // `pdf` (per sr) integrated over each bin on a sub x sub midpoint grid. Also checks that the
-// pdf each sample reports equals pdf(w).
+// pdf each sample reports equals pdf(w), allowing maxMismatchFraction of the samples to differ
+// (piecewise-constant densities jump across cell edges, which rounding may straddle).
 struct DirectionSample {
     Vector3f w;
     Float pdf;
@@ -66,7 +67,7 @@ struct DirectionSample {
 inline ChiSquareResult DirectionChiSquare(
     const std::function<std::optional<DirectionSample>(Point2f)>& sample,
     const std::function<Float(Vector3f)>& pdf, Vector3f axis, Float cosMax, int nSamples,
-    int numTests, int nCos = 16, int nPhi = 32, int sub = 32) {
+    int numTests, int nCos = 16, int nPhi = 32, int sub = 32, double maxMismatchFraction = 1e-4) {
     Frame frame = Frame::FromZ(Normalize(axis));
     std::vector<double> observed(nCos * nPhi, 0), expected(nCos * nPhi, 0);
     RNG rng(17);
@@ -89,7 +90,8 @@ inline ChiSquareResult DirectionChiSquare(
         int pb = std::min(nPhi - 1, int(SphericalPhi(wl) * Inv2Pi * nPhi));
         observed[cb * nPhi + pb] += 1;
     }
-    EXPECT_LE(pdfMismatches, nSamples / 10000) << "sample pdfs disagree with PDF_Li";
+    EXPECT_LE(pdfMismatches, int(nSamples * maxMismatchFraction))
+        << "sample pdfs disagree with PDF_Li";
     EXPECT_EQ(outside, 0) << "samples outside the tested cone";
     double dz = (1 - cosMax) / nCos, dphi = 2 * Pi / nPhi;
     for (int cb = 0; cb < nCos; ++cb)

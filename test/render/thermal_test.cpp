@@ -5,8 +5,10 @@
 
 #include <cmath>
 
+#include "../lights/light_test_util.h"
 #include "core/base/rng.h"
 #include "core/base/statistics.h"
+#include "lights/thermal_area_light.h"
 #include "render_test_util.h"
 #include "spectral/cie.h"
 #include "spectral/named_spectra.h"
@@ -337,6 +339,112 @@ TEST(ThermalTest, PowerSamplerDrawsHotTrianglesWithTheReportedProbability) {
     EXPECT_TRUE(chi.passed) << chi.message;
     // Triangles touching the 1500 K vertex emit orders of magnitude more than the 500 K ones.
     EXPECT_GT(hotPmf / coolPmf, 100);
+}
+
+}  // namespace
+}  // namespace kiln
+
+namespace kiln {
+namespace {
+
+// A hot shape whose temperature varies over it (a gradient from 500 K to 1600 K along x) is
+// sampled in proportion to its emitted power, for every shape kind: the points SampleLi draws
+// follow, over the shape's parameterisation, the area density that PDF_Li reports (converted
+// from solid angle; chi-square), each sample's pdf is PDF_Li's, the closed shapes pass the
+// same test over directions from inside, and most samples fall on the hot half, far more than
+// its share of the area.
+TEST(ThermalTest, EmittersWithVaryingTemperatureAreSampledByPower) {
+    const std::string gradient =
+        "Texture \"heat\" \"float\" \"gradient\" \"point3 p0\" [-1 0 0] \"point3 p1\" [1 0 0] "
+        "\"float t0\" 500 \"float t1\" 1600 \"string space\" \"world\"\n"
+        "Material \"diffuse\" \"rgb reflectance\" [0.3 0.3 0.3] \"texture temperature\" \"heat\"\n";
+    struct Case {
+        const char* name;
+        std::string shape;
+        bool closed;  // tested from inside, where every point is visible at a steep angle
+    };
+    const Case shapes[] = {
+        {"sphere", "Shape \"sphere\" \"float radius\" 1", true},
+        {"disk", "Shape \"disk\" \"float radius\" 1", false},
+        {"cylinder", "Shape \"cylinder\" \"float radius\" 1 \"float zmin\" -0.5 \"float zmax\" 0.5",
+         true},
+        {"bilinear patch",
+         "Shape \"bilinearmesh\" \"point3 P\" [-1 -1 0 1 -1 0 -1 1 0 1 1 0] \"integer indices\" "
+         "[0 1 2 3]",
+         false},
+        {"triangles",
+         "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] \"point3 P\" "
+         "[-1 -1 0 1 -1 0 1 1 0 -1 1 0]",
+         false},
+    };
+    for (const auto& [name, shape, closed] : shapes) {
+        SCOPED_TRACE(name);
+        Diagnostics diag(nullptr);
+        std::unique_ptr<Scene> scene = testing::BuildScene(
+            "Film \"rgb\" \"integer xresolution\" 4 \"integer yresolution\" 4\nWorldBegin\n" +
+                gradient + shape + "\n",
+            diag);
+        ASSERT_GE(scene->lights.size(), 1u);
+        SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.4f);
+        Point3f p = closed ? Point3f(0.2f, 0.1f, 0.05f) : Point3f(0.3f, 0.2f, 3);
+        LightSampleContext ctx =
+            closed ? LightSampleContext(Interaction(p, {}, {}))
+                   : LightSampleContext(p, Normal3f(0, 0, -1), Normal3f(0, 0, -1));
+        int hot = 0, all = 0;
+        for (const Light& light : scene->lights) {
+            const ThermalAreaLight* t = light.GetIf<ThermalAreaLight>();
+            ASSERT_TRUE(t);
+            EXPECT_TRUE(t->SamplesByPower());
+            const Shape& s = t->GetShape();
+            // The area density PDF_Li implies at the point of parameter u, per unit u
+            auto densityU = [&](Point2f u) -> double {
+                std::optional<ShapeSample> ss = s.SampleParametric(u);
+                if (!ss) return 0;
+                Vector3f d = ss->intr.p - p;
+                Vector3f w = Normalize(d);
+                return light.PDF_Li(ctx, w, true) * AbsDot(ss->intr.n, w) / LengthSquared(d) /
+                       ss->pdf;
+            };
+            constexpr int nb = 8, sub = 24, n = 200000;
+            std::vector<double> observed(nb * nb, 0), expected(nb * nb, 0);
+            RNG rng(5);
+            int mismatches = 0;
+            for (int k = 0; k < n; ++k) {
+                std::optional<LightLiSample> ls = light.SampleLi(
+                    ctx, Point2f(rng.UniformFloat(), rng.UniformFloat()), lambda, true);
+                if (!ls) continue;
+                ++all;
+                if (ls->pLight.p.x > 0) ++hot;
+                Float q = light.PDF_Li(ctx, ls->wi, true);
+                if (std::abs(q - ls->pdf) > 2e-3f * ls->pdf) ++mismatches;
+                Point2f u = s.InvertParametric(ls->pLight.p);
+                observed[size_t(std::min(nb - 1, int(u.y * nb)) * nb +
+                                std::min(nb - 1, int(u.x * nb)))] += 1;
+            }
+            // Piecewise-constant densities jump across cell edges, which rounding may straddle
+            EXPECT_LE(mismatches, n / 500);
+            for (int j = 0; j < nb * sub; ++j)
+                for (int i = 0; i < nb * sub; ++i)
+                    expected[size_t((j / sub) * nb + i / sub)] +=
+                        densityU(Point2f((i + 0.5f) / (nb * sub), (j + 0.5f) / (nb * sub))) * n /
+                        Sqr(nb * sub);
+            ChiSquareResult chi = ChiSquareTest(observed, expected, 0.01, 1);
+            EXPECT_TRUE(chi.passed) << "parameter space: " << chi.message;
+            if (closed) {
+                auto sample = [&](Point2f u) -> std::optional<testing::DirectionSample> {
+                    std::optional<LightLiSample> ls = light.SampleLi(ctx, u, lambda, true);
+                    if (!ls) return std::nullopt;
+                    return testing::DirectionSample{ls->wi, ls->pdf};
+                };
+                auto pdf = [&](Vector3f w) { return light.PDF_Li(ctx, w, true); };
+                ChiSquareResult dir = testing::DirectionChiSquare(sample, pdf, Vector3f(0, 0, 1),
+                                                                  -1, 200000, 1, 6, 12, 96, 2e-3);
+                EXPECT_TRUE(dir.passed) << "directions: " << dir.message;
+            }
+        }
+        // The hot half (x > 0) emits far more than the cool one
+        EXPECT_GT(double(hot) / all, 0.9);
+    }
 }
 
 }  // namespace
