@@ -85,7 +85,11 @@ std::string UsageText() {
            "  --wavelengths N       wavelengths per path: 4 (hero, default) or 1\n"
            "  --view NAME           display view for PNG/JPEG/TIFF outputs: Standard, Filmic,\n"
            "                        ACES, Glow (24 stops of log luminance) or Raw\n"
-           "  --verbose             print the scene features kiln enabled\n"
+           "  --verbose             print what kiln chose for the scene (code paths, tables)\n"
+           "  --generic LIST        run generic code paths instead of the chosen ones, to\n"
+           "                        measure what the choices save: footprints (texture\n"
+           "                        footprints at every hit), aovs (AOV work per camera\n"
+           "                        ray), all\n"
            "  --quiet               no progress output\n"
            "  --help, --version\n"
            "   or: kiln diff A B [--metric M] [--threshold X] [--out DIFF] (kiln diff --help)\n";
@@ -141,6 +145,19 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             if (*o.lightSampler != "bvh" && *o.lightSampler != "power" &&
                 *o.lightSampler != "uniform" && *o.lightSampler != "area")
                 throw std::invalid_argument("--light-sampler expects bvh, power, uniform or area");
+        } else if (a == "--generic") {
+            std::string list = value();
+            size_t start = 0;
+            while (start <= list.size()) {
+                size_t comma = list.find(',', start);
+                std::string item = list.substr(start, comma - start);
+                if (item == "footprints" || item == "all") o.genericFootprints = true;
+                if (item == "aovs" || item == "all") o.genericAOVs = true;
+                if (item != "footprints" && item != "aovs" && item != "all")
+                    throw std::invalid_argument("--generic expects footprints, aovs or all");
+                if (comma == std::string::npos) break;
+                start = comma + 1;
+            }
         } else if (a == "--emitter-sampling") {
             o.emitterSampling = value();
             if (*o.emitterSampling != "power" && *o.emitterSampling != "shape")
@@ -202,6 +219,8 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
         SceneBuilder builder(diag);
         ParseFile(builder, options.sceneFile, diag);
         SceneOverrides overrides{options.spp, options.seed, options.crop, std::nullopt};
+        overrides.genericFootprints = options.genericFootprints;
+        overrides.genericAOVs = options.genericAOVs;
         if (options.emission) overrides.emission = ParseEmissionModel(*options.emission);
         if (frame) {
             overrides.frame = *frame;
@@ -228,7 +247,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
         }
         scene = Scene::Create(builder.Description(), overrides, diag);
         if (options.verbose)
-            std::fprintf(stderr, "kiln: %d shapes, %zu lights (%d thermal); features: %s\n",
+            std::fprintf(stderr, "kiln: %d shapes, %zu lights (%d thermal); chosen: %s\n",
                          scene->shapeCount, scene->lights.size(), scene->thermalEmitterCount,
                          scene->features.ToString().c_str());
     } catch (const SceneError& e) {

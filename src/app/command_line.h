@@ -24,7 +24,9 @@ struct CommandLineOptions {
     std::optional<std::string> lightSampler;     // bvh | power | uniform | area
     std::optional<std::string> strategy;         // mis | light | bsdf
     std::optional<std::string> emitterSampling;  // power | shape
-    std::optional<int> wavelengths;              // 1 | 4
+    // --generic footprints,aovs: run those generic code paths (measuring specialisation)
+    bool genericFootprints = false, genericAOVs = false;
+    std::optional<int> wavelengths;  // 1 | 4
     bool help = false, version = false;
 };
 

@@ -64,7 +64,7 @@ class ThermalAreaLight {
     void Preprocess(const Bounds3f&) const {}
 
   private:
-    // The full interaction at a point of the shape, with the shape's material.
+    // The full interaction at a point of the shape, with the shape's material and emission.
     SurfaceInteraction InteractionAt(Point3f p, Float time, Vector3f wo) const;
     std::optional<Float> ParametricPDF(Point3f p) const;
 

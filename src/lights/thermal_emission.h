@@ -27,6 +27,8 @@ class ThermalEmission {
         : temperature(temperature), model(model), albedo(albedo), scale(scale) {}
 
     EmissionModel Model() const { return model; }
+    // Whether the temperature texture uses the screen-space footprint.
+    bool UsesFootprint() const { return temperature.UsesFootprint(); }
     const FloatTexture& TemperatureTexture() const { return temperature; }
     // Temperature at si, K (0 where the texture gives a negative or non-finite value).
     Float Temperature(const SurfaceInteraction& si) const;

@@ -79,6 +79,21 @@ ConductorEmissivity::ConductorEmissivity(const ConductorMaterial& m, EmissivityT
                     float(FrComplex(Float(ConductorAlbedoMoments::Node(j)),
                                     std::complex<Float>(b.Eta()[0], b.K()[0])));
         }
+        if (moments) {
+            // Textured roughness: A over the scene-wide cosine x log-alpha grid
+            const int nc = cosines.Size(), na = t.LogAlphas().Size(), nl = lambdas.Size();
+            albedoByAlpha.resize(size_t(nc) * na * nl);
+            for (int c = 0; c < nc; ++c)
+                for (int a = 0; a < na; ++a) {
+                    const float* w = &(*moments)[(size_t(c) * na + a) * H];
+                    for (int l = 0; l < nl; ++l) {
+                        double sum = 0;
+                        for (int j = 0; j < H; ++j)
+                            sum += double(w[j]) * fresnel[size_t(l) * H + j];
+                        albedoByAlpha[(size_t(c) * na + a) * nl + l] = float(sum);
+                    }
+                }
+        }
         if (!weights.empty()) {
             albedo.resize(size_t(cosines.Size()) * lambdas.Size());
             for (int c = 0; c < cosines.Size(); ++c)
@@ -109,6 +124,25 @@ SampledSpectrum ConductorEmissivity::Albedo(const ConductorBxDF& bxdf, Vector3f 
             const float* r1 = &albedo[size_t(ci + 1) * nl];
             A[i] = (1 - ct) * ((1 - lt) * r0[li] + lt * r0[li + 1]) +
                    ct * ((1 - lt) * r1[li] + lt * r1[li + 1]);
+        }
+        return A;
+    }
+    if (!albedoByAlpha.empty()) {
+        // Uniform optical constants, textured roughness: one trilinear lookup per wavelength
+        auto [ci, ct] = tables->Cosines().Locate(mu);
+        auto [ai, at] =
+            tables->LogAlphas().Locate(std::log(std::max(ProjectedAlpha(distrib, wo), 1e-4f)));
+        const int na = tables->LogAlphas().Size(), nl = lambdas.Size();
+        auto row = [&](int c, int a) { return &albedoByAlpha[(size_t(c) * na + a) * nl]; };
+        const float* r00 = row(ci, ai);
+        const float* r01 = row(ci, ai + 1);
+        const float* r10 = row(ci + 1, ai);
+        const float* r11 = row(ci + 1, ai + 1);
+        for (int i = 0; i < NSpectrumSamples; ++i) {
+            auto [li, lt] = lambdas.Locate(lambda[i]);
+            auto lerpL = [&](const float* r) { return (1 - lt) * r[li] + lt * r[li + 1]; };
+            A[i] = (1 - ct) * ((1 - at) * lerpL(r00) + at * lerpL(r01)) +
+                   ct * ((1 - at) * lerpL(r10) + at * lerpL(r11));
         }
         return A;
     }

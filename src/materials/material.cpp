@@ -32,6 +32,10 @@ const ThermalProperties& Material::Thermal() const {
     return std::visit([](const auto* m) -> const ThermalProperties& { return m->thermal; }, v);
 }
 
+bool Material::UsesFootprint() const {
+    return std::visit([](const auto* m) { return m->usesFootprint; }, v);
+}
+
 // Material creation
 namespace {
 
@@ -90,7 +94,9 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
     ThermalProperties thermal = ReadThermalProperties(params, false, arena);
     auto make = [&](auto* m) {
         m->thermal = thermal;
-        return Material(m);
+        Material material(m);
+        m->usesFootprint = ComputeUsesFootprint(material);
+        return material;
     };
     if (type.empty() || type == "none" || type == "interface")
         return make(arena.New<InterfaceMaterial>());

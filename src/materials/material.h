@@ -49,6 +49,9 @@ class Material {
 
     // The material's own temperature and emission model (thermal_properties.h).
     const ThermalProperties& Thermal() const;
+    // Whether the BSDF depends on the screen-space footprint (a texture filters with it):
+    // shading computes footprints only then (decided at creation).
+    bool UsesFootprint() const;
 
     bool IsInterface() const { return Is<InterfaceMaterial>(); }
     bool IsMix() const { return Is<MixMaterial>(); }

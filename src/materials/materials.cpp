@@ -1,5 +1,7 @@
 #include "materials/materials.h"
 
+#include <cstring>
+
 #include "core/base/rng.h"
 #include "textures/basic_textures.h"
 
@@ -24,33 +26,25 @@ Float SampleEta(const Spectrum& eta, SampledWavelengths& lambda) {
     return sampledEta == 0 ? 1 : sampledEta;
 }
 
-namespace {
-
-bool Constant(const FloatTexture& t) { return t.Is<FloatConstantTexture>(); }
-bool Constant(const SpectrumTexture& t) { return t.Is<SpectrumConstantTexture>(); }
-bool Constant(const std::optional<SpectrumTexture>& t) { return !t || Constant(*t); }
-
-}  // namespace
-
 bool HasUniformParameters(const Material& material) {
-    if (const auto* m = material.GetIf<DiffuseMaterial>()) return Constant(m->Reflectance());
-    if (const auto* m = material.GetIf<ConductorMaterial>())
-        return Constant(m->Eta()) && Constant(m->K()) && Constant(m->Reflectance()) &&
-               Constant(m->URoughness()) && Constant(m->VRoughness());
-    if (const auto* m = material.GetIf<DielectricMaterial>())
-        return Constant(m->URoughness()) && Constant(m->VRoughness());
-    if (const auto* m = material.GetIf<CoatedDiffuseMaterial>())
-        return Constant(m->Reflectance()) && Constant(m->Albedo()) && Constant(m->URoughness()) &&
-               Constant(m->VRoughness()) && Constant(m->Thickness()) && Constant(m->G());
-    if (const auto* m = material.GetIf<CoatedConductorMaterial>()) {
-        const CoatedConductorMaterial::Params& p = m->Parameters();
-        return Constant(p.interfaceURoughness) && Constant(p.interfaceVRoughness) &&
-               Constant(p.thickness) && Constant(p.g) && Constant(p.conductorEta) &&
-               Constant(p.k) && Constant(p.reflectance) && Constant(p.conductorURoughness) &&
-               Constant(p.conductorVRoughness) && Constant(p.albedo);
-    }
     if (material.Is<MixMaterial>()) return false;  // chosen point by point
-    return true;                                   // thin dielectric, interface
+    bool uniform = true;
+    ForEachTexture(material, [&](const auto& t) {
+        using T = std::decay_t<decltype(t)>;
+        if constexpr (std::is_same_v<T, FloatTexture>)
+            uniform &= t.template Is<FloatConstantTexture>();
+        else
+            uniform &= t.template Is<SpectrumConstantTexture>();
+    });
+    return uniform;
+}
+
+bool ComputeUsesFootprint(const Material& material) {
+    bool uses = false;
+    ForEachTexture(material, [&](const auto& t) { uses |= t.UsesFootprint(); });
+    if (const MixMaterial* mix = material.GetIf<MixMaterial>())
+        uses |= mix->GetMaterial(0).UsesFootprint() || mix->GetMaterial(1).UsesFootprint();
+    return uses;
 }
 
 namespace {
@@ -145,8 +139,16 @@ const Material* MixMaterial::ChooseMaterial(const MaterialEvalContext& ctx, uint
     if (amt >= 1) return &materials[1];
     // Deterministic uniform value in [0, 1) from the point and direction (and the nesting
     // depth, so that nested mixes choose independently); independent of memory addresses, so
-    // renders repeat exactly
-    uint64_t h = Hash(ctx.p, ctx.wo, depth);
+    // renders repeat exactly. The coordinates lose their last 10 mantissa bits first (a
+    // relative 1e-4), so that a ray hit and a light sample at the same point, which differ by
+    // rounding, choose alike (emission follows the choice: thermal_area_light.h).
+    auto coarse = [](Float x) {
+        uint32_t bits;
+        std::memcpy(&bits, &x, sizeof(bits));
+        return bits & ~uint32_t(0x3ff);
+    };
+    uint64_t h = Hash(coarse(ctx.p.x), coarse(ctx.p.y), coarse(ctx.p.z), coarse(ctx.wo.x),
+                      coarse(ctx.wo.y), coarse(ctx.wo.z), depth);
     Float u = std::min<Float>(Float(h >> 40) * 0x1p-24f, 0x1.fffffep-1f);
     return amt < u ? &materials[0] : &materials[1];
 }

@@ -18,10 +18,17 @@
 
 namespace kiln {
 
-// What every material holds besides its scattering: its heat (thermal_properties.h).
+// What every material holds besides its scattering: its heat (thermal_properties.h), and what
+// its textures need, decided at creation.
 struct MaterialBase {
     ThermalProperties thermal;
+    bool usesFootprint = false;  // a texture filters or antialiases with the footprint
 };
+
+// Calls f(const FloatTexture&) or f(const SpectrumTexture&) for every texture of the material
+// (of a mix: its amount; its components are materials of their own).
+template <typename F>
+void ForEachTexture(const Material& material, F&& f);
 
 // Trowbridge-Reitz distribution from roughness textures evaluated at ctx.
 TrowbridgeReitzDistribution RoughnessDistribution(FloatTexture uRoughness, FloatTexture vRoughness,
@@ -30,6 +37,8 @@ TrowbridgeReitzDistribution RoughnessDistribution(FloatTexture uRoughness, Float
 // Whether every texture of the material is a constant, so that it scatters alike at every point
 // (false for mix materials, which choose a component point by point).
 bool HasUniformParameters(const Material& material);
+// Whether any texture of the material, or of a mix's components, uses the footprint.
+bool ComputeUsesFootprint(const Material& material);
 // A dielectric's relative IOR at the hero wavelength lambda[0]; terminates the secondary
 // wavelengths if eta varies with wavelength (is not a ConstantSpectrum). 0 is taken as 1.
 Float SampleEta(const Spectrum& eta, SampledWavelengths& lambda);
@@ -179,8 +188,9 @@ class MixMaterial : public MaterialBase {
   public:
     MixMaterial(Material m0, Material m1, FloatTexture amount)
         : materials{m0, m1}, amount(amount) {}
-    // The component used at this point (may itself be a mix), chosen from a hash of ctx.p,
-    // ctx.wo and the nesting depth of this mix (0 for the outermost).
+    // The component used at this point (may itself be a mix), chosen from a hash of ctx.p and
+    // ctx.wo (rounded to a relative 1e-4) and the nesting depth of this mix (0 for the
+    // outermost).
     const Material* ChooseMaterial(const MaterialEvalContext& ctx, uint64_t depth = 0) const;
     const Material& GetMaterial(int i) const { return materials[i]; }
     const FloatTexture& Amount() const { return amount; }
@@ -193,5 +203,31 @@ class MixMaterial : public MaterialBase {
 // InterfaceMaterial Definition
 // No scattering: marks the boundary of a participating medium.
 class InterfaceMaterial : public MaterialBase {};
+
+// ForEachTexture
+template <typename F>
+void ForEachTexture(const Material& material, F&& f) {
+    auto opt = [&](const std::optional<SpectrumTexture>& t) {
+        if (t) f(*t);
+    };
+    if (const auto* m = material.GetIf<DiffuseMaterial>()) {
+        f(m->Reflectance());
+    } else if (const auto* m = material.GetIf<ConductorMaterial>()) {
+        opt(m->Eta()), opt(m->K()), opt(m->Reflectance());
+        f(m->URoughness()), f(m->VRoughness());
+    } else if (const auto* m = material.GetIf<DielectricMaterial>()) {
+        f(m->URoughness()), f(m->VRoughness());
+    } else if (const auto* m = material.GetIf<CoatedDiffuseMaterial>()) {
+        f(m->Reflectance()), f(m->Albedo()), f(m->URoughness()), f(m->VRoughness());
+        f(m->Thickness()), f(m->G());
+    } else if (const auto* m = material.GetIf<CoatedConductorMaterial>()) {
+        const CoatedConductorMaterial::Params& p = m->Parameters();
+        f(p.interfaceURoughness), f(p.interfaceVRoughness), f(p.thickness), f(p.g);
+        opt(p.conductorEta), opt(p.k), opt(p.reflectance);
+        f(p.conductorURoughness), f(p.conductorVRoughness), f(p.albedo);
+    } else if (const auto* m = material.GetIf<MixMaterial>()) {
+        f(m->Amount());
+    }
+}
 
 }  // namespace kiln

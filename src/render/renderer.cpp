@@ -80,9 +80,9 @@ RenderStats Render(Scene& scene, const RenderSettings& settings) {
             tbb::global_control::max_allowed_parallelism, size_t(settings.threads));
 
     PathIntegrator<UnpolarizedRadiance> integrator(scene, scene.integrator);
+    const SceneFeatures& f = scene.features;
     const PixelSampleFunction renderPixelSample =
-        PixelSampleFor({scene.film->UsesVisibleSurface(), scene.integrator.singleWavelength,
-                        scene.disablePixelJitter});
+        PixelSampleFor({f.aovs, f.singleWavelength, f.fixedPixelCenter});
     tbb::enumerable_thread_specific<kiln::Sampler> samplers([&] { return scene.sampler->Clone(); });
 
     std::ostringstream title;

@@ -1,6 +1,7 @@
 #include "render/scene.h"
 
 #include <array>
+#include <cstdio>
 
 #include "lights/thermal_emission.h"
 
@@ -9,28 +10,36 @@ namespace kiln {
 Scene::~Scene() = default;
 
 std::string SceneFeatures::ToString() const {
-    std::string s;
-    auto add = [&](bool on, const char* name) {
-        s += std::string(s.empty() ? "" : ", ") + name + (on ? " on" : " off");
-    };
-    add(thermalEmission, "thermal emission");
-    add(varyingTemperatures, "varying temperatures");
-    add(areaLights, "area lights");
-    add(environmentLight, "environment light");
-    add(imageTextures, "image textures");
-    add(dispersion, "dispersion");
-    add(aovs, "AOVs");
-    s += ", polarisation off (not implemented)";
-    return s;
+    auto onOff = [](bool b) { return b ? "on" : "off"; };
+    char buf[1024];
+    std::snprintf(
+        buf, sizeof(buf),
+        "thermal emission %s (%d lights, %d emissivity tables in %.2f s%s); texture footprints "
+        "at %d of %d materials; pixel loop: AOVs %s, %d wavelength%s, %s pixel positions; "
+        "light sampler %s; area lights %s, environment light %s, dispersion %s; "
+        "polarisation off (not implemented)%s%s",
+        onOff(thermalEmission), thermalLights, emissivityTables, emissivitySeconds,
+        varyingTemperatures ? ", varying temperatures" : "", footprintMaterials, materials,
+        onOff(aovs), singleWavelength ? 1 : NSpectrumSamples, singleWavelength ? "" : "s",
+        fixedPixelCenter ? "fixed" : "jittered",
+        lightSelection == LightSelection::BVH       ? "bvh"
+        : lightSelection == LightSelection::Power   ? "power"
+        : lightSelection == LightSelection::Uniform ? "uniform"
+                                                    : "area",
+        onOff(areaLights), onOff(environmentLight), onOff(dispersion),
+        genericFootprints ? "; generic footprints (--generic)" : "",
+        genericAOVs ? "; generic AOVs (--generic)" : "");
+    return buf;
 }
 
 // SceneShader
 BSDF SceneShader::GetBSDF(SurfaceInteraction& si, SampledWavelengths& lambda) const {
     if (!si.material) return {};
-    // Screen-space footprint for texture filtering
-    camera->Approximate_dp_dxy(si.p, si.n, si.time, samplesPerPixel, &si.dpdx, &si.dpdy);
-    // Solve for the uv derivatives from dp/dx and dp/dy (pbrt-v4's least squares)
-    {
+    // Screen-space footprint for texture filtering, where a texture uses it
+    if (footprintsAlways || si.material->UsesFootprint() ||
+        (si.thermal && si.thermal->UsesFootprint())) {
+        camera->Approximate_dp_dxy(si.p, si.n, si.time, samplesPerPixel, &si.dpdx, &si.dpdy);
+        // Solve for the uv derivatives from dp/dx and dp/dy (pbrt-v4's least squares)
         Float ata00 = Dot(si.dpdu, si.dpdu), ata01 = Dot(si.dpdu, si.dpdv),
               ata11 = Dot(si.dpdv, si.dpdv);
         Float invDet = 1 / (ata00 * ata11 - ata01 * ata01);

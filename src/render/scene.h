@@ -41,6 +41,10 @@ struct SceneOverrides {
     // these unless the scene sets them explicitly.
     std::optional<int> frame;
     std::optional<Float> timeSeconds;
+    // Run generic code paths instead of the ones chosen for the scene (SceneFeatures), to
+    // measure what the choices save: texture footprints at every hit, AOV work for every
+    // camera ray.
+    bool genericFootprints = false, genericAOVs = false;
 };
 
 // How direct light is found: pbrt-v4's MIS of light and BSDF sampling (default), or one of the
@@ -65,15 +69,28 @@ struct PathIntegratorSettings {
     bool emitterPowerSampling = true;
 };
 
-// What a scene uses, decided at load (kiln --verbose prints it).
+// What a scene uses and what kiln chose for it at load; every choice selects code (kiln
+// --verbose prints them, bench/specialisation.sh measures what they save).
 struct SceneFeatures {
-    bool thermalEmission = false;      // shapes glowing by temperature
+    // Thermal emission exists only for hot shapes: without them no emissivity table is built,
+    // no thermal light made and no Planck function evaluated
+    bool thermalEmission = false;
+    int thermalLights = 0;
+    int emissivityTables = 0;          // materials whose emissivity was tabulated
+    double emissivitySeconds = 0;      // building those tables
     bool varyingTemperatures = false;  // temperature textures other than constants
-    bool areaLights = false;           // AreaLightSource emitters
-    bool environmentLight = false;     // infinite lights
-    bool imageTextures = false;        // imagemap / heatmap textures
-    bool dispersion = false;           // wavelength-dependent IOR (terminates secondaries)
-    bool aovs = false;                 // film writes albedo/normal/depth layers
+    // Texture footprints (pbrt-v4's ray differentials) are computed only at surfaces whose
+    // material or temperature texture filters with them
+    int materials = 0, footprintMaterials = 0;
+    // The pixel loop's instantiation (renderer.cpp): first-hit AOVs only when the film writes
+    // them, one or four wavelengths per path, jittered or fixed pixel positions
+    bool aovs = false, singleWavelength = false, fixedPixelCenter = false;
+    // kiln --generic: footprints at every hit, AOV work for every camera ray (to measure what
+    // the choices save)
+    bool genericFootprints = false, genericAOVs = false;
+    LightSelection lightSelection = LightSelection::BVH;
+    bool areaLights = false, environmentLight = false;
+    bool dispersion = false;  // wavelength-dependent IOR (terminates secondaries)
     std::string ToString() const;
 };
 
@@ -82,13 +99,16 @@ struct SceneFeatures {
 // hits and light samples agree).
 class SceneShader : public SurfaceShader {
   public:
-    SceneShader(const Camera* camera, int samplesPerPixel)
-        : camera(camera), samplesPerPixel(samplesPerPixel) {}
+    // footprintsAlways: compute footprints at every surface, not only where a texture uses
+    // them (the generic path).
+    SceneShader(const Camera* camera, int samplesPerPixel, bool footprintsAlways)
+        : camera(camera), samplesPerPixel(samplesPerPixel), footprintsAlways(footprintsAlways) {}
     BSDF GetBSDF(SurfaceInteraction& si, SampledWavelengths& lambda) const override;
 
   private:
     const Camera* camera;
     int samplesPerPixel;
+    bool footprintsAlways;
 };
 
 class Scene {

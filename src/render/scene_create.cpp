@@ -103,7 +103,8 @@ void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const SceneOverri
     for (SceneEntity* e : {&desc.filter, &desc.film, static_cast<SceneEntity*>(&desc.camera),
                            &desc.sampler, &desc.integrator, &desc.accelerator})
         e->parameters.ReportUnused(diag);
-    scene.shader = std::make_unique<SceneShader>(&*scene.camera, scene.sampler->SamplesPerPixel());
+    scene.shader = std::make_unique<SceneShader>(&*scene.camera, scene.sampler->SamplesPerPixel(),
+                                                 overrides.genericFootprints);
 }
 
 // Textures
@@ -348,30 +349,41 @@ void CreateLightSampler(Scene& scene) {
     }
 }
 
-// What the scene uses
+// What the scene uses and what was chosen for it
 SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
-                             const std::vector<SceneShapes>& shapes) {
+                             const std::vector<SceneShapes>& shapes,
+                             const SceneMaterials& materials, const ThermalEmitters& emitters,
+                             const SceneOverrides& overrides) {
     SceneFeatures f;
-    f.thermalEmission = false;
     for (const SceneShapes& s : shapes)
         if (s.heat.emission) {
             f.thermalEmission = true;
             if (!s.heat.emission->TemperatureTexture().Is<FloatConstantTexture>())
                 f.varyingTemperatures = true;
         }
+    f.thermalLights = scene.thermalEmitterCount;
+    f.emissivityTables = emitters.TabulatedMaterials();
+    f.emissivitySeconds = emitters.TableSeconds();
+    auto count = [&](const Material* m) {
+        ++f.materials;
+        if (m->UsesFootprint()) ++f.footprintMaterials;
+    };
+    for (const auto& [name, m] : materials.named) count(m);
+    for (const Material* m : materials.anonymous) count(m);
+    f.genericFootprints = overrides.genericFootprints;
+    f.genericAOVs = overrides.genericAOVs;
+    f.aovs = scene.film->UsesVisibleSurface() || overrides.genericAOVs;
+    f.singleWavelength = scene.integrator.singleWavelength;
+    f.fixedPixelCenter = scene.disablePixelJitter;
+    f.lightSelection = scene.integrator.lightSelection;
     f.areaLights = !desc.areaLights.empty();
     f.environmentLight = !scene.infiniteLights.empty();
-    for (const auto& [name, tex] : desc.floatTextures)
-        f.imageTextures |= tex.texName == "imagemap" || tex.texName == "heatmap";
-    for (const auto& [name, tex] : desc.spectrumTextures)
-        f.imageTextures |= tex.texName == "imagemap";
     auto dispersive = [](const ParameterDictionary& p) {
         return p.TypeOf("eta") == "spectrum" && p.GetOneString("type", "") != "conductor";
     };
     for (const SceneEntity& m : desc.materials)
         f.dispersion |= m.name != "conductor" && dispersive(m.parameters);
     for (const auto& [name, m] : desc.namedMaterials) f.dispersion |= dispersive(m.parameters);
-    f.aovs = scene.film->UsesVisibleSurface();
     return f;
 }
 
@@ -393,7 +405,7 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
     CreateAggregate(*scene, desc, shapes, shapeLights, textures, materials, emitters, diag);
     PreprocessLights(*scene);
     CreateLightSampler(*scene);
-    scene->features = DecideFeatures(*scene, desc, shapes);
+    scene->features = DecideFeatures(*scene, desc, shapes, materials, emitters, overrides);
     if (scene->lights.empty() && !scene->features.thermalEmission)
         diag.Warn(FileLoc(), "the scene has no lights; the image will be black");
     return scene;

@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include <chrono>
+
 #include "core/geometry/triangle.h"
 #include "lights/thermal_area_light.h"
 #include "materials/materials.h"
@@ -112,7 +114,9 @@ std::vector<int> ThermalEmitters::CreateLights(std::span<const Shape> shapes, co
 const MaterialAlbedo* ThermalEmitters::AlbedoOf(const Material* material, const FileLoc& loc) {
     auto it = albedos.find(material);
     if (it != albedos.end()) return it->second;
+    auto start = std::chrono::steady_clock::now();
     const MaterialAlbedo* albedo = MaterialAlbedo::Create(*material, tables, arena);
+    tableSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!albedo->Exact())
         diag.Warn(loc,
                   "the emissivity of this hot material is approximated by a Monte Carlo "

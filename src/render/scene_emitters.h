@@ -51,6 +51,9 @@ class ThermalEmitters {
     // One light per shape, appended to lights; returns their indices.
     std::vector<int> CreateLights(std::span<const Shape> shapes, const ShapeHeat& heat,
                                   std::vector<Light>& lights);
+    // Materials whose emissivity was tabulated, and the time that took (s).
+    int TabulatedMaterials() const { return int(albedos.size()); }
+    double TableSeconds() const { return tableSeconds; }
 
   private:
     const MaterialAlbedo* AlbedoOf(const Material* material, const FileLoc& loc);
@@ -64,6 +67,7 @@ class ThermalEmitters {
     bool powerSampling;
     std::map<const Material*, const MaterialAlbedo*> albedos;
     const Material* black = nullptr;
+    double tableSeconds = 0;
 };
 
 }  // namespace kiln

@@ -60,9 +60,21 @@ double planck_radiance(double lambda_nm, double T) {
 
 SampledSpectrum planck_radiance(const SampledWavelengths& lambda, double T) {
     SampledSpectrum s;
+    const double maxFloat = double(std::numeric_limits<Float>::max());
     for (int i = 0; i < NSpectrumSamples; ++i) {
-        double B = planck_radiance(lambda[i], T);
-        s[i] = Float(std::min(B, double(std::numeric_limits<Float>::max())));
+        double l = lambda[i];
+        // The exponential in single precision where x = c2 / (lambda T) keeps it well inside
+        // float's range (relative error below 1e-5, growing with x; the double function
+        // keeps 1e-12); the double function for the tails and extremes
+        double lT = l * 1e-9 * T;
+        double x = lT > 0 ? kSecondRadiationConstant / lT : 0;
+        if (x > 1e-3 && x < 80 && std::isfinite(T) && l < 1e6) {
+            float e = std::exp(float(x));
+            double B = kC1LPerNm / (Pow5(l * 1e-9) * (double(e) - 1));
+            s[i] = Float(std::min(B, maxFloat));
+        } else {
+            s[i] = Float(std::min(planck_radiance(l, T), maxFloat));
+        }
     }
     return s;
 }

@@ -50,6 +50,7 @@ class FloatScaledTexture {
         Float sc = scale.Evaluate(ctx);
         return sc == 0 ? 0 : tex.Evaluate(ctx) * sc;
     }
+    bool UsesFootprint() const { return tex.UsesFootprint() || scale.UsesFootprint(); }
 
     // "texture|float tex" (1), "texture|float scale" (1); a constant scale of 1 returns tex.
     static FloatTexture Create(const TextureParameterDictionary& params, ObjectArena& arena);
@@ -67,6 +68,7 @@ class SpectrumScaledTexture {
         Float sc = scale.Evaluate(ctx);
         return sc == 0 ? SampledSpectrum(0) : tex.Evaluate(ctx, lambda) * sc;
     }
+    bool UsesFootprint() const { return tex.UsesFootprint() || scale.UsesFootprint(); }
 
     // "texture|spectrum tex" (1), "texture|float scale" (1).
     static SpectrumTexture Create(const TextureParameterDictionary& params, SpectrumType type,
@@ -89,6 +91,9 @@ class FloatMixTexture {
         Float t2 = amt != 0 ? tex2.Evaluate(ctx) : 0;
         return (1 - amt) * t1 + amt * t2;
     }
+    bool UsesFootprint() const {
+        return tex1.UsesFootprint() || tex2.UsesFootprint() || amount.UsesFootprint();
+    }
 
     // "tex1" (0), "tex2" (1), "float amount" (0.5).
     static FloatMixTexture* Create(const TextureParameterDictionary& params, ObjectArena& arena);
@@ -109,6 +114,9 @@ class SpectrumMixTexture {
         if (amt != 1) t1 = tex1.Evaluate(ctx, lambda);
         if (amt != 0) t2 = tex2.Evaluate(ctx, lambda);
         return (1 - amt) * t1 + amt * t2;
+    }
+    bool UsesFootprint() const {
+        return tex1.UsesFootprint() || tex2.UsesFootprint() || amount.UsesFootprint();
     }
 
     static SpectrumMixTexture* Create(const TextureParameterDictionary& params, SpectrumType type,
@@ -131,6 +139,7 @@ class FloatDirectionMixTexture {
         Float t2 = amt != 1 ? tex2.Evaluate(ctx) : 0;
         return amt * t1 + (1 - amt) * t2;
     }
+    bool UsesFootprint() const { return tex1.UsesFootprint() || tex2.UsesFootprint(); }
 
     // "tex1" (0), "tex2" (1), "vector3 dir" (0 1 0, in texture space).
     static FloatDirectionMixTexture* Create(const TextureParameterDictionary& params,
@@ -154,6 +163,7 @@ class SpectrumDirectionMixTexture {
         if (amt != 1) t2 = tex2.Evaluate(ctx, lambda);
         return amt * t1 + (1 - amt) * t2;
     }
+    bool UsesFootprint() const { return tex1.UsesFootprint() || tex2.UsesFootprint(); }
 
     static SpectrumDirectionMixTexture* Create(const TextureParameterDictionary& params,
                                                const Transform& renderFromTexture,

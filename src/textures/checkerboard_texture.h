@@ -29,6 +29,7 @@ class FloatCheckerboardTexture {
         Float t2 = wt != 0 ? tex2.Evaluate(ctx) : 0;
         return (1 - wt) * t1 + wt * t2;
     }
+    bool UsesFootprint() const { return true; }  // antialiased
 
     // "integer dimension" (2 or 3, else SceneError), "tex1" (1), "tex2" (0) and the mapping
     // parameters (2D) or the texture transform (3D).
@@ -57,6 +58,7 @@ class SpectrumCheckerboardTexture {
         if (wt != 0) t2 = tex2.Evaluate(ctx, lambda);
         return (1 - wt) * t1 + wt * t2;
     }
+    bool UsesFootprint() const { return true; }  // antialiased
 
     static SpectrumCheckerboardTexture* Create(const TextureParameterDictionary& params,
                                                const Transform& renderFromTexture,

@@ -40,6 +40,7 @@ class ImageTextureBase {
     const MIPMap* GetMIPMap() const { return mipmap; }
     Float Scale() const { return scale; }
     bool Invert() const { return invert; }
+    bool UsesFootprint() const { return true; }  // MIP-map filtering
 
     // Reads "string filename" (SceneError if missing or unreadable), "string filter"
     // (bilinear), "float maxanisotropy" (8), "string wrap" (repeat) and "string encoding"

@@ -11,6 +11,7 @@ namespace kiln {
 // "integer octaves" (8), "float roughness" (0.5: amplitude ratio between octaves).
 class FBmTexture {
   public:
+    bool UsesFootprint() const { return true; }  // octaves limited by the footprint
     FBmTexture(TextureMapping3D mapping, int octaves, Float omega)
         : mapping(mapping), octaves(octaves), omega(omega) {}
     Float Evaluate(const TextureEvalContext& ctx) const;
@@ -27,6 +28,7 @@ class FBmTexture {
 // Turbulence; same parameters as fbm.
 class WrinkledTexture {
   public:
+    bool UsesFootprint() const { return true; }  // octaves limited by the footprint
     WrinkledTexture(TextureMapping3D mapping, int octaves, Float omega)
         : mapping(mapping), octaves(octaves), omega(omega) {}
     Float Evaluate(const TextureEvalContext& ctx) const;
@@ -43,6 +45,7 @@ class WrinkledTexture {
 // Wind-blown waves: |low-frequency fbm| times fbm.
 class WindyTexture {
   public:
+    bool UsesFootprint() const { return true; }  // octaves limited by the footprint
     explicit WindyTexture(TextureMapping3D mapping) : mapping(mapping) {}
     Float Evaluate(const TextureEvalContext& ctx) const;
 
@@ -96,6 +99,7 @@ class SpectrumDotsTexture {
 // "float scale" (1), "float variation" (0.2). Reflectance (albedo) values.
 class MarbleTexture {
   public:
+    bool UsesFootprint() const { return true; }  // octaves limited by the footprint
     MarbleTexture(TextureMapping3D mapping, int octaves, Float omega, Float scale, Float variation)
         : mapping(mapping), octaves(octaves), omega(omega), scale(scale), variation(variation) {}
     SampledSpectrum Evaluate(const TextureEvalContext& ctx, const SampledWavelengths& lambda) const;

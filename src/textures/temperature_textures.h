@@ -89,6 +89,7 @@ class ThermalNoiseTexture {
 // "string wrap" (clamp) and the mapping parameters.
 class HeatMapTexture {
   public:
+    bool UsesFootprint() const { return true; }  // MIP-map filtering
     HeatMapTexture(TextureMapping2D mapping, const MIPMap* frame0, const MIPMap* frame1,
                    Float frameWeight, Float offset, Float scale)
         : mapping(mapping),

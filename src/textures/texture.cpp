@@ -109,4 +109,27 @@ SpectrumTexture CreateSpectrumTexture(const std::string& name, const Transform& 
     throw SceneError(loc, "unknown spectrum texture type \"" + name + "\"", name);
 }
 
+// Footprint use: the classes that filter or antialias say so, the others do not depend on it
+bool FloatTexture::UsesFootprint() const {
+    return std::visit(
+        [](auto t) {
+            if constexpr (requires { t->UsesFootprint(); })
+                return t->UsesFootprint();
+            else
+                return false;
+        },
+        v);
+}
+
+bool SpectrumTexture::UsesFootprint() const {
+    return std::visit(
+        [](auto t) {
+            if constexpr (requires { t->UsesFootprint(); })
+                return t->UsesFootprint();
+            else
+                return false;
+        },
+        v);
+}
+
 }  // namespace kiln

@@ -65,6 +65,10 @@ class FloatTexture {
     // Value at the point: dimensionless, or in the unit of what it stands for (e.g. kelvin
     // for the temperature textures of temperature_textures.h).
     Float Evaluate(const TextureEvalContext& ctx) const;
+    // Whether the value depends on the screen-space footprint (dpdx, dudx, ...): image
+    // textures filter with it, checkerboards and noise antialias with it. Shading computes
+    // footprints only for surfaces that need them.
+    bool UsesFootprint() const;
 
     template <typename T>
     const T* GetIf() const {
@@ -95,6 +99,8 @@ class SpectrumTexture {
 
     // Values at the wavelengths lambda (unit per the texture's SpectrumType).
     SampledSpectrum Evaluate(const TextureEvalContext& ctx, const SampledWavelengths& lambda) const;
+    // As FloatTexture::UsesFootprint.
+    bool UsesFootprint() const;
 
     template <typename T>
     const T* GetIf() const {

@@ -447,6 +447,63 @@ TEST(ThermalTest, EmittersWithVaryingTemperatureAreSampledByPower) {
     }
 }
 
+// A light sample's radiance is the surface's emission there, exactly as a ray hitting that
+// point computes it (same BSDF, shading frame, texture footprint, mix choice): for hot
+// textured and heat-mapped emitters, a shading-normal mesh and a mix.
+TEST(ThermalTest, LightSamplesEmitWhatRayHitsThereEmit) {
+    const std::string scene =
+        "Film \"rgb\" \"integer xresolution\" 16 \"integer yresolution\" 16\n"
+        "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 50\n"
+        "WorldBegin\n"
+        "Texture \"checks\" \"spectrum\" \"checkerboard\" \"float uscale\" 8 \"float vscale\" 8"
+        " \"rgb tex1\" [0.9 0.8 0.7] \"rgb tex2\" [0.1 0.2 0.05]\n"
+        "Texture \"heat\" \"float\" \"checkerboard\" \"float uscale\" 5 \"float vscale\" 5"
+        " \"float tex1\" 900 \"float tex2\" 1500\n"
+        "MakeNamedMaterial \"a\" \"string type\" \"diffuse\" \"texture reflectance\" \"checks\"\n"
+        "MakeNamedMaterial \"b\" \"string type\" \"conductor\" \"float roughness\" 0.2\n"
+        "Material \"mix\" \"string materials\" [\"a\" \"b\"] \"float amount\" 0.5"
+        " \"texture temperature\" \"heat\"\n"
+        "Shape \"bilinearmesh\" \"point3 P\" [-1 -1 0 1 -1 0 -1 1 0 1 1 0] "
+        "\"integer indices\" [0 1 2 3]\n"
+        "Material \"coateddiffuse\" \"texture reflectance\" \"checks\" \"float temperature\" 1300\n"
+        "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] \"point3 P\" "
+        "[-2 -2 1 2 -2 1 2 2 1.5 -2 2 1.5] \"normal N\" [0 0.2 -1 0.2 0 -1 0 -0.2 -1 -0.2 0 -1]"
+        " \"point2 uv\" [0 0 1 0 1 1 0 1]\n"
+        // An untextured material whose temperature texture filters with the footprint
+        "Material \"diffuse\" \"texture temperature\" \"heat\"\n"
+        "AttributeBegin Translate 0 0 -0.5 Shape \"disk\" \"float radius\" 0.3 AttributeEnd\n";
+    Diagnostics diag(nullptr);
+    std::unique_ptr<Scene> s = testing::BuildScene(scene, diag);
+    ASSERT_GE(s->lights.size(), 4u);
+    Point3f p(0.1f, 0.05f, -2);
+    LightSampleContext ctx(p, Normal3f(0, 0, 1), Normal3f(0, 0, 1));
+    RNG rng(3);
+    int compared = 0, mismatches = 0;
+    for (int k = 0; k < 20000; ++k) {
+        SampledWavelengths lambda = SampledWavelengths::SampleVisible(rng.UniformFloat());
+        const Light& light = s->lights[size_t(k) % s->lights.size()];
+        std::optional<LightLiSample> ls =
+            light.SampleLi(ctx, Point2f(rng.UniformFloat(), rng.UniformFloat()), lambda, true);
+        if (!ls) continue;
+        std::optional<ShapeIntersection> hit =
+            s->aggregate->Intersect(Ray(p, ls->pLight.p - p), 1.001f);
+        if (!hit || hit->tHit < 0.999f) continue;  // another emitter in front
+        SampledWavelengths l = lambda;
+        BSDF bsdf = s->GetBSDF(hit->intr, l);
+        SampledSpectrum Le = s->SurfaceLe(hit->intr, bsdf, -ls->wi, lambda);
+        ++compared;
+        for (int i = 0; i < NSpectrumSamples; ++i)
+            if (std::abs(Le[i] - ls->L[i]) > 1e-3f * std::max(Le[i], ls->L[i])) {
+                ++mismatches;
+                break;
+            }
+    }
+    EXPECT_GT(compared, 10000);
+    // Rounding may put the two points on different sides of a checker edge or of the mix's
+    // rounding grid
+    EXPECT_LE(mismatches, compared / 200) << mismatches << " of " << compared;
+}
+
 }  // namespace
 }  // namespace kiln
 #endif  // KILN_THERMAL_EMISSION

@@ -129,6 +129,25 @@ TEST(Planck, FiniteEverywhere) {
     EXPECT_TRUE(planck_radiance(swl, 1e6).IsFinite());
 }
 
+// The per-sample version (single-precision exponential) agrees with the double one.
+TEST(Planck, SampledWavelengthsVersionMatchesDouble) {
+    double worst = 0;
+    for (double T : {1.0, 100.0, 500.0, 798.0, 1000.0, 1500.0, 3000.0, 6500.0, 1e4, 1e5, 1e6})
+        for (float u = 0; u < 1; u += 0.01f) {
+            SampledWavelengths swl = SampledWavelengths::SampleUniform(u);
+            SampledSpectrum B = planck_radiance(swl, T);
+            for (int i = 0; i < NSpectrumSamples; ++i) {
+                double ref = planck_radiance(double(swl[i]), T);
+                ASSERT_TRUE(std::isfinite(B[i]));
+                if (ref > 1e-30)
+                    worst = std::max(worst, std::abs(B[i] - ref) / ref);
+                else
+                    EXPECT_LE(B[i], 1e-30);
+            }
+        }
+    EXPECT_LT(worst, 1e-5);
+}
+
 // BlackbodySpectrum (pbrt-v4): normalised to peak 1; ratios follow Planck.
 TEST(Planck, BlackbodySpectrum) {
     BlackbodySpectrum bb(2856);

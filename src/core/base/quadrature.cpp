@@ -8,6 +8,20 @@ QuadratureRule GaussLegendre(int n, double a, double b) {
     QuadratureRule rule;
     rule.x.resize(size_t(n));
     rule.weight.resize(size_t(n));
+    double half = 0.5 * (b - a), mid = 0.5 * (a + b);
+    if (n == 8) {
+        // The rule every table uses, from Abramowitz & Stegun, Table 25.4 (nodes on [-1, 1])
+        constexpr double z[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                                 0.9602898564975363};
+        constexpr double w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                                 0.1012285362903763};
+        for (int i = 0; i < 4; ++i) {
+            rule.x[size_t(3 - i)] = mid - half * z[i];
+            rule.x[size_t(4 + i)] = mid + half * z[i];
+            rule.weight[size_t(3 - i)] = rule.weight[size_t(4 + i)] = half * w[i];
+        }
+        return rule;
+    }
     const double pi = 3.14159265358979323846;
     for (int i = 0; i < (n + 1) / 2; ++i) {
         // Newton's method on P_n from the Chebyshev-like initial guess (Abramowitz & Stegun)
@@ -26,7 +40,6 @@ QuadratureRule GaussLegendre(int n, double a, double b) {
         }
         double w = 2 / ((1 - z * z) * dp * dp);
         // Map [-1, 1] to [a, b]
-        double half = 0.5 * (b - a), mid = 0.5 * (a + b);
         rule.x[size_t(i)] = mid - half * z;
         rule.x[size_t(n - 1 - i)] = mid + half * z;
         rule.weight[size_t(i)] = rule.weight[size_t(n - 1 - i)] = half * w;
