@@ -37,7 +37,8 @@ bool MaterialAlbedo::Exact() const {
     return std::visit(
         [&](const auto& k) -> bool {
             using K = std::decay_t<decltype(k)>;
-            if constexpr (std::is_same_v<K, CoatedDiffuseEmissivity> ||
+            if constexpr (std::is_same_v<K, ConductorEmissivity> ||
+                          std::is_same_v<K, CoatedDiffuseEmissivity> ||
                           std::is_same_v<K, CoatedConductorEmissivity>)
                 return k.Exact();
             else if constexpr (std::is_same_v<K, Mix>)

@@ -15,14 +15,16 @@ float EmissivityTables::CosineNode(int i, int n) {
 
 EmissivityTables::EmissivityTables() {
     constexpr int nCos = 64, nLambda = 95, nAlpha = 48;
-    std::vector<float> c, l, a;
+    std::vector<float> c, l, fine, a;
     for (int i = 0; i < nCos; ++i) c.push_back(CosineNode(i, nCos));
     for (int i = 0; i < nLambda; ++i) l.push_back(360.f + 5.f * i);
+    for (int i = 0; i <= 470; ++i) fine.push_back(360.f + float(i));
     const double logMin = std::log(1e-3), logMax = std::log(4.0);
     for (int i = 0; i < nAlpha; ++i)
         a.push_back(float(logMin + (logMax - logMin) * i / (nAlpha - 1)));
     cosines = TableAxis(std::move(c));
     wavelengths = TableAxis(std::move(l));
+    fineWavelengths = TableAxis(std::move(fine));
     logAlphas = TableAxis(std::move(a));
 }
 

@@ -119,10 +119,11 @@ const MaterialAlbedo* ThermalEmitters::AlbedoOf(const Material* material, const 
     tableSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!albedo->Exact())
         diag.Warn(loc,
-                  "the emissivity of this hot material is approximated by a Monte Carlo "
-                  "table (a coated material with a scattering layer, textured thickness "
-                  "or conductor constants, or a dispersive coat over a conductor): "
-                  "Kirchhoff equilibrium holds to about 1 % only");
+                  "the emissivity of this hot material is approximate (a coated material "
+                  "with a scattering layer, textured thickness or conductor constants, or "
+                  "a dispersive coat over a conductor: a Monte Carlo table, about 1 %; a "
+                  "conductor with textured anisotropic roughness: the isotropic albedo at "
+                  "the projected roughness): Kirchhoff equilibrium does not hold exactly");
     albedos.emplace(material, albedo);
     return albedo;
 }

@@ -132,3 +132,52 @@ TEST(AlbedoTables, CoatedConductorAlbedoMatchesSampling) {
             }
         }
 }
+
+TEST(AlbedoTables, AnisotropicQuadratureAgreesWithIsotropicAtEqualRoughness) {
+    for (double alpha : {0.01, 0.1, 0.5, 1.0})
+        for (double mu : {1.0, 0.6, 0.2, 0.03})
+            for (double phi : {0.0, 0.9}) {
+                double s = std::sqrt(1 - mu * mu);
+                double wo[3] = {s * std::cos(phi), s * std::sin(phi), mu};
+                auto gold = [](double c) { return Fresnel(c, 0.27, 2.8); };
+                double iso =
+                    ConductorAlbedoMoments::Apply(ConductorAlbedoMoments::Compute(alpha, mu), gold);
+                double aniso = ConductorAlbedoMoments::Apply(
+                    ConductorAlbedoMoments::Compute(alpha, alpha, wo), gold);
+                EXPECT_NEAR(iso, aniso, 5e-5) << "alpha " << alpha << " mu " << mu;
+            }
+}
+
+TEST(AlbedoTables, AnisotropicConductorAlbedoMatchesSampling) {
+    struct Metal {
+        double eta, k;
+    } metals[] = {{0.27, 2.8}, {1.0, 0.3}};
+    uint64_t seed = 100;
+    double pairs[][2] = {{0.05, 0.3}, {0.3, 1.0}, {0.002, 1.0}, {1.0, 0.01}};
+    for (auto [ax, ay] : pairs)
+        for (double mu : {1.0, 0.5, 0.1})
+            for (double phi : {0.3, 1.2}) {
+                double s = std::sqrt(1 - mu * mu);
+                double wo[3] = {s * std::cos(phi), s * std::sin(phi), mu};
+                ConductorAlbedoMoments::Weights w = ConductorAlbedoMoments::Compute(ax, ay, wo);
+                for (Metal m : metals) {
+                    double A = ConductorAlbedoMoments::Apply(
+                        w, [&](double c) { return Fresnel(c, m.eta, m.k); });
+                    TrowbridgeReitzDistribution distrib{Float(ax), Float(ay)};
+                    BxDF bxdf = ConductorBxDF(distrib, SampledSpectrum(Float(m.eta)),
+                                              SampledSpectrum(Float(m.k)));
+                    Vector3f v{Float(wo[0]), Float(wo[1]), Float(wo[2])};
+                    RunningStats st;
+                    RNG rng(seed++);
+                    for (int i = 0; i < 200000; ++i) {
+                        Float uc = rng.UniformFloat();
+                        Point2f u(rng.UniformFloat(), rng.UniformFloat());
+                        std::optional<BSDFSample> bs = bxdf.Sample_f(v, uc, u);
+                        st.Add(bs && bs->pdf > 0 ? double(bs->f[0]) * AbsCosTheta(bs->wi) / bs->pdf
+                                                 : 0.0);
+                    }
+                    EXPECT_NEAR(A, st.Mean(), 4 * st.StandardError() + 5e-5)
+                        << "alpha " << ax << " x " << ay << " mu " << mu << " phi " << phi;
+                }
+            }
+}

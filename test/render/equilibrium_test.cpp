@@ -124,6 +124,9 @@ const Case kCases[] = {
     {"platinum, roughness 1",
      "\"conductor\" \"spectrum eta\" \"metal-Pt-eta\" \"spectrum k\" "
      "\"metal-Pt-k\" \"float roughness\" 1"},
+    {"brushed copper, anisotropic roughness",
+     "\"conductor\" \"spectrum eta\" \"metal-Cu-eta\" \"spectrum k\" "
+     "\"metal-Cu-k\" \"float uroughness\" 0.02 \"float vroughness\" 0.4"},
     {"gold, textured roughness",
      "\"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" "
      "\"metal-Au-k\" \"texture roughness\" \"rough\""},

@@ -58,4 +58,14 @@ QuadratureRule CompositeGaussLegendre(int panels, int n, double a, double b) {
     return rule;
 }
 
+QuadratureRule SmoothstepGaussLegendre(int panels, int n, double a, double b) {
+    QuadratureRule r = CompositeGaussLegendre(panels, n, 0, 1);
+    for (size_t k = 0; k < r.x.size(); ++k) {
+        double tau = r.x[k];
+        r.x[k] = a + (b - a) * tau * tau * (3 - 2 * tau);
+        r.weight[k] *= (b - a) * 6 * tau * (1 - tau);
+    }
+    return r;
+}
+
 }  // namespace kiln

@@ -20,6 +20,11 @@ QuadratureRule GaussLegendre(int n, double a = 0, double b = 1);
 // (for integrands with kinks, whose position the panels localise).
 QuadratureRule CompositeGaussLegendre(int panels, int n, double a = 0, double b = 1);
 
+// Composite Gauss-Legendre rule in tau on [0, 1] mapped by t = a + (b - a) (3 tau^2 - 2 tau^3)
+// (smoothstep substitution): points cluster at both ends, which absorbs square-root behaviour
+// and resolves boundary layers there.
+QuadratureRule SmoothstepGaussLegendre(int panels, int n, double a, double b);
+
 // Cubic Lagrange interpolation weights of the four nodes x[0..3] at `at`:
 // f(at) ~ sum_a w[a] f(x[a]), exact for cubic f.
 inline void CubicLagrangeWeights(const double* x, double at, double w[4]) {

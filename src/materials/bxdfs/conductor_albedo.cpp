@@ -13,16 +13,43 @@ double ConductorAlbedoMoments::Node(int j) {
     return x * x * (2 - x) * 0.5 + x * 0.5;  // spacing at 0 half that at 1
 }
 
-int ConductorAlbedoMoments::InterpolationWeights(double mu, double w[4]) {
-    mu = std::clamp(mu, 0.0, 1.0);
-    int lo = 0, hi = kNodes - 1;
-    while (hi - lo > 1) {
-        int mid = (lo + hi) / 2;
-        (Node(mid) <= mu ? lo : hi) = mid;
+namespace {
+
+// The nodes and, for each run of four starting at `first`, the denominators of their cubic
+// Lagrange weights (computed once; the weights are evaluated for every quadrature point).
+struct NodeTable {
+    static constexpr int n = ConductorAlbedoMoments::kNodes;
+    double node[n];
+    double denominator[n - 3][4];
+    NodeTable() {
+        for (int j = 0; j < n; ++j) node[j] = ConductorAlbedoMoments::Node(j);
+        for (int f = 0; f + 3 < n; ++f)
+            for (int a = 0; a < 4; ++a) {
+                denominator[f][a] = 1;
+                for (int b = 0; b < 4; ++b)
+                    if (b != a) denominator[f][a] *= node[f + a] - node[f + b];
+            }
     }
+};
+
+const NodeTable& Nodes() {
+    static const NodeTable table;
+    return table;
+}
+
+}  // namespace
+
+int ConductorAlbedoMoments::InterpolationWeights(double mu, double w[4]) {
+    const NodeTable& t = Nodes();
+    mu = std::clamp(mu, 0.0, 1.0);
+    int lo = int(std::upper_bound(t.node, t.node + kNodes, mu) - t.node) - 1;
     int first = std::clamp(lo - 1, 0, kNodes - 4);
-    double x[4] = {Node(first), Node(first + 1), Node(first + 2), Node(first + 3)};
-    CubicLagrangeWeights(x, mu, w);
+    const double* x = &t.node[first];
+    double d[4] = {mu - x[0], mu - x[1], mu - x[2], mu - x[3]};
+    w[0] = d[1] * d[2] * d[3] / t.denominator[first][0];
+    w[1] = d[0] * d[2] * d[3] / t.denominator[first][1];
+    w[2] = d[0] * d[1] * d[3] / t.denominator[first][2];
+    w[3] = d[0] * d[1] * d[2] / t.denominator[first][3];
     return first;
 }
 
@@ -39,6 +66,70 @@ ConductorAlbedoMoments::Weights ConductorAlbedoMoments::Compute(double alpha, do
         double lw[4];
         int first = InterpolationWeights(mu, lw);
         for (int a = 0; a < 4; ++a) w[size_t(first + a)] += q.weight * g * lw[a];
+    }
+    return w;
+}
+
+ConductorAlbedoMoments::Weights ConductorAlbedoMoments::Compute(double alphaX, double alphaY,
+                                                                const double wo[3], int psiPanels,
+                                                                int xPanels) {
+    constexpr double kPi = 3.14159265358979323846;
+    // Smith's Lambda of a direction (local frame) under the anisotropic distribution
+    auto lambda = [&](double x, double y, double z) {
+        if (z <= 0) return 1e30;
+        double t2 = (alphaX * alphaX * x * x + alphaY * alphaY * y * y) / (z * z);
+        return (std::sqrt(1 + t2) - 1) / 2;
+    };
+    double cosThetaO = wo[2], sinThetaO = std::sqrt(std::max(0.0, 1 - cosThetaO * cosThetaO));
+    double lambdaO = lambda(wo[0], wo[1], wo[2]);
+    double G1 = 1 / (1 + lambdaO);
+    // The psi circle is split where the integrand changes fastest: at the azimuths
+    // perpendicular to wo's (the reflection bound, at grazing incidence) and at the axes (the
+    // normals of the smoother axis crowd into a narrow window of psi there)
+    double phiO = sinThetaO > 0 ? std::atan2(wo[1], wo[0]) : 0;
+    double psiPerp =
+        std::atan2(alphaX * std::sin(phiO + kPi / 2), alphaY * std::cos(phiO + kPi / 2));
+    std::vector<double> splits = {0, kPi / 2, kPi, 3 * kPi / 2};
+    for (double psi : {psiPerp, psiPerp + kPi}) splits.push_back(std::fmod(psi + 4 * kPi, 2 * kPi));
+    std::sort(splits.begin(), splits.end());
+    splits.push_back(splits.front() + 2 * kPi);
+    QuadratureRule psis;
+    for (size_t a = 0; a + 1 < splits.size(); ++a) {
+        double length = splits[a + 1] - splits[a];
+        if (!(length > 1e-9)) continue;
+        int panels = std::max(1, int(std::ceil(psiPanels * length / kPi)));
+        QuadratureRule arc = SmoothstepGaussLegendre(panels, 8, splits[a], splits[a + 1]);
+        psis.x.insert(psis.x.end(), arc.x.begin(), arc.x.end());
+        psis.weight.insert(psis.weight.end(), arc.weight.begin(), arc.weight.end());
+    }
+    const QuadratureRule unitX = SmoothstepGaussLegendre(xPanels, 8, 0, 1);
+    Weights w{};
+    for (size_t k = 0; k < psis.x.size(); ++k) {
+        double cx = alphaX * std::cos(psis.x[k]), sy = alphaY * std::sin(psis.x[k]);
+        double alpha = std::sqrt(cx * cx + sy * sy);  // roughness along phi_m
+        double cosPhi = cx / alpha, sinPhi = sy / alpha;
+        // Reflected z = a sin(2 theta) + b cos(2 theta) > 0 for theta < (delta + pi / 2) / 2
+        double a = wo[0] * cosPhi + wo[1] * sinPhi;  // sin(theta_o) cos(phi_m - phi_o)
+        double delta = std::atan2(a, cosThetaO);
+        double xMax = 2 / kPi * std::atan(std::tan((delta + kPi / 2) / 2) / alpha);
+        for (size_t i = 0; i < unitX.x.size(); ++i) {
+            // t = tan(theta_m) / alpha; the measure D(wm) dwm per dx dpsi is t s / (2 (1 + t^2))
+            // with s = sqrt(1 + alpha^2 t^2), as for isotropic roughness
+            double t = std::tan(kPi / 2 * xMax * unitX.x[i]);
+            double at = alpha * t, s = std::sqrt(1 + at * at);
+            double sinThetaM = at / s, cosThetaM = 1 / s;
+            double nx = sinThetaM * cosPhi, ny = sinThetaM * sinPhi, nz = cosThetaM;
+            double mu = wo[0] * nx + wo[1] * ny + wo[2] * nz;  // wo . wm
+            double iz = 2 * mu * nz - wo[2];
+            if (mu <= 0 || iz <= 0) continue;
+            double ix = 2 * mu * nx - wo[0], iy = 2 * mu * ny - wo[1];
+            double measure = t * s / (2 * (1 + t * t)) * xMax * unitX.weight[i] * psis.weight[k];
+            double visible = G1 * mu / cosThetaO;
+            double g = (1 + lambdaO) / (1 + lambdaO + lambda(ix, iy, iz));  // G2 / G1
+            double lw[4];
+            int first = InterpolationWeights(mu, lw);
+            for (int c = 0; c < 4; ++c) w[size_t(first + c)] += measure * visible * g * lw[c];
+        }
     }
     return w;
 }

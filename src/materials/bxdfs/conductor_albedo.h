@@ -29,6 +29,19 @@ class ConductorAlbedoMoments {
     using Weights = std::array<double, kNodes>;
     // W_j for isotropic roughness alpha (> 0) seen from cos(theta_o) in (0, 1].
     static Weights Compute(double alpha, double cosThetaO);
+    // W_j for anisotropic roughness (alphaX, alphaY > 0) seen from the unit direction wo (local
+    // frame, wo.z > 0). Normals are parameterised by psi, with tan(phi_m) = (alphaY / alphaX)
+    // tan(psi) (uniform in psi for the distribution's azimuthal marginal, so its narrow peaks
+    // at strong anisotropy are resolved), and x = (2 / pi) atan(tan(theta_m) / alpha(phi_m)),
+    // alpha(phi_m) the roughness along that azimuth. At each psi the normals reflecting wo above
+    // the horizon are exactly those with theta_m below a bound that varies smoothly with psi
+    // (and are all visible), steeply near the azimuths perpendicular to wo's at grazing
+    // incidence, and the normals of the smoother axis crowd into a narrow window of psi around
+    // it; the psi circle is split at both, and each arc and the x interval use smoothstep
+    // Gauss-Legendre rules (psiPanels x 8 points per half circle, xPanels x 8 in x), whose
+    // points cluster at the ends.
+    static Weights Compute(double alphaX, double alphaY, const double wo[3], int psiPanels = 3,
+                           int xPanels = 4);
     // Sum over the nodes of W_j F(mu_j), F given as a function of mu.
     template <typename F>
     static double Apply(const Weights& w, F&& fresnel) {

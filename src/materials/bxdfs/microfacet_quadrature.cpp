@@ -11,16 +11,12 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Smoothstep substitution on [a, b]: points and weights of an n-panel Gauss-Legendre rule in
-// tau, mapped by t = a + (b - a) (3 tau^2 - 2 tau^3).
+// Smoothstep substitution on [a, b], appended to t and w.
 void SmoothstepRule(double a, double b, int panels, std::vector<double>* t,
                     std::vector<double>* w) {
-    QuadratureRule r = CompositeGaussLegendre(panels, 8, 0, 1);
-    for (size_t k = 0; k < r.x.size(); ++k) {
-        double tau = r.x[k];
-        t->push_back(a + (b - a) * tau * tau * (3 - 2 * tau));
-        w->push_back(r.weight[k] * (b - a) * 6 * tau * (1 - tau));
-    }
+    QuadratureRule r = SmoothstepGaussLegendre(panels, 8, a, b);
+    t->insert(t->end(), r.x.begin(), r.x.end());
+    w->insert(w->end(), r.weight.begin(), r.weight.end());
 }
 
 // The phi interval [phi0, phi1] of the region at theta_m (empty when phi1 <= phi0).
