@@ -58,6 +58,16 @@ PiecewiseLinearSpectrum::PiecewiseLinearSpectrum(std::span<const Float> l, std::
     for (size_t i = 1; i < lambdas.size(); ++i)
         if (!(lambdas[i] > lambdas[i - 1]))
             throw std::invalid_argument("PiecewiseLinearSpectrum: wavelengths not increasing");
+    if (lambdas.size() >= 2 && lambdas.back() - lambdas.front() < 1e5f) {
+        const Float start = std::floor(lambdas.front());
+        const size_t n = size_t(lambdas.back() - start) + 2;
+        intervalAtNm.resize(n);
+        size_t o = 0;
+        for (size_t k = 0; k < n; ++k) {
+            while (o + 2 < lambdas.size() && lambdas[o + 1] <= start + Float(k)) ++o;
+            intervalAtNm[k] = uint32_t(o);
+        }
+    }
 }
 
 PiecewiseLinearSpectrum PiecewiseLinearSpectrum::FromInterleaved(std::span<const Float> samples,
@@ -128,7 +138,14 @@ std::optional<PiecewiseLinearSpectrum> PiecewiseLinearSpectrum::Read(const std::
 Float PiecewiseLinearSpectrum::operator()(Float lambda) const {
     if (lambdas.empty() || !(lambda >= lambdas.front()) || lambda > lambdas.back()) return 0;
     if (lambdas.size() == 1) return values[0];
-    size_t o = FindInterval(lambdas.size(), [&](size_t i) { return lambdas[i] <= lambda; });
+    size_t o;
+    if (!intervalAtNm.empty()) {
+        size_t k = std::min(intervalAtNm.size() - 1, size_t(lambda - std::floor(lambdas.front())));
+        o = intervalAtNm[k];
+        while (o + 2 < lambdas.size() && lambdas[o + 1] <= lambda) ++o;
+    } else {
+        o = FindInterval(lambdas.size(), [&](size_t i) { return lambdas[i] <= lambda; });
+    }
     Float t = (lambda - lambdas[o]) / (lambdas[o + 1] - lambdas[o]);
     return Lerp(t, values[o], values[o + 1]);
 }

@@ -6,6 +6,7 @@
 // relative units for normalised illuminants.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -89,6 +90,9 @@ class PiecewiseLinearSpectrum {
 
   private:
     std::vector<Float> lambdas, values;
+    // First interval for each whole nanometre from floor(lambdas.front()): lookups start there
+    // and step at most over the nodes inside that nanometre (empty for very wide ranges)
+    std::vector<uint32_t> intervalAtNm;
 };
 
 // Blackbody emission at temperature T (K), normalised so that its peak over wavelength is 1

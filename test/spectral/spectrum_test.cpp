@@ -41,6 +41,25 @@ TEST(Spectrum, PiecewiseLinear) {
     EXPECT_NEAR(n(380), n(500), 1e-6);
 }
 
+TEST(Spectrum, PiecewiseLinearLookupMatchesAScan) {
+    // Irregular nodes, several within one nanometre, and a wide sparse stretch
+    std::vector<Float> l = {300.2f, 300.5f, 300.9f, 301.f, 355.5f, 400.f, 400.25f, 612.7f, 900.f};
+    std::vector<Float> v = {1, 3, 2, 5, 4, 0, 7, 2, 9};
+    PiecewiseLinearSpectrum s(l, v);
+    auto reference = [&](Float x) -> Float {
+        if (!(x >= l.front()) || x > l.back()) return 0;
+        size_t o = 0;
+        while (o + 2 < l.size() && l[o + 1] <= x) ++o;
+        Float t = (x - l[o]) / (l[o + 1] - l[o]);
+        return (1 - t) * v[o] + t * v[o + 1];
+    };
+    for (int k = 0; k <= 70000; ++k) {
+        Float x = 299.f + k * 0.01f;
+        EXPECT_FLOAT_EQ(s(x), reference(x)) << x;
+    }
+    for (Float x : l) EXPECT_FLOAT_EQ(s(x), reference(x)) << x;
+}
+
 TEST(Spectrum, ReadFile) {
     const std::string path = testing::TempDir() + "kiln_spectrum_test.spd";
     {
