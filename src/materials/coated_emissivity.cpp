@@ -147,11 +147,9 @@ SampledSpectrum CoatedDiffuseEmissivity::Albedo(const CoatedDiffuseBxDF& bxdf, V
     auto [ai, at] = alphas.Locate(LookupAlpha(bxdf.Top().Distribution(), wo));
     const int nCos = tables->Cosines().Size(), nA = alphas.Size(), K = nCoefficients;
     const SampledSpectrum& r = bxdf.Bottom().Reflectance();
-    SampledSpectrum A;
-    for (int i = 0; i < NSpectrumSamples; ++i) {
-        auto [li, lt] = lambdas.Locate(lambda[i]);
-        // Interpolated coefficients, then Horner in r
-        float a[kMaxCoefficients] = {};
+    // Coefficients interpolated at the wavelength node li (+ lt towards the next)
+    auto interpolate = [&](int li, float lt, float* a) {
+        for (int k = 0; k < K; ++k) a[k] = 0;
         for (int dl = 0; dl < 2; ++dl)
             for (int da = 0; da < 2; ++da)
                 for (int dc = 0; dc < 2; ++dc) {
@@ -162,6 +160,17 @@ SampledSpectrum CoatedDiffuseEmissivity::Albedo(const CoatedDiffuseBxDF& bxdf, V
                         &coefficients[((size_t(l) * nA + al) * nCos + ci + dc) * size_t(K)];
                     for (int k = 0; k < K; ++k) a[k] += w * row[k];
                 }
+    };
+    float a[kMaxCoefficients];
+    const bool dispersive = lambdas.Size() > 1;
+    if (!dispersive) interpolate(0, 0, a);  // the same for every wavelength
+    SampledSpectrum A;
+    for (int i = 0; i < NSpectrumSamples; ++i) {
+        if (dispersive) {
+            auto [li, lt] = lambdas.Locate(lambda[i]);
+            interpolate(li, lt, a);
+        }
+        // Horner in r
         Float v = 0;
         for (int k = K - 1; k >= 0; --k) v = v * r[i] + a[k];
         A[i] = v;

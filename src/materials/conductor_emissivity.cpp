@@ -2,9 +2,11 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
+#include <complex>
 
-#include "materials/bxdfs/conductor_albedo.h"
+#include "core/base/low_rank.h"
 #include "materials/bxdfs/fresnel.h"
 #include "materials/materials.h"
 #include "textures/basic_textures.h"
@@ -32,19 +34,17 @@ Float EquivalentAlpha(const TrowbridgeReitzDistribution& d) {
     return std::sqrt((Sqr(d.AlphaX()) + Sqr(d.AlphaY())) / 2);
 }
 
-// W_j at (mu, alpha) from the scene-wide table, bilinear in cos and log(alpha).
-void SharedWeights(const EmissivityTables& tables, const std::vector<float>& moments, Float mu,
-                   Float alpha, float* w) {
-    auto [ci, ct] = tables.Cosines().Locate(mu);
-    auto [ai, at] = tables.LogAlphas().Locate(std::log(std::max(alpha, 1e-4f)));
-    const int nAlpha = tables.LogAlphas().Size();
-    const float* w00 = &moments[(size_t(ci) * nAlpha + ai) * H];
-    const float* w01 = &moments[(size_t(ci) * nAlpha + ai + 1) * H];
-    const float* w10 = &moments[(size_t(ci + 1) * nAlpha + ai) * H];
-    const float* w11 = &moments[(size_t(ci + 1) * nAlpha + ai + 1) * H];
-    for (int j = 0; j < H; ++j)
-        w[j] =
-            (1 - ct) * ((1 - at) * w00[j] + at * w01[j]) + ct * ((1 - at) * w10[j] + at * w11[j]);
+// Reflectance nodes for textured "reflectance" (F as a function of r, eta = 1): denser
+// towards r = 1, where k = 2 sqrt(r) / sqrt(1 - r) grows without bound.
+TableAxis ReflectanceNodes() {
+    std::vector<float> r;
+    constexpr int n = 513;
+    for (int i = 0; i < n; ++i) {
+        double x = double(i) / (n - 1);
+        r.push_back(float(std::min(0.9999, 1 - (1 - x) * (1 - x))));
+    }
+    r.erase(std::unique(r.begin(), r.end()), r.end());
+    return TableAxis(std::move(r));
 }
 
 }  // namespace
@@ -84,7 +84,6 @@ int ConductorEmissivity::Azimuths::Weights(Vector3f wo, int node[4], float weigh
 ConductorEmissivity::ConductorEmissivity(const ConductorMaterial& m, EmissivityTables& t)
     : tables(&t) {
     std::optional<Float> u = ConstantValue(m.URoughness()), v = ConstantValue(m.VRoughness());
-    uniformSpectra = IsConstant(m.Eta()) && IsConstant(m.K()) && IsConstant(m.Reflectance());
     auto remap = [&](Float r) {
         return std::max(0.f,
                         m.RemapRoughness() ? TrowbridgeReitzDistribution::RoughnessToAlpha(r) : r);
@@ -93,13 +92,15 @@ ConductorEmissivity::ConductorEmissivity(const ConductorMaterial& m, EmissivityT
         uniformAlpha = true;
         alphaX = remap(*u);
         alphaY = remap(*v);
+        if (std::max(alphaX, alphaY) < 1e-3f) return;  // smooth: Fresnel's equations
     } else {
         // Textured roughness: exact when both directions share one texture
         exact = m.URoughness().Variant() == m.VRoughness().Variant();
     }
+
+    // Moment weights
     const TableAxis& cosines = t.Cosines();
-    const TableAxis& lambdas = t.FineWavelengths();
-    if (uniformAlpha && std::max(alphaX, alphaY) >= 1e-3f) {
+    if (uniformAlpha) {
         if (alphaX != alphaY) {
             azimuths.n = 17;
             azimuths.smoothAxisY = alphaY < alphaX;
@@ -122,123 +123,125 @@ ConductorEmissivity::ConductorEmissivity(const ConductorMaterial& m, EmissivityT
             }
             for (int j = 0; j < H; ++j) weights[size_t(cell) * H + j] = float(w[size_t(j)]);
         });
-    } else if (!uniformAlpha) {
+    } else {
         moments = &t.ConductorMoments();
     }
-    if (uniformSpectra) {
-        // F(mu_j) at every table wavelength, from the material's constant optical constants
-        fresnel.resize(size_t(lambdas.Size()) * H);
-        MaterialEvalContext ctx;
-        for (int l = 0; l < lambdas.Size(); ++l) {
-            SampledWavelengths lambda = SampledWavelengths::FromWavelength(lambdas.Node(l));
-            ConductorBxDF b = m.GetBxDF(ctx, lambda);
-            for (int j = 0; j < H; ++j)
-                fresnel[size_t(l) * H + j] =
-                    float(FrComplex(Float(ConductorAlbedoMoments::Node(j)),
-                                    std::complex<Float>(b.Eta()[0], b.K()[0])));
+
+    // Fresnel factors F(mu_j, x) over x, factorised
+    bool etaK = m.Eta() && m.K();
+    if (etaK ? IsConstant(m.Eta()) && IsConstant(m.K()) : IsConstant(m.Reflectance()))
+        fresnelAxis = FresnelAxis::Wavelength;
+    else if (!etaK)
+        fresnelAxis = FresnelAxis::Reflectance;
+    else
+        return;  // textured eta and k: F per sample
+    fresnelNodes =
+        fresnelAxis == FresnelAxis::Wavelength ? t.FineWavelengths() : ReflectanceNodes();
+    const int nx = fresnelNodes.Size();
+    std::vector<double> f(size_t(H) * nx);
+    for (int x = 0; x < nx; ++x) {
+        std::complex<Float> eta;
+        if (fresnelAxis == FresnelAxis::Wavelength) {
+            SampledWavelengths lambda = SampledWavelengths::FromWavelength(fresnelNodes.Node(x));
+            ConductorBxDF b = m.GetBxDF(MaterialEvalContext(), lambda);
+            eta = {b.Eta()[0], b.K()[0]};
+        } else {
+            Float r = fresnelNodes.Node(x);
+            eta = {1, 2 * std::sqrt(r) / std::sqrt(1 - r)};
         }
-        auto apply = [&](const float* w, int l) {
-            double sum = 0;
-            for (int j = 0; j < H; ++j) sum += double(w[j]) * fresnel[size_t(l) * H + j];
-            return float(sum);
-        };
-        const int nl = lambdas.Size();
-        if (moments) {
-            // Textured roughness: A over the scene-wide cosine x log-alpha grid
-            const int cells = cosines.Size() * t.LogAlphas().Size();
-            albedoByAlpha.resize(size_t(cells) * nl);
-            for (int cell = 0; cell < cells; ++cell)
-                for (int l = 0; l < nl; ++l)
-                    albedoByAlpha[size_t(cell) * nl + l] = apply(&(*moments)[size_t(cell) * H], l);
-        }
-        if (!weights.empty()) {
-            const int cells = cosines.Size() * azimuths.n;
-            albedo.resize(size_t(cells) * nl);
-            for (int cell = 0; cell < cells; ++cell)
-                for (int l = 0; l < nl; ++l)
-                    albedo[size_t(cell) * nl + l] = apply(&weights[size_t(cell) * H], l);
-        }
+        for (int j = 0; j < H; ++j)
+            f[size_t(j) * nx + x] = FrComplex(Float(ConductorAlbedoMoments::Node(j)), eta);
     }
+    LowRankFactors factors = FactorLowRank(f, H, nx, 1e-5);
+    const int rank = factors.rank;
+    stride = (rank + 3) / 4 * 4;  // rows padded with zeros to whole groups of four
+    basis.assign(size_t(nx) * stride, 0.f);
+    for (int x = 0; x < nx; ++x)
+        for (int r = 0; r < rank; ++r)
+            basis[size_t(x) * stride + r] = float(factors.v[size_t(x) * rank + r]);
+    const std::vector<float>& w = moments ? *moments : weights;
+    const size_t cells = w.size() / H;
+    projected.assign(cells * stride, 0.f);
+    for (size_t c = 0; c < cells; ++c)
+        for (int r = 0; r < rank; ++r) {
+            double g = 0;
+            for (int j = 0; j < H; ++j) g += double(w[c * H + j]) * factors.u[size_t(j) * rank + r];
+            projected[c * stride + r] = float(g);
+        }
+    if (!moments) weights.clear();  // only the projections are needed
+}
+
+int ConductorEmissivity::Cells(const TrowbridgeReitzDistribution& d, Vector3f wo, int cell[8],
+                               float weight[8]) const {
+    auto [ci, ct] = tables->Cosines().Locate(std::min<Float>(1, AbsCosTheta(wo)));
+    int n = 0;
+    if (uniformAlpha) {
+        int node[4];
+        float nodeWeight[4];
+        int na = azimuths.Weights(wo, node, nodeWeight);
+        for (int c = 0; c < 2; ++c)
+            for (int a = 0; a < na; ++a) {
+                cell[n] = (ci + c) * azimuths.n + node[a];
+                weight[n++] = (c ? ct : 1 - ct) * nodeWeight[a];
+            }
+    } else {
+        // Cubic in log alpha (uniform nodes), clamped to the axis
+        const TableAxis& alphas = tables->LogAlphas();
+        const int na = alphas.Size();
+        auto [ai, at] = alphas.Locate(std::log(std::max(EquivalentAlpha(d), 1e-4f)));
+        int first = std::clamp(ai - 1, 0, na - 4);
+        double t = ai + at - first;  // position among the four nodes first .. first + 3
+        float aw[4] = {float(-(t - 1) * (t - 2) * (t - 3) / 6), float(t * (t - 2) * (t - 3) / 2),
+                       float(-t * (t - 1) * (t - 3) / 2), float(t * (t - 1) * (t - 2) / 6)};
+        for (int c = 0; c < 2; ++c)
+            for (int a = 0; a < 4; ++a) {
+                cell[n] = (ci + c) * na + first + a;
+                weight[n++] = (c ? ct : 1 - ct) * aw[a];
+            }
+    }
+    return n;
 }
 
 SampledSpectrum ConductorEmissivity::Albedo(const ConductorBxDF& bxdf, Vector3f wo,
                                             const SampledWavelengths& lambda) const {
-    Float mu = std::min<Float>(1, AbsCosTheta(wo));
     const TrowbridgeReitzDistribution& distrib = bxdf.Distribution();
-    if (distrib.EffectivelySmooth()) return FrComplex(mu, bxdf.Eta(), bxdf.K());
-    const TableAxis& lambdas = tables->FineWavelengths();
-    const int nl = lambdas.Size();
-    SampledSpectrum A;
-    if (!albedoByAlpha.empty()) {
-        // Uniform optical constants, textured roughness: one trilinear lookup per wavelength
-        auto [ci, ct] = tables->Cosines().Locate(mu);
-        auto [ai, at] =
-            tables->LogAlphas().Locate(std::log(std::max(EquivalentAlpha(distrib), 1e-4f)));
-        const int na = tables->LogAlphas().Size();
-        auto row = [&](int c, int a) { return &albedoByAlpha[(size_t(c) * na + a) * nl]; };
-        const float* r00 = row(ci, ai);
-        const float* r01 = row(ci, ai + 1);
-        const float* r10 = row(ci + 1, ai);
-        const float* r11 = row(ci + 1, ai + 1);
-        for (int i = 0; i < NSpectrumSamples; ++i) {
-            auto [li, lt] = lambdas.Locate(lambda[i]);
-            auto lerpL = [&](const float* r) { return (1 - lt) * r[li] + lt * r[li + 1]; };
-            A[i] = (1 - ct) * ((1 - at) * lerpL(r00) + at * lerpL(r01)) +
-                   ct * ((1 - at) * lerpL(r10) + at * lerpL(r11));
-        }
-        return A;
-    }
-    // Table cells around wo: two cosines times the azimuth nodes, with their weights
-    int cells = 0, cell[8];
+    if (distrib.EffectivelySmooth())
+        return FrComplex(std::min<Float>(1, AbsCosTheta(wo)), bxdf.Eta(), bxdf.K());
+    int cell[8];
     float cellWeight[8];
-    if (!weights.empty()) {
-        auto [ci, ct] = tables->Cosines().Locate(mu);
-        int node[4];
-        float nodeWeight[4];
-        int n = azimuths.Weights(wo, node, nodeWeight);
-        for (int c = 0; c < 2; ++c)
-            for (int a = 0; a < n; ++a) {
-                cell[cells] = (ci + c) * azimuths.n + node[a];
-                cellWeight[cells++] = (c ? ct : 1 - ct) * nodeWeight[a];
-            }
-    }
-    if (!albedo.empty()) {
-        // Uniform material: one lookup per wavelength
+    const int cells = Cells(distrib, wo, cell, cellWeight);
+    SampledSpectrum A;
+    if (fresnelAxis != FresnelAxis::PerSample) {
+        // G_r at wo, then sum_r G_r V_r(x) per wavelength
+        float g[kMaxRank] = {};
+        for (int k = 0; k < cells; ++k)
+            for (int r = 0; r < stride; ++r)
+                g[r] += cellWeight[k] * projected[size_t(cell[k]) * stride + r];
         for (int i = 0; i < NSpectrumSamples; ++i) {
-            auto [li, lt] = lambdas.Locate(lambda[i]);
-            float a = 0;
-            for (int k = 0; k < cells; ++k) {
-                const float* r = &albedo[size_t(cell[k]) * nl];
-                a += cellWeight[k] * ((1 - lt) * r[li] + lt * r[li + 1]);
+            Float x = lambda[i];
+            if (fresnelAxis == FresnelAxis::Reflectance) {
+                Float k2 = Sqr(bxdf.K()[i]);  // k = 2 sqrt(r / (1 - r))
+                x = k2 / (4 + k2);
             }
+            auto [xi, xt] = fresnelNodes.Locate(x);
+            const float* v0 = &basis[size_t(xi) * stride];
+            const float* v1 = &basis[size_t(fresnelNodes.Next(xi)) * stride];
+            Float a = 0;
+            for (int r = 0; r < stride; ++r) a += g[r] * ((1 - xt) * v0[r] + xt * v1[r]);
             A[i] = a;
         }
         return A;
     }
-    // Moment weights at this point's direction and roughness
-    float w[H];
-    if (!weights.empty()) {
-        for (int j = 0; j < H; ++j) {
-            w[j] = 0;
-            for (int k = 0; k < cells; ++k)
-                w[j] += cellWeight[k] * weights[size_t(cell[k]) * H + j];
-        }
-    } else {
-        // Textured roughness (the shared table was built by the constructor)
-        SharedWeights(*tables, *moments, mu, EquivalentAlpha(distrib), w);
-    }
+    // Textured eta and k: W_j at wo, F(mu_j) per wavelength
+    const std::vector<float>& table = moments ? *moments : weights;
+    float w[H] = {};
+    for (int k = 0; k < cells; ++k)
+        for (int j = 0; j < H; ++j) w[j] += cellWeight[k] * table[size_t(cell[k]) * H + j];
     for (int i = 0; i < NSpectrumSamples; ++i) {
+        std::complex<Float> eta(bxdf.Eta()[i], bxdf.K()[i]);
         double a = 0;
-        if (!fresnel.empty()) {
-            auto [li, lt] = lambdas.Locate(lambda[i]);
-            const float* f0 = &fresnel[size_t(li) * H];
-            const float* f1 = &fresnel[size_t(li + 1) * H];
-            for (int j = 0; j < H; ++j) a += w[j] * ((1 - lt) * f0[j] + lt * f1[j]);
-        } else {
-            std::complex<Float> eta(bxdf.Eta()[i], bxdf.K()[i]);
-            for (int j = 0; j < H; ++j)
-                a += w[j] * FrComplex(Float(ConductorAlbedoMoments::Node(j)), eta);
-        }
+        for (int j = 0; j < H; ++j)
+            a += w[j] * FrComplex(Float(ConductorAlbedoMoments::Node(j)), eta);
         A[i] = Float(a);
     }
     return A;

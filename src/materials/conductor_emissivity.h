@@ -1,21 +1,30 @@
 // Directional albedo of the conductor material's BSDF for Kirchhoff emission (emissivity.h):
 // Fresnel's equations for smooth conductors, and for rough ones the Fresnel-moment form of
-// bxdfs/conductor_albedo.h evaluated from tables built once per material:
-//   uniform optical constants: A(cos theta, lambda) at the material's roughness, or
-//     A(cos theta, log alpha, lambda) over the roughness range for textured roughness (one
-//     bilinear or trilinear lookup per wavelength);
-//   textured optical constants: the moment weights W_j(cos theta, alpha) (at the material's
-//     alpha, or from the scene-wide cosine x alpha table) times F(mu_j) evaluated per sample.
-// Uniform anisotropic roughness adds an azimuth axis to the material's tables (33 nodes, cubic
-// interpolation; the albedo is even about both axes of the distribution). Textured anisotropic
-// roughness would need a four-dimensional table; it uses the isotropic albedo at the root mean
-// square roughness sqrt((alpha_x^2 + alpha_y^2) / 2), an approximation (Exact() is false and
-// scene creation warns; test/materials/emissivity_test.cpp prints its error, 0.08 in albedo
-// at alpha 0.22 x 0.55, and bounds it by 0.1 there).
+// bxdfs/conductor_albedo.h, A = sum_j W_j F(mu_j), from tables built once per material.
+//
+// The moment weights W_j(cos theta, .) are tabulated over the cosine and the azimuth (uniform
+// anisotropic roughness: 17 azimuths, cubic interpolation; the albedo is even about both axes
+// of the distribution) at the material's roughness, or over the cosine and log alpha (the
+// scene-wide table, cubic in log alpha) for textured roughness.
+//
+// The Fresnel factors F(mu_j, x) vary along one parameter x: the wavelength (constant optical
+// constants or reflectance; 1 nm nodes), or the reflectance itself (textured "reflectance":
+// eta = 1 and k from r, as pbrt-v4). Tabulated over x, they are factorised,
+// F(mu_j, x) ~ sum_r U_jr V_r(x), to the rank that reproduces them to 1e-5
+// (core/base/low_rank.h; rank 7 for pbrt's named metals, up to 13 over reflectance), so a
+// lookup interpolates rank-many values over the cosine and roughness once, and rank-many per
+// wavelength over x. Textured eta and k evaluate F(mu_j) per sample.
+//
+// Textured anisotropic roughness would need a four-dimensional table; it uses the isotropic
+// albedo at the root mean square roughness sqrt((alpha_x^2 + alpha_y^2) / 2), an approximation
+// (Exact() is false and scene creation warns; test/materials/emissivity_test.cpp prints its
+// error, 0.08 in albedo at alpha 0.22 x 0.55, and bounds it by 0.1 there).
 #pragma once
 
 #include <vector>
 
+#include "core/base/table_axis.h"
+#include "materials/bxdfs/conductor_albedo.h"
 #include "materials/bxdfs/conductor_bxdf.h"
 #include "materials/emissivity_tables.h"
 #include "spectral/sampled_spectrum.h"
@@ -51,16 +60,30 @@ class ConductorEmissivity {
         int Weights(Vector3f wo, int node[4], float weight[4]) const;
     };
 
+    static constexpr int kMaxRank = ConductorAlbedoMoments::kNodes;
+
   private:
+    // What the Fresnel factors vary with across the material's surface points and wavelengths
+    enum class FresnelAxis { Wavelength, Reflectance, PerSample };
+    // Table cells (cosine x azimuth or cosine x alpha) and weights around wo; returns the count
+    int Cells(const TrowbridgeReitzDistribution& d, Vector3f wo, int cell[8],
+              float weight[8]) const;
+
     const EmissivityTables* tables;
-    bool uniformSpectra = false, uniformAlpha = false, exact = true;
-    float alphaX = 0, alphaY = 0;      // when uniformAlpha
-    Azimuths azimuths;                 // when uniformAlpha
-    std::vector<float> albedo;         // [cos][azimuth][lambda]: uniform spectra and alpha
-    std::vector<float> albedoByAlpha;  // [cos][alpha][lambda]: uniform spectra, textured alpha
-    std::vector<float> fresnel;        // [lambda][j]: F(mu_j), uniform spectra
-    std::vector<float> weights;        // [cos][azimuth][j] at alpha: uniform alpha
-    const std::vector<float>* moments = nullptr;  // the scene-wide table: textured alpha
+    FresnelAxis fresnelAxis = FresnelAxis::PerSample;
+    bool uniformAlpha = false, exact = true;
+    float alphaX = 0, alphaY = 0;  // when uniformAlpha
+    Azimuths azimuths;             // when uniformAlpha
+    // Moment weights W_j: [cos][azimuth][j] at the material's roughness (uniformAlpha), or the
+    // scene-wide [cos][log alpha][j] table
+    std::vector<float> weights;
+    const std::vector<float>* moments = nullptr;
+    // Fresnel factorisation (Wavelength, Reflectance): nodes of x, V_r(x) as [x][r], and the
+    // moment weights projected on U, G_r = sum_j W_j U_jr, per table cell as [cell][r]; rows
+    // of `stride` floats (the rank rounded up to a multiple of four, zero-padded)
+    int stride = 0;
+    TableAxis fresnelNodes;
+    std::vector<float> basis, projected;
 };
 
 }  // namespace kiln

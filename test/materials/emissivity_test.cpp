@@ -228,16 +228,12 @@ TEST(EmissivityTest, RoughConductorSingleScatteringLossIsAsDocumented) {
 namespace kiln {
 namespace {
 
-// Largest deviation of the table albedo from the quadrature at the same direction (no Monte
-// Carlo noise), over directions with cos theta >= muMin.
-double MaxAnisotropicTableError(Fixture& f, Float alphaX, Float alphaY, Float muMin, int n,
-                                uint64_t seed) {
-    ParsedParameterVector p = {
-        Strings("spectrum", "eta", {"metal-Au-eta"}), Strings("spectrum", "k", {"metal-Au-k"}),
-        Float1("uroughness", alphaX), Float1("vroughness", alphaY), Bool1("remaproughness", false)};
-    const Material* m = f.Make("conductor", p);
+// Largest deviation of a conductor's table albedo from the quadrature at the same point,
+// direction and wavelengths (no Monte Carlo noise), over directions with cos theta >= muMin and
+// points uv (fixed, or random when uv is negative).
+double MaxQuadratureError(Fixture& f, const Material* m, Float muMin, int n, uint64_t seed,
+                          Point2f uv = Point2f(-1, -1)) {
     const MaterialAlbedo* albedo = MaterialAlbedo::Create(*m, f.tables, f.arena);
-    EXPECT_TRUE(albedo->Exact());
     RNG rng(seed);
     double worst = 0;
     for (int k = 0; k < n; ++k) {
@@ -245,14 +241,17 @@ double MaxAnisotropicTableError(Fixture& f, Float alphaX, Float alphaY, Float mu
         Float s = std::sqrt(1 - mu * mu);
         Vector3f wo(s * std::cos(phi), s * std::sin(phi), mu);
         SampledWavelengths lambda = SampledWavelengths::SampleVisible(rng.UniformFloat());
-        MaterialEvalContext ctx = Context(Point2f(0.5f, 0.5f), wo);
+        Point2f p = uv.x < 0 ? Point2f(rng.UniformFloat(), rng.UniformFloat()) : uv;
+        MaterialEvalContext ctx = Context(p, wo);
         SampledWavelengths l = lambda;
         BSDF bsdf = m->GetBSDF(ctx, l);
         SampledSpectrum A = albedo->Evaluate(m, bsdf, wo, lambda);
         const ConductorBxDF* c = std::get_if<ConductorBxDF>(&bsdf.GetBxDF().Get());
+        const TrowbridgeReitzDistribution& d = c->Distribution();
+        if (d.EffectivelySmooth()) continue;
         double w[3] = {wo.x, wo.y, wo.z};
         ConductorAlbedoMoments::Weights weights =
-            ConductorAlbedoMoments::Compute(alphaX, alphaY, w);
+            ConductorAlbedoMoments::Compute(d.AlphaX(), d.AlphaY(), w);
         for (int i = 0; i < NSpectrumSamples; ++i) {
             std::complex<Float> eta(c->Eta()[i], c->K()[i]);
             double ref = ConductorAlbedoMoments::Apply(
@@ -261,6 +260,44 @@ double MaxAnisotropicTableError(Fixture& f, Float alphaX, Float alphaY, Float mu
         }
     }
     return worst;
+}
+
+TEST(EmissivityTest, ConductorTablesMatchTheQuadrature) {
+    // Every kind of conductor table against the quadrature: the interpolation over cosine,
+    // roughness and wavelength or reflectance, and the low-rank Fresnel factorisation
+    Fixture f;
+    struct Case {
+        const char* what;
+        ParsedParameterVector params;
+    };
+    auto metal = [](const char* name, ParsedParameterVector more) {
+        ParsedParameterVector p = {
+            Strings("spectrum", "eta", {std::string("metal-") + name + "-eta"}),
+            Strings("spectrum", "k", {std::string("metal-") + name + "-k"})};
+        p.insert(p.end(), more.begin(), more.end());
+        return p;
+    };
+    std::vector<Case> cases = {
+        {"gold 0.01", metal("Au", {Float1("roughness", 0.01f)})},
+        {"copper 0.3", metal("Cu", {Float1("roughness", 0.3f)})},
+        {"silver 1", metal("Ag", {Float1("roughness", 1.f)})},
+        {"aluminium 0.1", metal("Al", {Float1("roughness", 0.1f)})},
+        {"gold, textured roughness", metal("Au", {Texture("roughness", "ramp")})},
+        {"constant reflectance",
+         {Floats("rgb", "reflectance", {0.9f, 0.6f, 0.2f}), Float1("roughness", 0.2f)}},
+        {"textured reflectance", {Texture("reflectance", "colours"), Float1("roughness", 0.2f)}},
+        {"textured reflectance and roughness",
+         {Texture("reflectance", "colours"), Texture("roughness", "ramp")}},
+    };
+    for (const Case& c : cases) {
+        const Material* m = f.Make("conductor", c.params);
+        double above10 = MaxQuadratureError(f, m, 0.1f, 400, 5);
+        double above2 = MaxQuadratureError(f, m, 0.02f, 400, 6);
+        printf("%s: largest table error %.2g (cos theta >= 0.1), %.2g (>= 0.02)\n", c.what, above10,
+               above2);
+        EXPECT_LT(above10, 5e-4) << c.what;
+        EXPECT_LT(above2, 1.5e-3) << c.what;
+    }
 }
 
 TEST(EmissivityTest, AnisotropicRoughConductorTablesMatchTheBSDF) {
@@ -277,8 +314,13 @@ TEST(EmissivityTest, AnisotropicRoughConductorTablesMatchTheBSDF) {
     // The tables' interpolation (cosine, azimuth, wavelength) against the quadrature at the
     // same direction and wavelengths, up to extreme anisotropy
     for (auto [u, v] : {std::pair{0.05f, 0.3f}, {0.01f, 0.5f}, {1.f, 0.01f}, {0.002f, 1.f}}) {
-        double above10 = MaxAnisotropicTableError(f, u, v, 0.1f, 400, 3);
-        double above2 = MaxAnisotropicTableError(f, u, v, 0.02f, 400, 4);
+        const Material* m =
+            f.Make("conductor", {Strings("spectrum", "eta", {"metal-Au-eta"}),
+                                 Strings("spectrum", "k", {"metal-Au-k"}), Float1("uroughness", u),
+                                 Float1("vroughness", v), Bool1("remaproughness", false)});
+        EXPECT_TRUE(MaterialAlbedo::Create(*m, f.tables, f.arena)->Exact());
+        double above10 = MaxQuadratureError(f, m, 0.1f, 400, 3, Point2f(0.5f, 0.5f));
+        double above2 = MaxQuadratureError(f, m, 0.02f, 400, 4, Point2f(0.5f, 0.5f));
         printf("alpha %g x %g: largest table error %.2g (cos theta >= 0.1), %.2g (>= 0.02)\n", u, v,
                above10, above2);
         EXPECT_LT(above10, 5e-4) << u << " " << v;
