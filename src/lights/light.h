@@ -71,6 +71,33 @@ class Light {
         return std::visit([&](auto l) { return l->SampleLi(ctx, u, lambda, allowIncompletePDF); },
                           kind);
     }
+    // As SampleLi, but a light whose radiance at the sampled point costs a surface evaluation
+    // (thermal emission: interaction, BSDF, emissivity) leaves L for DeferredL, so that the
+    // receiver evaluates it only for samples it can use (non-zero BSDF, unoccluded).
+    std::optional<LightLiSample> SampleLiDeferred(const LightSampleContext& ctx, Point2f u,
+                                                  const SampledWavelengths& lambda,
+                                                  bool allowIncompletePDF = false) const {
+        return std::visit(
+            [&](auto l) {
+                if constexpr (requires { l->SampleLiDeferred(ctx, u, lambda, allowIncompletePDF); })
+                    return l->SampleLiDeferred(ctx, u, lambda, allowIncompletePDF);
+                else
+                    return l->SampleLi(ctx, u, lambda, allowIncompletePDF);
+            },
+            kind);
+    }
+    // The radiance of a sample from SampleLiDeferred (its L unless deferred).
+    SampledSpectrum DeferredL(const LightLiSample& ls, const SampledWavelengths& lambda) const {
+        if (!ls.deferredL) return ls.L;
+        return std::visit(
+            [&](auto l) -> SampledSpectrum {
+                if constexpr (requires { l->DeferredL(ls, lambda); })
+                    return l->DeferredL(ls, lambda);
+                else
+                    return ls.L;
+            },
+            kind);
+    }
     // Density per sr with which SampleLi would pick wi (0 for delta lights).
     Float PDF_Li(const LightSampleContext& ctx, Vector3f wi,
                  bool allowIncompletePDF = false) const {

@@ -37,11 +37,14 @@ struct LightSampleContext {
 // Incident radiance L arriving from direction wi (unit, pointing away from the receiving point
 // towards the light), drawn with solid-angle density pdf; pLight is the point on the light (a
 // point beyond the scene's bounding sphere for infinite and distant lights) for shadow rays.
+// A sample drawn with Light::SampleLiDeferred may leave L to be evaluated later
+// (deferredL, Light::DeferredL): for lights whose radiance costs a surface evaluation.
 struct LightLiSample {
     SampledSpectrum L;
     Vector3f wi;
     Float pdf = 0;
     Interaction pLight;
+    bool deferredL = false;
 };
 
 // A light chosen by a light sampler, by its index in the scene's light list.

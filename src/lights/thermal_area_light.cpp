@@ -118,9 +118,10 @@ std::optional<Float> ThermalAreaLight::ParametricPDF(Point3f p) const {
     return distribution->PDF(u) * ss->pdf;
 }
 
-std::optional<LightLiSample> ThermalAreaLight::SampleLi(const LightSampleContext& ctx, Point2f u,
-                                                        const SampledWavelengths& lambda,
-                                                        bool) const {
+std::optional<LightLiSample> ThermalAreaLight::SampleLiDeferred(const LightSampleContext& ctx,
+                                                                Point2f u,
+                                                                const SampledWavelengths&,
+                                                                bool) const {
     // A point on the shape: by power over its parameterisation, or by solid angle
     Point3f p;
     Normal3f n;
@@ -145,16 +146,42 @@ std::optional<LightLiSample> ThermalAreaLight::SampleLi(const LightSampleContext
         pdf = ss->pdf;
     }
     if (!(pdf > 0) || !std::isfinite(pdf) || LengthSquared(p - ctx.p) == 0) return {};
-    Vector3f wi = Normalize(p - ctx.p);
-    // The emission there, from the BSDF built as at a ray hit (on a copy of the wavelengths:
-    // the receiving path keeps all of its own)
-    SurfaceInteraction si = InteractionAt(p, 0, -wi);
+    LightLiSample ls;
+    ls.wi = Normalize(p - ctx.p);
+    ls.pdf = pdf;
+    ls.pLight = Interaction(p, n, Point2f());
+    ls.deferredL = true;
+    return ls;
+}
+
+SampledSpectrum ThermalAreaLight::DeferredL(const LightLiSample& ls,
+                                            const SampledWavelengths& lambda) const {
+    return EmissionAt(ls.pLight.p, -ls.wi, lambda, nullptr);
+}
+
+SampledSpectrum ThermalAreaLight::EmissionAt(Point3f p, Vector3f w,
+                                             const SampledWavelengths& lambda,
+                                             SurfaceInteraction* interaction) const {
+    // The BSDF built as at a ray hit (on a copy of the wavelengths: the receiving path keeps
+    // all of its own)
+    SurfaceInteraction si = InteractionAt(p, 0, w);
     SampledWavelengths l = lambda;
     BSDF bsdf = shader->GetBSDF(si, l);
-    SampledSpectrum Le = emission->L(si, bsdf, -wi, lambda);
-    if (!Le) return {};
-    Interaction pLight(si.p, si.n, si.uv);
-    return LightLiSample{Le, wi, pdf, pLight};
+    if (interaction) *interaction = si;
+    return emission->L(si, bsdf, w, lambda);
+}
+
+std::optional<LightLiSample> ThermalAreaLight::SampleLi(const LightSampleContext& ctx, Point2f u,
+                                                        const SampledWavelengths& lambda,
+                                                        bool allowIncompletePDF) const {
+    std::optional<LightLiSample> ls = SampleLiDeferred(ctx, u, lambda, allowIncompletePDF);
+    if (!ls) return {};
+    SurfaceInteraction si;
+    ls->L = EmissionAt(ls->pLight.p, -ls->wi, lambda, &si);
+    ls->deferredL = false;
+    if (!ls->L) return {};
+    ls->pLight = Interaction(si.p, si.n, si.uv);
+    return ls;
 }
 
 Float ThermalAreaLight::PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool) const {

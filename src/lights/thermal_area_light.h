@@ -54,6 +54,11 @@ class ThermalAreaLight {
     std::optional<LightLiSample> SampleLi(const LightSampleContext& ctx, Point2f u,
                                           const SampledWavelengths& lambda,
                                           bool allowIncompletePDF = false) const;
+    // The point and pdf of SampleLi, with the radiance left to DeferredL.
+    std::optional<LightLiSample> SampleLiDeferred(const LightSampleContext& ctx, Point2f u,
+                                                  const SampledWavelengths& lambda,
+                                                  bool allowIncompletePDF = false) const;
+    SampledSpectrum DeferredL(const LightLiSample& ls, const SampledWavelengths& lambda) const;
     Float PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool allowIncompletePDF = false) const;
     // Emitted power over 360-830 nm, W (both sides), as estimated at creation.
     Float VisiblePower() const { return visiblePower; }
@@ -66,6 +71,9 @@ class ThermalAreaLight {
   private:
     // The full interaction at a point of the shape, with the shape's material and emission.
     SurfaceInteraction InteractionAt(Point3f p, Float time, Vector3f wo) const;
+    // Radiance leaving p towards w, from the BSDF there; the interaction if asked for.
+    SampledSpectrum EmissionAt(Point3f p, Vector3f w, const SampledWavelengths& lambda,
+                               SurfaceInteraction* interaction) const;
     std::optional<Float> ParametricPDF(Point3f p) const;
 
     const Shape* shape;

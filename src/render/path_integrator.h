@@ -146,13 +146,16 @@ class PathIntegrator {
         std::optional<SampledLight> sampled = scene.lightSampler->Sample(ctx, uLight);
         if (!sampled) return {};
         const Light& light = scene.lights[size_t(sampled->index)];
-        std::optional<LightLiSample> ls = light.SampleLi(ctx, uPoint, lambda, true);
-        if (!ls || !ls->L || ls->pdf == 0) return {};
+        // The light's radiance is evaluated last, only for a usable sample
+        std::optional<LightLiSample> ls = light.SampleLiDeferred(ctx, uPoint, lambda, true);
+        if (!ls || ls->pdf == 0 || (!ls->deferredL && !ls->L)) return {};
 
         Vector3f wo = intr.wo, wi = ls->wi;
         SampledSpectrum f = bsdf.f(wo, wi) * AbsDot(wi, intr.shading.n);
         if (!f) return {};
         if (scene.aggregate->IntersectP(intr.SpawnRayTo(ls->pLight), 1 - ShadowEpsilon)) return {};
+        ls->L = light.DeferredL(*ls, lambda);
+        if (!ls->L) return {};
 
         Float lightPdf = sampled->p * ls->pdf;
         if (IsDeltaLight(light.Type())) return ls->L * f / lightPdf;
