@@ -147,3 +147,19 @@ TEST(Fresnel, DielectricReflectPlusTransmitIsOne) {
             }
         }
 }
+
+TEST(Fresnel, ComplexExtremeOpticalConstantsMatchThePolarisedForm) {
+    // From the smallest subnormal to the largest float optical constants: finite, in [0, 1],
+    // and equal to the mean of Rs and Rp from the complex-amplitude form
+    const Float values[] = {1.4e-45f, 1e-30f, 1e-6f, 0.3f, 1, 7, 1e6f, 1e30f, 3e38f};
+    for (Float n : values)
+        for (Float k : values)
+            for (Float c : {1e-6f, 0.1f, 0.7f, 1.f}) {
+                std::complex<Float> eta(n, k);
+                Float r = FrComplex(c, eta);
+                ASSERT_TRUE(std::isfinite(r) && r >= 0 && r <= 1) << n << " " << k << " " << c;
+                FresnelRsRp p = FrComplexPolarized(c, eta);
+                if (std::isfinite(p.Rs) && std::isfinite(p.Rp))
+                    EXPECT_NEAR(r, (p.Rs + p.Rp) / 2, 1e-5f) << n << " " << k << " " << c;
+            }
+}

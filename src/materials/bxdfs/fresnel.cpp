@@ -97,8 +97,9 @@ Float FrComplex(Float cosTheta_i, std::complex<Float> etaf) {
     double e2r = er * er - ei * ei, e2i = 2 * er * ei;
     double inv = sin2Theta_i / (e2r * e2r + e2i * e2i);
     double zr = 1 - e2r * inv, zi = e2i * inv;  // 1 - sin^2 theta_t
-    // Principal square root of z (Im >= 0 for Im z >= 0)
-    double mag = std::hypot(zr, zi);
+    // Principal square root of z (Im >= 0 for Im z >= 0). |z| without hypot's scaling: for
+    // float eta and k, |zr| and |zi| stay below 1e90, so their squares cannot overflow
+    double mag = std::sqrt(zr * zr + zi * zi);
     double t = std::sqrt(0.5 * (mag + std::abs(zr)));
     double ctr, cti;
     if (t == 0) {
