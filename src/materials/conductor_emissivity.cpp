@@ -47,6 +47,57 @@ TableAxis ReflectanceNodes() {
     return TableAxis(std::move(r));
 }
 
+// Cubic Lagrange weights in x over four nodes of an evenly spaced axis (clamped to its ends);
+// returns the first of the four nodes.
+int CubicWeights(const TableAxis& axis, float x, float w[4]) {
+    auto [i, ti] = axis.Locate(x);
+    int first = std::clamp(i - 1, 0, axis.Size() - 4);
+    double t = i + ti - first;  // position among the nodes first .. first + 3
+    w[0] = float(-(t - 1) * (t - 2) * (t - 3) / 6);
+    w[1] = float(t * (t - 2) * (t - 3) / 2);
+    w[2] = float(-t * (t - 1) * (t - 3) / 2);
+    w[3] = float(t * (t - 1) * (t - 2) / 6);
+    return first;
+}
+
+// The albedo from the factorised tables: G_r = sum over cells of weight * projected row, then
+// per wavelength sum_r G_r V_r(x), V interpolated at x. S (the row stride, a multiple of four)
+// is a compile-time constant and the sums run in four lanes, so the loops vectorise.
+struct FactorisedLookup {
+    const float* projected;
+    const int* cell;
+    const float* weight;
+    int cells;
+    const float* basis;
+    const TableAxis& nodes;
+    const Float* x;
+
+    template <int S>
+    SampledSpectrum Apply() const {
+        static_assert(S % 4 == 0 && S <= ConductorEmissivity::kMaxRank);
+        float g[S] = {};
+        for (int k = 0; k < cells; ++k) {
+            const float* row = projected + size_t(cell[k]) * S;
+            for (int r = 0; r < S; ++r) g[r] += weight[k] * row[r];
+        }
+        SampledSpectrum A;
+        for (int i = 0; i < NSpectrumSamples; ++i) {
+            auto [xi, xt] = nodes.Locate(x[i]);
+            const float* v0 = basis + size_t(xi) * S;
+            const float* v1 = basis + size_t(nodes.Next(xi)) * S;
+            float s0[4] = {}, s1[4] = {};
+            for (int r = 0; r < S; r += 4)
+                for (int q = 0; q < 4; ++q) {
+                    s0[q] += g[r + q] * v0[r + q];
+                    s1[q] += g[r + q] * v1[r + q];
+                }
+            A[i] = (1 - xt) * ((s0[0] + s0[1]) + (s0[2] + s0[3])) +
+                   xt * ((s1[0] + s1[1]) + (s1[2] + s1[3]));
+        }
+        return A;
+    }
+};
+
 }  // namespace
 
 // Azimuths
@@ -168,7 +219,31 @@ ConductorEmissivity::ConductorEmissivity(const ConductorMaterial& m, EmissivityT
             for (int j = 0; j < H; ++j) g += double(w[c * H + j]) * factors.u[size_t(j) * rank + r];
             projected[c * stride + r] = float(g);
         }
-    if (!moments) weights.clear();  // only the projections are needed
+    if (!moments) {
+        weights.clear();  // only the projections are needed
+        return;
+    }
+    // Textured roughness: the projections resampled (cubic in log alpha, as Cells interpolates
+    // the shared table) to an alpha axis four times finer, so that a lookup interpolates
+    // linearly between two alpha nodes instead of four
+    const TableAxis& alphas = t.LogAlphas();
+    const int nA = alphas.Size(), nF = 4 * (nA - 1) + 1, nC = cosines.Size();
+    std::vector<float> nodes(static_cast<size_t>(nF));
+    for (int k = 0; k < nF; ++k)
+        nodes[size_t(k)] =
+            alphas.Node(0) + (alphas.Node(nA - 1) - alphas.Node(0)) * float(k) / float(nF - 1);
+    std::vector<float> fine(size_t(nC) * nF * stride, 0.f);
+    for (int c = 0; c < nC; ++c)
+        for (int k = 0; k < nF; ++k) {
+            float aw[4];
+            int first = CubicWeights(alphas, nodes[size_t(k)], aw);
+            float* out = &fine[(size_t(c) * nF + k) * stride];
+            for (int a = 0; a < 4; ++a)
+                for (int r = 0; r < stride; ++r)
+                    out[r] += aw[a] * projected[(size_t(c) * nA + first + a) * stride + r];
+        }
+    projected = std::move(fine);
+    fineLogAlphas = TableAxis(std::move(nodes));
 }
 
 int ConductorEmissivity::Cells(const TrowbridgeReitzDistribution& d, Vector3f wo, int cell[8],
@@ -184,18 +259,23 @@ int ConductorEmissivity::Cells(const TrowbridgeReitzDistribution& d, Vector3f wo
                 cell[n] = (ci + c) * azimuths.n + node[a];
                 weight[n++] = (c ? ct : 1 - ct) * nodeWeight[a];
             }
+    } else if (fineLogAlphas.Size() > 0) {
+        // The resampled projections: linear in log alpha
+        const int na = fineLogAlphas.Size();
+        auto [ai, at] = fineLogAlphas.Locate(std::log(std::max(EquivalentAlpha(d), 1e-4f)));
+        for (int c = 0; c < 2; ++c)
+            for (int a = 0; a < 2; ++a) {
+                cell[n] = (ci + c) * na + ai + a;
+                weight[n++] = (c ? ct : 1 - ct) * (a ? at : 1 - at);
+            }
     } else {
-        // Cubic in log alpha (uniform nodes), clamped to the axis
+        // The shared table: cubic in log alpha
         const TableAxis& alphas = tables->LogAlphas();
-        const int na = alphas.Size();
-        auto [ai, at] = alphas.Locate(std::log(std::max(EquivalentAlpha(d), 1e-4f)));
-        int first = std::clamp(ai - 1, 0, na - 4);
-        double t = ai + at - first;  // position among the four nodes first .. first + 3
-        float aw[4] = {float(-(t - 1) * (t - 2) * (t - 3) / 6), float(t * (t - 2) * (t - 3) / 2),
-                       float(-t * (t - 1) * (t - 3) / 2), float(t * (t - 1) * (t - 2) / 6)};
+        float aw[4];
+        int first = CubicWeights(alphas, std::log(std::max(EquivalentAlpha(d), 1e-4f)), aw);
         for (int c = 0; c < 2; ++c)
             for (int a = 0; a < 4; ++a) {
-                cell[n] = (ci + c) * na + first + a;
+                cell[n] = (ci + c) * alphas.Size() + first + a;
                 weight[n++] = (c ? ct : 1 - ct) * aw[a];
             }
     }
@@ -212,25 +292,34 @@ SampledSpectrum ConductorEmissivity::Albedo(const ConductorBxDF& bxdf, Vector3f 
     const int cells = Cells(distrib, wo, cell, cellWeight);
     SampledSpectrum A;
     if (fresnelAxis != FresnelAxis::PerSample) {
-        // G_r at wo, then sum_r G_r V_r(x) per wavelength
-        float g[kMaxRank] = {};
-        for (int k = 0; k < cells; ++k)
-            for (int r = 0; r < stride; ++r)
-                g[r] += cellWeight[k] * projected[size_t(cell[k]) * stride + r];
+        Float x[NSpectrumSamples];
         for (int i = 0; i < NSpectrumSamples; ++i) {
-            Float x = lambda[i];
+            x[i] = lambda[i];
             if (fresnelAxis == FresnelAxis::Reflectance) {
                 Float k2 = Sqr(bxdf.K()[i]);  // k = 2 sqrt(r / (1 - r))
-                x = k2 / (4 + k2);
+                x[i] = k2 / (4 + k2);
             }
-            auto [xi, xt] = fresnelNodes.Locate(x);
-            const float* v0 = &basis[size_t(xi) * stride];
-            const float* v1 = &basis[size_t(fresnelNodes.Next(xi)) * stride];
-            Float a = 0;
-            for (int r = 0; r < stride; ++r) a += g[r] * ((1 - xt) * v0[r] + xt * v1[r]);
-            A[i] = a;
         }
-        return A;
+        FactorisedLookup l{projected.data(), cell,         cellWeight, cells,
+                           basis.data(),     fresnelNodes, x};
+        switch (stride) {
+            case 4:
+                return l.Apply<4>();
+            case 8:
+                return l.Apply<8>();
+            case 12:
+                return l.Apply<12>();
+            case 16:
+                return l.Apply<16>();
+            case 20:
+                return l.Apply<20>();
+            case 24:
+                return l.Apply<24>();
+            case 28:
+                return l.Apply<28>();
+            default:
+                return l.Apply<32>();
+        }
     }
     // Textured eta and k: W_j at wo, F(mu_j) per wavelength
     const std::vector<float>& table = moments ? *moments : weights;

@@ -5,7 +5,9 @@
 // The moment weights W_j(cos theta, .) are tabulated over the cosine and the azimuth (uniform
 // anisotropic roughness: 17 azimuths, cubic interpolation; the albedo is even about both axes
 // of the distribution) at the material's roughness, or over the cosine and log alpha (the
-// scene-wide table, cubic in log alpha) for textured roughness.
+// scene-wide table, cubic in log alpha) for textured roughness. Where the Fresnel factors are
+// factorised (below), the per-material projections of that table are resampled at load to a
+// log-alpha axis four times finer and interpolated linearly (two alpha nodes per lookup).
 //
 // The Fresnel factors F(mu_j, x) vary along one parameter x: the wavelength (constant optical
 // constants or reflectance; 1 nm nodes), or the reflectance itself (textured "reflectance":
@@ -84,6 +86,9 @@ class ConductorEmissivity {
     int stride = 0;
     TableAxis fresnelNodes;
     std::vector<float> basis, projected;
+    // Textured roughness with factorised Fresnel factors: projected is [cos][fine alpha][r]
+    // over this log-alpha axis (four times finer than the shared table's)
+    TableAxis fineLogAlphas;
 };
 
 }  // namespace kiln
