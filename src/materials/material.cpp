@@ -1,5 +1,7 @@
 #include "materials/material.h"
 
+#include <cstdio>
+
 #include "materials/materials.h"
 #include "spectral/named_spectra.h"
 #include "textures/basic_textures.h"
@@ -46,11 +48,20 @@ std::pair<FloatTexture, FloatTexture> GetRoughness(const TextureParameterDiction
                                                    const std::string& prefix, ObjectArena& arena) {
     std::optional<FloatTexture> u = params.GetFloatTextureOrNull(prefix + "uroughness", arena);
     std::optional<FloatTexture> v = params.GetFloatTextureOrNull(prefix + "vroughness", arena);
+    std::string uName = prefix + "uroughness", vName = prefix + "vroughness";
     if (!u || !v) {
         FloatTexture r = params.GetFloatTexture(prefix + "roughness", 0, arena);
-        if (!u) u = r;
-        if (!v) v = r;
+        if (!u) u = r, uName = prefix + "roughness";
+        if (!v) v = r, vName = prefix + "roughness";
     }
+    // Roughness is never negative (pbrt-v4 takes the square root of it); textured values are
+    // clamped where the distribution is built
+    for (auto [t, name] : {std::pair{*u, uName}, {*v, vName}})
+        if (const FloatConstantTexture* c = t.GetIf<FloatConstantTexture>(); c && c->Value() < 0) {
+            char value[32];
+            std::snprintf(value, sizeof(value), "%g", double(c->Value()));
+            throw SceneError(params.Loc(name), "\"" + name + "\" must be >= 0, not " + value, name);
+        }
     return {*u, *v};
 }
 

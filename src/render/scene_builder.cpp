@@ -58,24 +58,22 @@ void SceneBuilder::LookAt(Float ex, Float ey, Float ez, Float lx, Float ly, Floa
     ApplyTransform([&](const kiln::Transform& t) { return t * *lookAt; });
 }
 
-static std::optional<kiln::Transform> TransformFromFileOrder(const std::array<Float, 16>& m) {
+// Singular matrices are accepted, as pbrt-v4 does (its own scenes use them to flatten or hide
+// objects); what is built under one decides what it can do without an inverse.
+static kiln::Transform TransformFromFileOrder(const std::array<Float, 16>& m) {
     // The file lists the matrix column by column (pbrt-v4 transposes it).
     SquareMatrix4 mat(m.data());
-    SquareMatrix4 t = mat.Transposed();
-    if (!Inverse(t)) return std::nullopt;
-    return kiln::Transform(t);
+    return kiln::Transform(mat.Transposed());
 }
 
-void SceneBuilder::ConcatTransform(const std::array<Float, 16>& m, const FileLoc& loc) {
-    std::optional<kiln::Transform> t = TransformFromFileOrder(m);
-    if (!t) throw SceneError(loc, "ConcatTransform matrix is singular", "ConcatTransform");
-    ApplyTransform([&](const kiln::Transform& ctm) { return ctm * *t; });
+void SceneBuilder::ConcatTransform(const std::array<Float, 16>& m, const FileLoc&) {
+    kiln::Transform t = TransformFromFileOrder(m);
+    ApplyTransform([&](const kiln::Transform& ctm) { return ctm * t; });
 }
 
-void SceneBuilder::Transform(const std::array<Float, 16>& m, const FileLoc& loc) {
-    std::optional<kiln::Transform> t = TransformFromFileOrder(m);
-    if (!t) throw SceneError(loc, "Transform matrix is singular", "Transform");
-    ApplyTransform([&](const kiln::Transform&) { return *t; });
+void SceneBuilder::Transform(const std::array<Float, 16>& m, const FileLoc&) {
+    kiln::Transform t = TransformFromFileOrder(m);
+    ApplyTransform([&](const kiln::Transform&) { return t; });
 }
 
 void SceneBuilder::CoordinateSystem(const std::string& name, const FileLoc&) {
@@ -191,6 +189,8 @@ void SceneBuilder::Camera(const std::string& name, ParsedParameterVector params,
     }
     // The CTM is camera-from-world; the camera's coordinate system is its inverse.
     TransformSet cameraFromWorld = gs.ctm;
+    if (cameraFromWorld.t[0].IsSingular())
+        throw SceneError(loc, "the camera transform is singular (e.g. a zero Scale)", name);
     TransformSet worldFromCamera;
     for (int i = 0; i < 2; ++i) worldFromCamera.t[i] = Inverse(cameraFromWorld.t[i]);
     namedCoordinateSystems["camera"] = worldFromCamera;
@@ -321,6 +321,13 @@ void SceneBuilder::Texture(const std::string& name, const std::string& type,
     tex.parameters = Dict(std::move(params), gs.textureAttributes);
     tex.loc = loc;
     tex.renderFromObject = RenderFromObject();
+    if (tex.renderFromObject.IsSingular()) {
+        // 3D and projective mappings need the inverse
+        diag.Warn(loc,
+                  "texture '" + name +
+                      "' defined under a singular transform; its texture space is world space");
+        tex.renderFromObject = renderFromWorld;
+    }
     auto& list = type == "float" ? scene.floatTextures : scene.spectrumTextures;
     list.emplace_back(name, std::move(tex));
 }
@@ -351,6 +358,11 @@ void SceneBuilder::NamedMaterial(const std::string& name, const FileLoc& loc) {
 void SceneBuilder::LightSource(const std::string& name, ParsedParameterVector params,
                                const FileLoc& loc) {
     RequireWorld("LightSource", loc, true);
+    if (RenderFromObject().IsSingular()) {
+        // Lights place and orient themselves through the inverse transform
+        diag.Warn(loc, "light \"" + name + "\" under a singular transform; skipped");
+        return;
+    }
     scene.lights.emplace_back(name, Dict(std::move(params), gs.lightAttributes), loc,
                               RenderFromObject());
 }
@@ -395,7 +407,13 @@ void SceneBuilder::ObjectInstance(const std::string& name, const FileLoc& loc) {
         diag.Warn(loc, "animated transforms are not supported; using the start transform");
         warnedAnimated = true;
     }
-    scene.instances.push_back({name, loc, RenderFromObject() * Inverse(renderFromWorld)});
+    kiln::Transform renderFromInstance = RenderFromObject() * Inverse(renderFromWorld);
+    if (renderFromInstance.IsSingular()) {
+        // An instance flattened to zero volume (Embree needs the inverse to trace it)
+        diag.Warn(loc, "ObjectInstance '" + name + "' under a singular transform; skipped");
+        return;
+    }
+    scene.instances.push_back({name, loc, renderFromInstance});
 }
 
 void SceneBuilder::EndOfFiles() {

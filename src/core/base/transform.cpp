@@ -80,6 +80,13 @@ Transform::Transform(const SquareMatrix4& m) : m(m) {
     }
 }
 
+bool Transform::IsSingular() const {
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (!std::isfinite(m.m[i][j]) || !std::isfinite(mInv.m[i][j])) return true;
+    return false;
+}
+
 bool Transform::SwapsHandedness() const {
     double det =
         double(m.m[0][0]) * (double(m.m[1][1]) * m.m[2][2] - double(m.m[1][2]) * m.m[2][1]) -

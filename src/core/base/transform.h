@@ -30,6 +30,9 @@ class Transform {
     bool IsIdentity() const { return m.IsIdentity(); }
     bool operator==(const Transform& t) const { return t.m == m; }
     bool SwapsHandedness() const;
+    // No finite inverse (e.g. Scale 0, or a matrix whose inverse overflows): points and
+    // vectors still transform, but normals and the inverse give NaN.
+    bool IsSingular() const;
 
     Point3f operator()(Point3f p) const;
     Vector3f operator()(Vector3f v) const;

@@ -20,6 +20,7 @@ BilinearPatchMesh::BilinearPatchMesh(const Transform& renderFromObject, bool rev
       faceIndices(std::move(faces)) {
     p.reserve(P.size());
     for (Point3f q : P) p.push_back(renderFromObject(q));
+    if (renderFromObject.IsSingular()) n.clear();  // normals need the inverse; none exists
     for (Normal3f& nn : n) {
         nn = renderFromObject(nn);
         if (reverseOrientation) nn = -nn;

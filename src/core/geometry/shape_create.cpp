@@ -176,6 +176,14 @@ std::vector<Shape> Shape::Create(const std::string& name, const Transform* rende
                                  const Transform* objectFromRender, bool reverseOrientation,
                                  const ParameterDictionary& params, const FileLoc& loc,
                                  ObjectArena& arena, Diagnostics& diag) {
+    // Quadrics intersect in object space, through the inverse transform; under a singular one
+    // (e.g. Scale 0, as pbrt-v4 scenes use to hide objects) they have no area to hit
+    if ((name == "sphere" || name == "disk" || name == "cylinder") &&
+        renderFromObject->IsSingular()) {
+        diag.Warn(loc, "\"" + name + "\" under a singular transform has no area; skipped");
+        params.MarkAllUsed();
+        return {};
+    }
     if (name == "sphere") {
         Float radius = params.GetOneFloat("radius", 1);
         Float zMin = params.GetOneFloat("zmin", -radius);

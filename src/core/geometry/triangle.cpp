@@ -21,6 +21,12 @@ TriangleMesh::TriangleMesh(const Transform& renderFromObject, bool reverseOrient
       attributes(std::move(attrs)) {
     p.reserve(P.size() + 1);
     for (Point3f q : P) p.push_back(renderFromObject(q));
+    if (renderFromObject.IsSingular()) {
+        // A flattened mesh: normals have no transform (it needs the inverse); the geometric
+        // normals of the flattened triangles shade it
+        n.clear();
+        s.clear();
+    }
     for (Normal3f& nn : n) {
         nn = renderFromObject(nn);
         if (reverseOrientation) nn = -nn;

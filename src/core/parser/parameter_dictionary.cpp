@@ -319,6 +319,10 @@ void ParameterDictionary::Set(ParsedParameter p) {
 }
 
 // Unused parameters
+void ParameterDictionary::MarkAllUsed() const {
+    for (const ParsedParameter& p : params) p.lookedUp = true;
+}
+
 void ParameterDictionary::ReportUnused(Diagnostics& diag) const {
     std::vector<const ParsedParameter*> seen;  // looked-up parameters, by type and name
     auto visit = [&](const ParsedParameter& p) {

@@ -92,6 +92,9 @@ class ParameterDictionary {
     // Warns "unused parameter 'float foo'" at the parameter for every parameter never looked
     // up and not mayBeUnused (unless shadowed by a looked-up one of the same type and name).
     void ReportUnused(Diagnostics& diag) const;
+    // Marks every parameter looked up: for a directive that is skipped with a warning of its
+    // own, so that its parameters are not also reported as unused.
+    void MarkAllUsed() const;
 
   private:
     // Last match first: the directive's parameters, then the attributes.

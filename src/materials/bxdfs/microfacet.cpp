@@ -3,7 +3,9 @@
 namespace kiln {
 
 TrowbridgeReitzDistribution::TrowbridgeReitzDistribution(Float ax, Float ay)
-    : alpha_x(ax), alpha_y(ay) {
+    // Negative or NaN alphas (from textures) become 0; huge ones kMaxAlpha
+    : alpha_x(std::min(std::max(0.f, ax), kMaxAlpha)),
+      alpha_y(std::min(std::max(0.f, ay), kMaxAlpha)) {
     if (!EffectivelySmooth()) {
         // A rough lobe with one near-zero alpha makes the slope term in D() blow up.
         alpha_x = std::max<Float>(alpha_x, 1e-4f);

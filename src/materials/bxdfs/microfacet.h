@@ -17,7 +17,10 @@ class TrowbridgeReitzDistribution {
     TrowbridgeReitzDistribution() = default;
     // alpha_x, alpha_y: roughness along the x and y axes of the shading frame (alpha = RMS
     // microfacet slope / sqrt 2). Effectively smooth below 1e-3; otherwise clamped to >= 1e-4.
+    // Alphas are clamped to [0, kMaxAlpha] (NaN to 0): beyond it the lobe no longer changes
+    // visibly, and alpha^2 tan^2(theta) must stay within float range.
     TrowbridgeReitzDistribution(Float alpha_x, Float alpha_y);
+    static constexpr Float kMaxAlpha = 1e3f;
 
     Float D(Vector3f wm) const;
     Float D(Vector3f w, Vector3f wm) const {

@@ -1,0 +1,175 @@
+// Hostile scene input that used to kill kiln (a NaN direction aborting inside Embree) or that
+// pbrt-v4 accepts: out-of-range roughness, constant and textured, and singular transforms on
+// every kind of object. Each either renders only finite values or is an error at its location.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "../render/render_test_util.h"
+
+namespace kiln {
+namespace {
+
+const char* kView = R"(
+Film "rgb" "integer xresolution" 20 "integer yresolution" 20
+Sampler "zsobol" "integer pixelsamples" 8
+Integrator "path" "integer maxdepth" 8
+LookAt 0 1.5 -4  0 0.5 0  0 1 0
+Camera "perspective" "float fov" 45
+)";
+
+const char* kEnvAndFloor = R"(
+LightSource "infinite" "rgb L" [0.4 0.45 0.5]
+Material "diffuse" "rgb reflectance" [0.5 0.5 0.5]
+Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]
+  "point3 P" [-5 0 -5  5 0 -5  5 0 5  -5 0 5]
+)";
+
+struct Rendered {
+    int64_t nonFinite = 0;
+    int nonFinitePixels = 0;
+    double meanY = 0;
+    std::vector<std::string> warnings;
+};
+
+Rendered RenderWorld(const std::string& world) {
+    testing::RenderedScene r =
+        testing::RenderText(std::string(kView) + "WorldBegin\n" + kEnvAndFloor + world);
+    Rendered out;
+    out.nonFinite = r.scene->film->NonFiniteSampleCount();
+    Bounds2i b = r.scene->film->PixelBounds();
+    for (int y = b.pMin.y; y < b.pMax.y; ++y)
+        for (int x = b.pMin.x; x < b.pMax.x; ++x) {
+            Float Y = testing::PixelY(*r.scene, {x, y});
+            if (std::isfinite(Y))
+                out.meanY += Y;
+            else
+                ++out.nonFinitePixels;
+        }
+    out.meanY /= b.Area();
+    for (const auto& w : r.warnings) out.warnings.push_back(w.message);
+    return out;
+}
+
+void ExpectFinite(const Rendered& r, const std::string& what) {
+    EXPECT_EQ(r.nonFinite, 0) << what;
+    EXPECT_EQ(r.nonFinitePixels, 0) << what;
+    EXPECT_GT(r.meanY, 0) << what;
+}
+
+bool HasWarning(const Rendered& r, const std::string& text) {
+    for (const std::string& w : r.warnings)
+        if (w.find(text) != std::string::npos) return true;
+    return false;
+}
+
+std::string ErrorOf(const std::string& scene) {
+    try {
+        testing::RenderText(scene);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(HostileInput, ExtremeAndTexturedNegativeRoughnessRenderFinite) {
+    // Huge alphas used to overflow alpha^2 and negative textured values to take a square root
+    // of a negative number; both made NaN directions that aborted inside Embree
+    const char* textures = R"(
+Texture "checks" "float" "checkerboard" "float uscale" 4 "float vscale" 4
+    "float tex1" 0.3 "float tex2" 1
+Texture "negative" "float" "scale" "texture tex" "checks" "float scale" -2
+)";
+    const char* roughness[] = {"\"float roughness\" 1e30 \"bool remaproughness\" false",
+                               "\"float roughness\" 1e8", "\"float roughness\" 1e-30",
+                               "\"texture roughness\" \"negative\"",
+                               "\"float uroughness\" 1e30 \"float vroughness\" 0 "
+                               "\"bool remaproughness\" false"};
+    for (const char* material : {"dielectric", "conductor", "coateddiffuse"})
+        for (const char* r : roughness) {
+            std::string world = std::string(textures) + "Material \"" + material + "\" " + r +
+                                "\nTranslate 0 0.6 0 Shape \"sphere\" \"float radius\" 0.6\n";
+            ExpectFinite(RenderWorld(world), std::string(material) + " " + r);
+        }
+    std::string coated = std::string(textures) +
+                         "Material \"coatedconductor\" \"texture interface.roughness\" "
+                         "\"negative\" \"float conductor.roughness\" 1e30 "
+                         "\"bool remaproughness\" false\n"
+                         "Translate 0 0.6 0 Shape \"sphere\" \"float radius\" 0.6\n";
+    ExpectFinite(RenderWorld(coated), "coatedconductor");
+}
+
+TEST(HostileInput, NegativeRoughnessIsAnErrorAtTheParameter) {
+    for (const char* material :
+         {"\"dielectric\" \"float roughness\" -0.5", "\"coateddiffuse\" \"float roughness\" -1",
+          "\"conductor\" \"float vroughness\" -1e-3 \"float uroughness\" 0.1",
+          "\"coatedconductor\" \"float conductor.roughness\" -2"}) {
+        std::string error = ErrorOf(std::string(kView) + "WorldBegin\nMaterial " + material +
+                                    "\nShape \"sphere\"\n");
+        EXPECT_NE(error.find("<test>:8:"), std::string::npos) << error;
+        EXPECT_NE(error.find("must be >= 0"), std::string::npos) << error;
+    }
+}
+
+TEST(HostileInput, ShapesUnderSingularTransforms) {
+    // pbrt-v4 accepts singular matrices (its own scenes flatten or hide objects with them)
+    Rendered hidden = RenderWorld(R"(
+Material "conductor" "float roughness" 0.1
+AttributeBegin Scale 0 0 0 Shape "sphere" AttributeEnd
+AttributeBegin ConcatTransform [1 0 0 0  0 0 0 0  0 0 1 0  0 1 0 1] Shape "cylinder" AttributeEnd
+AttributeBegin Scale 1 1 0 Shape "disk" AttributeEnd
+)");
+    ExpectFinite(hidden, "hidden quadrics");
+    EXPECT_TRUE(HasWarning(hidden, "singular transform has no area")) << "quadrics";
+
+    // A mesh with shading normals flattened onto y = 0.5: still visible, no NaN normals
+    Rendered flat = RenderWorld(R"(
+Texture "noise" "spectrum" "fbm"
+Material "diffuse" "texture reflectance" "noise"
+AttributeBegin
+  ConcatTransform [1 0 0 0  0 0 0 0  0 0 1 0  0 0.5 0 1]
+  Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]
+    "point3 P" [-1 0 -1  1 0 -1  1 3 1  -1 3 1] "normal N" [0 1 0  0 1 0  0 1 1  0 1 1]
+    "point2 uv" [0 0 1 0 1 1 0 1]
+  Shape "bilinearmesh" "point3 P" [-1 1 -1  1 1 -1  -1 1 1  1 1 1] "normal N" [0 1 0 0 1 0 0 1 0 0 1 0]
+AttributeEnd
+)");
+    ExpectFinite(flat, "flattened meshes");
+    Rendered floorOnly = RenderWorld("");
+    EXPECT_GT(std::abs(flat.meanY - floorOnly.meanY), 1e-3 * floorOnly.meanY)
+        << "the flattened meshes are visible";
+}
+
+TEST(HostileInput, LightsTexturesAndInstancesUnderSingularTransforms) {
+    Rendered r = RenderWorld(R"(
+AttributeBegin
+  Scale 0 0 0
+  LightSource "spot" "point3 from" [0 3 0] "point3 to" [0 0 0] "rgb I" [5 5 5]
+  LightSource "infinite" "rgb L" [1 1 1]
+  Texture "wood" "spectrum" "wrinkled"
+AttributeEnd
+Material "diffuse" "texture reflectance" "wood"
+AttributeBegin Translate 0 0.5 0 Shape "sphere" "float radius" 0.5 AttributeEnd
+ObjectBegin "ball" Shape "sphere" "float radius" 0.3 ObjectEnd
+AttributeBegin Translate 1 0.3 0 ObjectInstance "ball" AttributeEnd
+AttributeBegin Scale 0 1 1 ObjectInstance "ball" AttributeEnd
+)");
+    ExpectFinite(r, "lights, textures and instances");
+    EXPECT_TRUE(HasWarning(r, "light \"spot\" under a singular transform"));
+    EXPECT_TRUE(HasWarning(r, "texture 'wood' defined under a singular transform"));
+    EXPECT_TRUE(HasWarning(r, "ObjectInstance 'ball' under a singular transform"));
+}
+
+TEST(HostileInput, SingularCameraTransformIsAnError) {
+    std::string error = ErrorOf(R"(Scale 0 0 0
+Camera "perspective"
+WorldBegin
+Shape "sphere"
+)");
+    EXPECT_NE(error.find("<test>:2:"), std::string::npos) << error;
+    EXPECT_NE(error.find("camera transform is singular"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace kiln
