@@ -7,7 +7,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${KILN_BUILD_DIR:-$root/build}"
 
 packages=(build-essential cmake pkg-config libembree-dev libopenimageio-dev openimageio-tools
-          libopenexr-dev libopencolorio-dev libtbb-dev libgtest-dev libbenchmark-dev libfmt-dev
+          libopenexr-dev libopencolorio-dev libtbb-dev zlib1g-dev libgtest-dev libbenchmark-dev libfmt-dev
           clang-format)
 missing=()
 for p in "${packages[@]}"; do

@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
+#include "core/base/file_reading.h"
 #include "spectral/cie.h"
 #include "spectral/color.h"
 #include "spectral/planck.h"
@@ -101,8 +101,10 @@ std::optional<PiecewiseLinearSpectrum> PiecewiseLinearSpectrum::Read(const std::
         if (error) *error = filename + ": " + msg;
         return std::nullopt;
     };
-    std::ifstream in(filename);
-    if (!in) return fail("cannot open spectrum file");
+    std::string contents, readError;
+    if (!ReadFileBytes(filename, &contents, &readError))
+        return fail("cannot read spectrum file: " + readError);
+    std::istringstream in(contents);
 
     // Tokenise: '#' comments to end of line, whitespace and commas separate numbers
     std::vector<Float> vals;

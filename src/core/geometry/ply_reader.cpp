@@ -5,10 +5,10 @@
 #include <bit>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <memory>
 #include <sstream>
 
+#include "core/base/file_reading.h"
 #include "core/geometry/shape_util.h"
 #include "core/parser/diagnostics.h"
 
@@ -154,9 +154,9 @@ TriQuadMesh TriQuadMesh::ReadPLY(const std::string& filename) {
     auto fail = [&](int line, const std::string& message) {
         throw SceneError(FileLoc(file, line, 0), "malformed PLY file: " + message);
     };
-    std::ifstream in(filename, std::ios::binary);
-    if (!in) throw SceneError(FileLoc(file, 0, 0), "cannot open PLY file");
-    std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string data, error;
+    if (!ReadFileBytes(filename, &data, &error))  // gzip-compressed PLY too
+        throw SceneError(FileLoc(file, 0, 0), "cannot read PLY file: " + error);
 
     // Header
     size_t pos = 0;

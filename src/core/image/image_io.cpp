@@ -5,11 +5,15 @@
 #include <Imath/half.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <random>
 
+#include "core/base/file_reading.h"
+#include "core/base/system_memory.h"
 #include "core/image/image.h"
 #include "spectral/color.h"
 
@@ -55,32 +59,55 @@ const RGBColorSpace* MatchColorSpace(const float c[8]) {
     return nullptr;
 }
 
-// A unique temporary name in the directory of `filename`, keeping its extension.
+// A unique temporary name in the directory of `filename`, keeping its extension. The stem is
+// shortened where needed so that the name fits the file-name limit whenever `filename` does.
 std::string TemporaryName(const std::string& filename) {
     namespace fs = std::filesystem;
     fs::path p(filename);
     std::random_device rd;
     uint64_t r = (uint64_t(rd()) << 32) ^ rd();
-    std::string name(".");
-    name.append(p.stem().string());
-    name.append(".tmp");
-    name.append(std::to_string(getpid()));
-    name.push_back('_');
-    name.append(std::to_string(r));
-    name.append(p.extension().string());
-    return (p.parent_path() / name).string();
+    std::string suffix =
+        ".tmp" + std::to_string(getpid()) + "_" + std::to_string(r) + p.extension().string();
+    std::string stem = p.stem().string();
+    constexpr size_t kMaxName = 255;  // NAME_MAX on Linux file systems
+    if (1 + stem.size() + suffix.size() > kMaxName)
+        stem.resize(kMaxName > 1 + suffix.size() ? kMaxName - 1 - suffix.size() : 0);
+    return (p.parent_path() / ("." + stem + suffix)).string();
+}
+
+// The temporary file Image::Write is writing, for RemovePendingTemporaryFile (read from a
+// signal handler: a fixed buffer and a lock-free flag)
+char pendingTemporary[4096];
+std::atomic<bool> hasPendingTemporary{false};
+
+void SetPendingTemporary(const std::string& tmp) {
+    hasPendingTemporary.store(false);
+    if (tmp.size() >= sizeof(pendingTemporary)) return;
+    std::memcpy(pendingTemporary, tmp.c_str(), tmp.size() + 1);
+    hasPendingTemporary.store(true);
 }
 
 }  // namespace
 
+void RemovePendingTemporaryFile() noexcept {
+    if (hasPendingTemporary.load()) unlink(pendingTemporary);
+}
+
 // Image Reading
 Image Image::Read(const std::string& filename, ImageMetadata* metadata,
                   std::optional<ColorEncoding> encoding) {
+    std::string notRegular;
+    if (!IsRegularFile(filename, &notRegular)) Fail(filename, notRegular);  // e.g. /dev/zero
     auto in = OIIO::ImageInput::open(filename);
     if (!in) Fail(filename, OIIOError("cannot open"));
     const OIIO::ImageSpec& spec = in->spec();
     int nc = spec.nchannels;
     if (spec.width <= 0 || spec.height <= 0 || nc <= 0) Fail(filename, "empty image");
+    // A header may claim any size: check what the pixels would take before reading them
+    double bytes = double(spec.width) * spec.height * nc * sizeof(float);
+    if (double memory = PhysicalMemoryBytes(); memory > 0 && bytes > memory / 2)
+        Fail(filename, std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+                           " pixels would take " + FormatBytes(bytes) + " of memory");
     std::vector<std::string> names;
     for (int c = 0; c < nc; ++c) {
         std::string n = c < int(spec.channelnames.size()) ? spec.channelnames[c] : "";
@@ -215,6 +242,10 @@ void Image::Write(const std::string& filename, const ImageMetadata& metadata) co
                                                       : (const void*)out.p32.data();
     std::string tmp = TemporaryName(filename);
     std::error_code ec;
+    SetPendingTemporary(tmp);
+    struct Done {
+        ~Done() { hasPendingTemporary.store(false); }
+    } done;
     if (!output->open(tmp, spec)) {
         std::string err = output->geterror();
         std::filesystem::remove(tmp, ec);

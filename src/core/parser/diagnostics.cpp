@@ -4,16 +4,36 @@
 
 namespace kiln {
 
+std::string Printable(std::string_view text, size_t maxBytes) {
+    std::string s;
+    for (size_t i = 0; i < text.size(); ++i) {
+        if (s.size() >= maxBytes) {
+            s += "... (" + std::to_string(text.size()) + " bytes)";
+            break;
+        }
+        unsigned char c = static_cast<unsigned char>(text[i]);
+        if (c >= 0x20 && c < 0x7f) {
+            s += char(c);
+        } else {
+            static const char* hex = "0123456789abcdef";
+            s += "\\x";
+            s += hex[c >> 4];
+            s += hex[c & 15];
+        }
+    }
+    return s;
+}
+
 std::string FormatDiagnostic(const FileLoc& loc, std::string_view severity,
                              std::string_view message, std::string_view token) {
-    std::string s = loc.ToString();
+    std::string s = Printable(loc.ToString(), 4096);
     if (!s.empty()) s += ": ";
     s += severity;
     s += ": ";
-    s += message;
+    s += Printable(message, 4096);
     if (!token.empty()) {
         s += " (at '";
-        s += token;
+        s += Printable(token, 80);
         s += "')";
     }
     return s;

@@ -33,7 +33,12 @@ class SceneError : public std::runtime_error {
     std::string token_;
 };
 
-// "file:line:column: <severity>: <message>[ (at 'token')]", omitting unknown parts.
+// Text safe for a terminal: bytes outside printable ASCII as \xNN, cut after maxBytes with
+// the full length noted.
+std::string Printable(std::string_view text, size_t maxBytes);
+
+// "file:line:column: <severity>: <message>[ (at 'token')]", omitting unknown parts; every
+// part through Printable (the token cut at 80 bytes), so binary input never reaches a terminal.
 std::string FormatDiagnostic(const FileLoc& loc, std::string_view severity,
                              std::string_view message, std::string_view token = {});
 

@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "core/parser/tokenizer.h"
@@ -30,6 +31,10 @@ std::string FileKey(const std::string& path) {
     std::filesystem::path p = std::filesystem::weakly_canonical(path, ec);
     return ec ? path : p.string();
 }
+
+// Files open at once through Include and Import: deeper nesting is an error (a chain of
+// includes would otherwise recurse until the stack overflows)
+constexpr size_t kMaxIncludeDepth = 128;
 
 bool LooksNumeric(std::string_view w) {
     if (w.empty()) return false;
@@ -61,6 +66,7 @@ class SceneParser {
 
     void Push(std::string contents, std::string filename, std::string key) {
         auto tokenizer = std::make_unique<Tokenizer>(std::move(contents), std::move(filename));
+        ++openFiles[key];
         stack.push_back({std::move(tokenizer), std::move(key)});
     }
 
@@ -79,6 +85,7 @@ class SceneParser {
             eofLoc = tokenizer->EndLoc();
             // Keep the tokenizer (its text backs tokens still in use) until the directive ends.
             finished.push_back(std::move(stack.back().tokenizer));
+            if (--openFiles[stack.back().key] == 0) openFiles.erase(stack.back().key);
             stack.pop_back();
         }
         return std::nullopt;
@@ -258,18 +265,16 @@ class SceneParser {
                                                  std::string* key) {
         std::string path = ResolveFilename(searchDirectory, name);
         *key = FileKey(path);
-        for (const std::string& active : activeKeys())
-            if (active == *key) Fail(t, "'" + name + "' includes itself (directly or not)");
+        if (openFiles.count(*key)) Fail(t, "'" + name + "' includes itself (directly or not)");
+        size_t depth = 0;
+        for (const auto& [k, n] : openFiles) depth += size_t(n);
+        if (depth >= kMaxIncludeDepth)
+            Fail(t, "Include/Import nested more than " + std::to_string(kMaxIncludeDepth) +
+                        " files deep");
         std::string contents, error;
         if (!ReadFileContents(path, &contents, &error))
             Fail(t, "cannot open '" + path + "': " + error);
         return {std::move(contents), path};
-    }
-
-    std::vector<std::string> activeKeys() const {
-        std::vector<std::string> keys = outerKeys;
-        for (const Source& s : stack) keys.push_back(s.key);
-        return keys;
     }
 
     void Include(const Tok& directive) {
@@ -291,12 +296,9 @@ class SceneParser {
         // Parse the file on its own, in an attribute block.
         std::vector<Source> saved = std::move(stack);
         stack.clear();
-        size_t nOuter = outerKeys.size();
-        for (const Source& s : saved) outerKeys.push_back(s.key);
         target.AttributeBegin(loc);
         Run(std::move(contents), std::move(path), std::move(key));
         target.AttributeEnd(loc);
-        outerKeys.resize(nOuter);
         stack = std::move(saved);
     }
 
@@ -474,7 +476,8 @@ class SceneParser {
     std::string searchDirectory;
     std::vector<Source> stack;                         // Open files, innermost last.
     std::vector<std::unique_ptr<Tokenizer>> finished;  // Ended during the current directive.
-    std::vector<std::string> outerKeys;                // Files open around an Import.
+    // Every open file (those of `stack` and those an Import set aside) by key, with a count
+    std::unordered_map<std::string, int> openFiles;
     std::optional<Tok> pending;
     FileLoc eofLoc;
     bool worldBegun = false;

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "core/base/file_reading.h"
 #include "core/parser/diagnostics.h"
 
 namespace kiln {
@@ -164,19 +165,7 @@ std::optional<Token> Tokenizer::Next() {
 
 // Files
 bool ReadFileContents(const std::string& filename, std::string* contents, std::string* error) {
-    std::FILE* f = std::fopen(filename.c_str(), "rb");
-    if (!f) {
-        *error = std::strerror(errno);
-        return false;
-    }
-    contents->clear();
-    char buf[1 << 16];
-    size_t n;
-    while ((n = std::fread(buf, 1, sizeof(buf), f)) > 0) contents->append(buf, n);
-    bool ok = !std::ferror(f);
-    if (!ok) *error = std::strerror(errno);
-    std::fclose(f);
-    return ok;
+    return ReadFileBytes(filename, contents, error);
 }
 
 // Numbers

@@ -62,7 +62,8 @@ class Tokenizer {
     std::deque<std::string> decoded_;  // Storage for strings that contained escapes.
 };
 
-// Reads a whole file; on failure returns false and sets *error to the system's reason.
+// Reads a whole scene file (ReadFileBytes: regular files only, gzip decompressed); on failure
+// returns false and sets *error to the reason.
 bool ReadFileContents(const std::string& filename, std::string* contents, std::string* error);
 
 // Number parsing (pbrt-v4 syntax: optional sign, digits, optional fraction and exponent; the
