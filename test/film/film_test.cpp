@@ -9,40 +9,12 @@
 
 #include "core/base/statistics.h"
 #include "core/parser/parameter_dictionary.h"
+#include "film_test_util.h"
 
 namespace kiln {
 namespace {
 
 namespace fs = std::filesystem;
-
-ParsedParameter Param(std::string type, std::string name, std::vector<Float> floats = {},
-                      std::vector<int> ints = {}, std::vector<std::string> strings = {},
-                      std::vector<uint8_t> bools = {}) {
-    ParsedParameter p;
-    p.type = std::move(type);
-    p.name = std::move(name);
-    p.floats = std::move(floats);
-    p.ints = std::move(ints);
-    p.strings = std::move(strings);
-    p.bools = std::move(bools);
-    return p;
-}
-
-struct FilmFixture {
-    ObjectArena arena;
-    Diagnostics diag{nullptr};
-    BoxFilter box;
-    Filter filter{&box};
-    RGBFilm* Make(ParsedParameterVector params, std::string type = "rgb", Float exposureTime = 1) {
-        ParameterDictionary dict(std::move(params), nullptr);
-        return RGBFilm::Create(type, dict, exposureTime, filter, &RGBColorSpace::sRGB(), FileLoc(),
-                               arena, diag);
-    }
-};
-
-ParsedParameterVector SmallRes() {
-    return {Param("integer", "xresolution", {}, {8}), Param("integer", "yresolution", {}, {4})};
-}
 
 Float Luminance(RGB rgb) { return RGBColorSpace::sRGB().ToXYZ(rgb).Y; }
 

@@ -314,7 +314,7 @@ struct Frame {
 // Axis-aligned boxes
 struct Bounds2i {
     Point2i pMin, pMax;  // half-open: [pMin, pMax)
-    int Area() const { return (pMax.x - pMin.x) * (pMax.y - pMin.y); }
+    int64_t Area() const { return int64_t(pMax.x - pMin.x) * (pMax.y - pMin.y); }
     bool IsEmpty() const { return pMin.x >= pMax.x || pMin.y >= pMax.y; }
 };
 struct Bounds2f {

@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
+#include "core/base/system_memory.h"
 #include "core/parser/parameter_dictionary.h"
 
 namespace kiln {
@@ -31,9 +34,19 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
     o.filename = params.GetOneString("filename", "pbrt.exr");
     o.fullResolution =
         Point2i(params.GetOneInt("xresolution", 1280), params.GetOneInt("yresolution", 720));
+    FileLoc resolutionLoc = params.Has("xresolution")   ? params.Loc("xresolution")
+                            : params.Has("yresolution") ? params.Loc("yresolution")
+                                                        : loc;
     if (o.fullResolution.x <= 0 || o.fullResolution.y <= 0)
-        throw SceneError(params.Has("xresolution") ? params.Loc("xresolution") : loc,
-                         "film resolution must be positive", "xresolution");
+        throw SceneError(resolutionLoc, "film resolution must be positive", "xresolution");
+    // Sample indices and sampler hierarchies (zsobol's Morton codes) need each side to fit in
+    // 2^24 pixels, far beyond any camera
+    if (std::max(o.fullResolution.x, o.fullResolution.y) > RGBFilm::kMaxFilmSide)
+        throw SceneError(resolutionLoc,
+                         "film resolution " + std::to_string(o.fullResolution.x) + " x " +
+                             std::to_string(o.fullResolution.y) + " exceeds " +
+                             std::to_string(RGBFilm::kMaxFilmSide) + " pixels on a side",
+                         "xresolution");
     Point2i full = o.fullResolution;
     Bounds2i bounds{{0, 0}, full};
     auto clampToFull = [&](Bounds2i b, const FileLoc& at) {
@@ -83,11 +96,27 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
                          "Degenerate pixel bounds provided to film",
                          !cr.empty() ? "cropwindow" : "pixelbounds");
     o.pixelBounds = bounds;
+    // The pixels rendered must fit in memory (checked before anything is allocated)
+    const bool aovs = params.GetOneBool("writeaovs", type == "gbuffer");
+    const double bytes = double(bounds.Area()) * RGBFilm::BytesPerPixel(aovs);
+    if (bounds.Area() > std::numeric_limits<int32_t>::max() ||
+        (PhysicalMemoryBytes() > 0 && bytes > PhysicalMemoryBytes()))
+        throw SceneError(resolutionLoc,
+                         "film of " + std::to_string(bounds.pMax.x - bounds.pMin.x) + " x " +
+                             std::to_string(bounds.pMax.y - bounds.pMin.y) + " pixels needs " +
+                             FormatBytes(bytes) + ", more than this machine's " +
+                             FormatBytes(PhysicalMemoryBytes()) + " of memory",
+                         "xresolution");
 
     o.savefp16 = params.GetOneBool("savefp16", true);
     o.maxComponentValue = params.GetOneFloat("maxcomponentvalue", Infinity);
     o.diagonal = params.GetOneFloat("diagonal", 35) * 0.001f;
     o.exposureEV = params.GetOneFloat("exposure", 0);
+    if (!(std::abs(o.exposureEV) <= kMaxExposureEV))
+        throw SceneError(
+            params.Loc("exposure"),
+            "film \"exposure\" must be within +-" + std::to_string(int(kMaxExposureEV)) + " stops",
+            "exposure");
     o.view = params.GetOneString("view", "Standard");
     if (o.view != "Standard" && o.view != "Filmic" && o.view != "ACES" && o.view != "Glow" &&
         o.view != "Raw")
@@ -96,7 +125,7 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
             "unknown view \"" + o.view +
                 "\" (expected \"Standard\", \"Filmic\", \"ACES\", \"Glow\" or \"Raw\")",
             o.view);
-    o.writeAOVs = params.GetOneBool("writeaovs", type == "gbuffer");
+    o.writeAOVs = aovs;
     PixelSensor sensor = PixelSensor::Create(params, colorSpace, exposureTime, loc, diag);
     return arena.New<RGBFilm>(o, sensor, filter, colorSpace);
 }
@@ -106,7 +135,7 @@ RGBFilm::RGBFilm(const Options& options, const PixelSensor& sensor, const Filter
                  const RGBColorSpace* cs)
     : opts(options), sensor(sensor), filter(filter), colorSpace(cs ? cs : &RGBColorSpace::sRGB()) {
     outputRGBFromSensorRGB = MulM(colorSpace->RGBFromXYZ(), sensor.XYZFromSensorRGB);
-    size_t n = size_t(std::max(0, opts.pixelBounds.Area()));
+    size_t n = size_t(std::max<int64_t>(0, opts.pixelBounds.Area()));
     pixels.resize(n);
     if (opts.writeAOVs) aovs.resize(n);
 }
@@ -203,11 +232,24 @@ Image RGBFilm::GetImage(ImageMetadata* metadata) const {
 }
 
 void RGBFilm::WriteImage(const std::string& filename, ImageMetadata metadata,
-                         const std::string& viewOverride) const {
+                         const std::string& viewOverride, Diagnostics* diag) const {
     Image image = GetImage(&metadata);
     std::string ext = FileExtension(filename);
     if (ext == "exr") {
-        if (opts.savefp16) image = image.ConvertToFormat(PixelFormat::Half);
+        if (opts.savefp16) {
+            // Half floats end at 65504, which absolute thermal radiance passes near 6000 K:
+            // keep 32-bit floats rather than write infinities
+            float largest = 0;
+            for (int y = 0; y < image.Resolution().y; ++y)
+                for (int x = 0; x < image.Resolution().x; ++x)
+                    for (int c = 0; c < image.NChannels(); ++c)
+                        largest = std::max(largest, std::abs(image.GetChannel({x, y}, c)));
+            if (largest <= kMaxHalf)
+                image = image.ConvertToFormat(PixelFormat::Half);
+            else if (diag)
+                diag->Warn(FileLoc(), filename + ": values up to " + std::to_string(largest) +
+                                          " exceed half-float range (65504); writing 32-bit float");
+        }
         image.Write(filename, metadata);
     } else if (ext == "pfm" || ext == "hdr") {
         image.SelectChannels({"R", "G", "B"}).Write(filename, metadata);

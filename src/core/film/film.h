@@ -90,6 +90,15 @@ class RGBFilm {
     RGBFilm(const Options& options, const PixelSensor& sensor, const Filter& filter,
             const RGBColorSpace* colorSpace);
 
+    // Limits checked by Create: pixels on a side of the full image, and the memory a pixel
+    // of the rendered bounds takes (with or without AOVs).
+    static constexpr int kMaxFilmSide = 1 << 24;
+    // Exposure (film "exposure", kiln --exposure) in stops: 2^64 keeps any radiance finite in
+    // float. Half floats end at kMaxHalf.
+    static constexpr Float kMaxExposureEV = 64;
+    static constexpr float kMaxHalf = 65504;
+    static size_t BytesPerPixel(bool aovs) { return sizeof(Pixel) + (aovs ? sizeof(AOVPixel) : 0); }
+
     Point2i FullResolution() const { return opts.fullResolution; }
     Bounds2i PixelBounds() const { return opts.pixelBounds; }
     // Raster-space area over which samples contribute (pixel bounds grown by the filter
@@ -131,8 +140,10 @@ class RGBFilm {
     // By extension: .exr (linear; half when savefp16, with the AOV layers), .pfm/.hdr (linear
     // float), any other OIIO format through ToDisplayImage with the "view" parameter (or
     // viewOverride if not empty). Atomic (see Image::Write). Throws std::runtime_error.
+    // A half-float EXR whose values would overflow binary16 is written as 32-bit float, with a
+    // warning to diag (if given).
     void WriteImage(const std::string& filename, ImageMetadata metadata,
-                    const std::string& viewOverride = "") const;
+                    const std::string& viewOverride = "", Diagnostics* diag = nullptr) const;
 
     // Exposure in EV stops (film "exposure"): pixel values are scaled by 2^ev.
     void SetExposureEV(Float ev) { opts.exposureEV = ev; }

@@ -1,0 +1,118 @@
+// What the film refuses and what it writes at the limits: films too large for memory or for
+// the samplers, exposure beyond range, half-float overflow (bright thermal radiance) and
+// output names near the file-name limit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+#include "core/film/film.h"
+#include "film_test_util.h"
+
+namespace kiln {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string ErrorOf(FilmFixture& f, ParsedParameterVector params) {
+    try {
+        f.Make(std::move(params));
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+ParsedParameterVector Resolution(int x, int y) {
+    return {Param("integer", "xresolution", {}, {x}), Param("integer", "yresolution", {}, {y})};
+}
+
+struct TempDir {
+    fs::path path =
+        fs::temp_directory_path() / ("kiln_film_output_" + std::to_string(std::random_device()()));
+    TempDir() { fs::create_directories(path); }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+    int Files() const {
+        int n = 0;
+        for ([[maybe_unused]] auto& e : fs::directory_iterator(path)) ++n;
+        return n;
+    }
+};
+
+TEST(FilmOutput, FilmsThatCannotBeRenderedAreErrorsBeforeAllocation) {
+    FilmFixture f;
+    // 46341^2 pixels overflow 32 bits (this used to crash) and need ~69 GB
+    std::string huge = ErrorOf(f, Resolution(46341, 46341));
+    EXPECT_NE(huge.find("film of 46341 x 46341 pixels needs"), std::string::npos) << huge;
+    std::string wide = ErrorOf(f, Resolution(1 << 30, 2));
+    EXPECT_NE(wide.find("exceeds 16777216 pixels on a side"), std::string::npos) << wide;
+    // A huge frame is fine when only a few of its pixels are rendered
+    ParsedParameterVector crop = Resolution(1 << 24, 1 << 24);
+    crop.push_back(Param("integer", "pixelbounds", {}, {100, 102, 7, 8}));
+    RGBFilm* film = f.Make(crop);
+    EXPECT_EQ(film->PixelBounds().Area(), 2);
+}
+
+TEST(FilmOutput, ExposureBeyondRangeIsAnError) {
+    FilmFixture f;
+    for (Float ev : {65.f, -1000.f}) {
+        ParsedParameterVector p = Resolution(4, 4);
+        p.push_back(Param("float", "exposure", {ev}));
+        EXPECT_NE(ErrorOf(f, p).find("must be within +-64 stops"), std::string::npos) << ev;
+    }
+    ParsedParameterVector ok = Resolution(4, 4);
+    ok.push_back(Param("float", "exposure", {-64}));
+    EXPECT_EQ(ErrorOf(f, ok), "no error");
+}
+
+TEST(FilmOutput, HalfFloatExrFallsBackToFloatWhenValuesWouldOverflow) {
+    TempDir dir;
+    for (Float radiance : {1e3f, 1e6f}) {
+        FilmFixture f;
+        RGBFilm* film = f.Make(SmallRes());
+        for (int i = 0; i < 64; ++i)
+            film->AddSample({2, 1}, SampledSpectrum(radiance),
+                            film->SampleWavelengths((i + 0.5f) / 64), nullptr, 1);
+        Diagnostics diag(nullptr);
+        std::string exr = (dir.path / "bright.exr").string();
+        film->WriteImage(exr, {}, "", &diag);
+        Image image = Image::Read(exr);
+        float largest = 0;
+        for (int c = 0; c < 3; ++c) {
+            float v = image.GetChannel({2, 1}, c);
+            ASSERT_TRUE(std::isfinite(v)) << radiance;
+            largest = std::max(largest, v);
+        }
+        if (radiance < 65504) {
+            EXPECT_EQ(image.Format(), PixelFormat::Half);
+            EXPECT_EQ(diag.WarningCount(), 0);
+        } else {
+            EXPECT_EQ(image.Format(), PixelFormat::Float);
+            EXPECT_GT(largest, 65504);
+            ASSERT_EQ(diag.WarningCount(), 1);
+            EXPECT_NE(diag.Warnings()[0].message.find("writing 32-bit float"), std::string::npos);
+        }
+    }
+    EXPECT_EQ(dir.Files(), 1);
+}
+
+TEST(FilmOutput, NamesNearTheFileNameLimitAreWritten) {
+    // The temporary name is longer than the final one unless it is shortened to fit
+    TempDir dir;
+    FilmFixture f;
+    RGBFilm* film = f.Make(SmallRes());
+    for (size_t length : {size_t(200), size_t(255)}) {
+        std::string name(length - 4, 'n');
+        name += ".exr";
+        film->WriteImage((dir.path / name).string(), {});
+        EXPECT_TRUE(fs::exists(dir.path / name)) << length;
+    }
+    EXPECT_EQ(dir.Files(), 2);  // no temporaries left
+}
+
+}  // namespace
+}  // namespace kiln
