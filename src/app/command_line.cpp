@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -10,6 +12,7 @@
 
 #include "app/image_diff.h"
 #include "app/progress.h"
+#include "core/film/film.h"
 #include "core/parser/parser.h"
 #include "render/auto_exposure.h"
 #include "render/renderer.h"
@@ -52,11 +55,28 @@ Float ParseFloat(const std::string& flag, const std::string& v) {
 
 // Ctrl-C: the first one asks the render to stop and write what it has; a second one kills.
 // A signal handler can only reach static storage, hence this one process-wide flag.
+// SIGINT and SIGTERM (what schedulers send before they kill a job): the first stops loading or
+// rendering and lets the image so far be written; a second ends the process at once, removing
+// a temporary file being written. The exit status is 128 + the signal's number.
 std::atomic<bool> interruptRequested{false};
+std::atomic<int> interruptSignal{0};
 
-extern "C" void HandleInterrupt(int) {
-    interruptRequested.store(true);
-    std::signal(SIGINT, SIG_DFL);
+extern "C" void HandleInterrupt(int signal) {
+    if (interruptRequested.exchange(true)) {
+        RemovePendingTemporaryFile();
+        _exit(128 + signal);
+    }
+    interruptSignal.store(signal);
+}
+
+int InterruptStatus() { return 128 + interruptSignal.load(); }
+
+void InstallInterruptHandlers() {
+    struct sigaction action = {};
+    action.sa_handler = HandleInterrupt;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
 }
 
 }  // namespace
@@ -174,7 +194,11 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             o.view = value();
         } else if (a == "--exposure") {
             o.exposure = value();
-            if (*o.exposure != "auto") ParseFloat(a, *o.exposure);
+            if (*o.exposure != "auto" &&
+                !(std::abs(ParseFloat(a, *o.exposure)) <= RGBFilm::kMaxExposureEV))
+                throw std::invalid_argument("--exposure must be within +-" +
+                                            std::to_string(int(RGBFilm::kMaxExposureEV)) +
+                                            " stops");
         } else if (a == "--verbose" || a == "-v") {
             o.verbose = true;
         } else if (a == "--quiet" || a == "-q")
@@ -246,6 +270,10 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
             integrator.Set(p);
         }
         scene = Scene::Create(builder.Description(), overrides, diag);
+        if (interruptRequested.load()) {
+            std::cerr << "kiln: interrupted while loading the scene; nothing written\n";
+            return InterruptStatus();
+        }
         if (options.verbose)
             std::fprintf(stderr, "kiln: %d shapes, %zu lights (%d thermal); chosen: %s\n",
                          scene->shapeCount, scene->lights.size(), scene->thermalEmitterCount,
@@ -267,9 +295,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     settings.cancel = &interruptRequested;
     ProgressReporter progress(options.quiet ? nullptr : &std::cerr, isatty(STDERR_FILENO));
     settings.observer = &progress;
-    auto previousHandler = std::signal(SIGINT, HandleInterrupt);
     RenderStats stats = Render(*scene, settings);
-    std::signal(SIGINT, previousHandler == SIG_ERR ? SIG_DFL : previousHandler);
 
     if (int64_t bad = scene->film->NonFiniteSampleCount(); bad > 0) {
         Point2i p = scene->film->FirstNonFinitePixel().value_or(Point2i(-1, -1));
@@ -283,15 +309,19 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
         ev += AutoExposureEV(*scene->film);
         if (options.verbose) std::fprintf(stderr, "kiln: automatic exposure %+.2f EV\n", ev);
     }
+    // The sum (film, --exposure, automatic) is held to the same bound as each part, so that
+    // 2^ev times any radiance stays finite in float
+    ev = std::clamp(ev, -RGBFilm::kMaxExposureEV, RGBFilm::kMaxExposureEV);
     scene->film->SetExposureEV(ev);
     ImageMetadata metadata;
     metadata.strings["kiln:exposureEV"] = std::to_string(ev);
     metadata.renderTimeSeconds = float(stats.seconds);
     metadata.samplesPerPixel = stats.cancelled ? stats.completedSamples : stats.samplesPerPixel;
+    if (stats.cancelled) metadata.strings["kiln:partial"] = "true";
     int status = 0;
     for (const std::string& out : outputs) {
         try {
-            scene->film->WriteImage(out, metadata, options.view);
+            scene->film->WriteImage(out, metadata, options.view, &diag);
         } catch (const std::exception& e) {
             std::cerr << "kiln: error: " << e.what() << "\n";
             status = 1;
@@ -303,7 +333,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
                      stats.resolution.x, stats.resolution.y, stats.samplesPerPixel, stats.seconds,
                      mpaths, stats.cancelled ? " (interrupted)" : "");
     }
-    if (status == 0 && stats.cancelled) status = 130;
+    if (status == 0 && (stats.cancelled || interruptRequested.load())) status = InterruptStatus();
     return status;
 }
 
@@ -328,6 +358,7 @@ int RunKiln(int argc, char** argv) {
         return 0;
     }
 
+    InstallInterruptHandlers();
     if (!options.frames) return RenderFrame(options, std::nullopt, options.outputs);
     // Animation: every frame is parsed, built and rendered on its own (deterministic and
     // independent, so frames can be rendered on different machines).
@@ -336,7 +367,7 @@ int RunKiln(int argc, char** argv) {
             std::fprintf(stderr, "kiln: frame %d (t = %.4g s)\n", f, f / options.fps);
         int status = RenderFrame(options, f, options.outputs);
         if (status != 0) return status;
-        if (interruptRequested.load()) return 130;
+        if (interruptRequested.load()) return InterruptStatus();
     }
     return 0;
 }

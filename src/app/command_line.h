@@ -40,7 +40,9 @@ std::string UsageText();
 std::string FrameFilename(const std::string& pattern, int frame);
 
 // Runs the command; returns the process exit code (0 ok, 1 scene or I/O error, 2 usage error,
-// 130 interrupted by Ctrl-C after writing the partial image).
+// 128 + the signal's number when SIGINT (130) or SIGTERM (143) stopped it: after writing the
+// image so far, marked "kiln:partial" with the samples per pixel it holds, or, during loading,
+// with nothing written). A second signal ends the process at once.
 int RunKiln(int argc, char** argv);
 
 }  // namespace kiln

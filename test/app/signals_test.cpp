@@ -1,0 +1,142 @@
+// SIGTERM (what Slurm and other schedulers send) and SIGINT stop the kiln command cleanly: the
+// image rendered so far is written atomically, marked partial with the samples it holds, the
+// exit status is 128 + the signal, and no temporary file is left behind. Runs the kiln binary.
+#include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include "core/image/image.h"
+
+extern char** environ;
+
+namespace kiln {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Child {
+    pid_t pid = -1;
+    int stderrFd = -1;
+};
+
+// Starts the kiln binary with `args`, its standard error on a pipe.
+Child Spawn(const std::vector<std::string>& args) {
+    int fds[2];
+    EXPECT_EQ(pipe(fds), 0);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, fds[1], STDERR_FILENO);
+    posix_spawn_file_actions_addclose(&actions, fds[0]);
+    posix_spawn_file_actions_addclose(&actions, fds[1]);
+    std::string binary = std::string(KILN_BINARY_DIR) + "/kiln";
+    std::vector<char*> argv = {binary.data()};
+    std::vector<std::string> copy = args;
+    for (std::string& a : copy) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    Child c;
+    EXPECT_EQ(posix_spawn(&c.pid, binary.c_str(), &actions, nullptr, argv.data(), environ), 0);
+    posix_spawn_file_actions_destroy(&actions);
+    close(fds[1]);
+    c.stderrFd = fds[0];
+    return c;
+}
+
+// Reads the child's standard error until `marker` appears (true) or it ends (false).
+bool ReadUntil(int fd, const std::string& marker, std::string* seen) {
+    char buf[4096];
+    while (seen->find(marker) == std::string::npos) {
+        ssize_t n = read(fd, buf, sizeof(buf));
+        if (n <= 0) return false;
+        seen->append(buf, size_t(n));
+    }
+    return true;
+}
+
+int ExitStatus(const Child& c) {
+    int status = 0;
+    EXPECT_EQ(waitpid(c.pid, &status, 0), c.pid);
+    close(c.stderrFd);
+    EXPECT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+struct SceneDir {
+    fs::path path =
+        fs::temp_directory_path() / ("kiln_signals_" + std::to_string(std::random_device()()));
+    SceneDir() {
+        fs::create_directories(path);
+        // Far more samples than the test waits for: only a signal ends this render early
+        std::ofstream(path / "scene.pbrt") << R"(
+Film "rgb" "integer xresolution" 64 "integer yresolution" 64
+Sampler "independent" "integer pixelsamples" 1000000
+LookAt 0 0 -4  0 0 0  0 1 0
+Camera "perspective"
+WorldBegin
+LightSource "infinite" "rgb L" [1 1 1]
+Material "conductor" "float roughness" 0.3
+Shape "sphere"
+)";
+    }
+    ~SceneDir() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+    std::vector<std::string> Files() const {
+        std::vector<std::string> names;
+        for (auto& e : fs::directory_iterator(path)) names.push_back(e.path().filename());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+};
+
+class Signals : public ::testing::TestWithParam<int> {};
+
+TEST_P(Signals, StopRenderingAndWriteThePartialImage) {
+    const int signal = GetParam();
+    SceneDir dir;
+    std::string out = (dir.path / "out.exr").string();
+    Child c = Spawn({(dir.path / "scene.pbrt").string(), "--verbose", "--threads", "1", "-o", out});
+    std::string seen;
+    // The choices line comes after loading: from there on, the render runs
+    ASSERT_TRUE(ReadUntil(c.stderrFd, "chosen:", &seen)) << seen;
+    kill(c.pid, signal);
+    ReadUntil(c.stderrFd, "\x04", &seen);  // the rest, to the end
+    EXPECT_EQ(ExitStatus(c), 128 + signal) << seen;
+    EXPECT_EQ(dir.Files(), (std::vector<std::string>{"out.exr", "scene.pbrt"})) << seen;
+    ImageMetadata metadata;
+    Image image = Image::Read(out, &metadata);
+    EXPECT_EQ(metadata.strings["kiln:partial"], "true");
+    ASSERT_TRUE(metadata.samplesPerPixel.has_value());
+    EXPECT_LT(*metadata.samplesPerPixel, 1000000);
+    EXPECT_NE(seen.find("(interrupted)"), std::string::npos) << seen;
+}
+
+TEST_P(Signals, ASecondSignalEndsAtOnceLeavingNoTemporaryFile) {
+    const int signal = GetParam();
+    SceneDir dir;
+    std::string out = (dir.path / "out.png").string();
+    Child c = Spawn({(dir.path / "scene.pbrt").string(), "--verbose", "--threads", "1", "-o", out});
+    std::string seen;
+    ASSERT_TRUE(ReadUntil(c.stderrFd, "chosen:", &seen)) << seen;
+    kill(c.pid, signal);
+    kill(c.pid, signal);
+    ReadUntil(c.stderrFd, "\x04", &seen);
+    EXPECT_EQ(ExitStatus(c), 128 + signal) << seen;
+    // Either the image was written whole before the second signal, or nothing was
+    for (const std::string& name : dir.Files())
+        EXPECT_TRUE(name == "scene.pbrt" || name == "out.png") << name;
+}
+
+INSTANTIATE_TEST_SUITE_P(TermAndInt, Signals, ::testing::Values(SIGTERM, SIGINT),
+                         [](const auto& info) {
+                             return std::string(info.param == SIGTERM ? "SIGTERM" : "SIGINT");
+                         });
+
+}  // namespace
+}  // namespace kiln
