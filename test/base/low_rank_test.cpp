@@ -18,7 +18,9 @@ TEST(LowRank, SymmetricEigenDecomposes) {
     std::vector<double> values, vectors;
     SymmetricEigen(a, n, &values, &vectors);
     for (int c = 0; c < n; ++c) {
-        if (c > 0) EXPECT_GE(values[c - 1], values[c]);
+        if (c > 0) {
+            EXPECT_GE(values[c - 1], values[c]);
+        }
         for (int i = 0; i < n; ++i) {
             double av = 0;
             for (int k = 0; k < n; ++k) av += a[i * n + k] * vectors[k * n + c];

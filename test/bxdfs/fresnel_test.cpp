@@ -159,7 +159,8 @@ TEST(Fresnel, ComplexExtremeOpticalConstantsMatchThePolarisedForm) {
                 Float r = FrComplex(c, eta);
                 ASSERT_TRUE(std::isfinite(r) && r >= 0 && r <= 1) << n << " " << k << " " << c;
                 FresnelRsRp p = FrComplexPolarized(c, eta);
-                if (std::isfinite(p.Rs) && std::isfinite(p.Rp))
+                if (std::isfinite(p.Rs) && std::isfinite(p.Rp)) {
                     EXPECT_NEAR(r, (p.Rs + p.Rp) / 2, 1e-5f) << n << " " << k << " " << c;
+                }
             }
 }
