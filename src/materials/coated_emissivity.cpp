@@ -143,12 +143,13 @@ CoatedDiffuseEmissivity::CoatedDiffuseEmissivity(const CoatedDiffuseMaterial& m,
 SampledSpectrum CoatedDiffuseEmissivity::Albedo(const CoatedDiffuseBxDF& bxdf, Vector3f wo,
                                                 const SampledWavelengths& lambda) const {
     if (fallback) return fallback->Albedo(wo, lambda);
-    auto [ci, ct] = tables->Cosines().Locate(std::min<Float>(1, AbsCosTheta(wo)));
-    auto [ai, at] = alphas.Locate(LookupAlpha(bxdf.Top().Distribution(), wo));
+    // (plain variables: lambdas may not capture structured bindings in clang 14)
+    const auto [ci, ct] = tables->Cosines().Locate(std::min<Float>(1, AbsCosTheta(wo)));
+    const auto [ai, at] = alphas.Locate(LookupAlpha(bxdf.Top().Distribution(), wo));
     const int nCos = tables->Cosines().Size(), nA = alphas.Size(), K = nCoefficients;
     const SampledSpectrum& r = bxdf.Bottom().Reflectance();
     // Coefficients interpolated at the wavelength node li (+ lt towards the next)
-    auto interpolate = [&](int li, float lt, float* a) {
+    auto interpolate = [&, ci = ci, ct = ct, ai = ai, at = at](int li, float lt, float* a) {
         for (int k = 0; k < K; ++k) a[k] = 0;
         for (int dl = 0; dl < 2; ++dl)
             for (int da = 0; da < 2; ++da)

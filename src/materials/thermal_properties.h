@@ -20,7 +20,6 @@ struct ThermalProperties {
     std::optional<FloatTexture> temperature;  // kelvin
     std::optional<EmissionModel> model;
 
-    bool operator==(const ThermalProperties&) const = default;
 };
 
 // Reads (and marks as used) "temperature" and "emission"; SceneError for malformed values. A

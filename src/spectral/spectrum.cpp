@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
@@ -104,6 +105,16 @@ std::optional<PiecewiseLinearSpectrum> PiecewiseLinearSpectrum::Read(const std::
     std::string contents, readError;
     if (!ReadFileBytes(filename, &contents, &readError))
         return fail("cannot read spectrum file: " + readError);
+    return Parse(contents, filename, error);
+}
+
+std::optional<PiecewiseLinearSpectrum> PiecewiseLinearSpectrum::Parse(const std::string& contents,
+                                                                      const std::string& filename,
+                                                                      std::string* error) {
+    auto fail = [&](const std::string& msg) -> std::optional<PiecewiseLinearSpectrum> {
+        if (error) *error = filename + ": " + msg;
+        return std::nullopt;
+    };
     std::istringstream in(contents);
 
     // Tokenise: '#' comments to end of line, whitespace and commas separate numbers
@@ -119,8 +130,9 @@ std::optional<PiecewiseLinearSpectrum> PiecewiseLinearSpectrum::Read(const std::
         while (ls >> tok) {
             char* end = nullptr;
             double d = std::strtod(tok.c_str(), &end);
-            if (end == tok.c_str() || *end != '\0')
-                return fail("line " + std::to_string(lineNo) + ": not a number: '" + tok + "'");
+            if (end == tok.c_str() || *end != '\0' || !std::isfinite(Float(d)))
+                return fail("line " + std::to_string(lineNo) + ": not a finite number: '" +
+                            tok.substr(0, 40) + "'");
             vals.push_back(Float(d));
         }
     }

@@ -80,6 +80,10 @@ class PiecewiseLinearSpectrum {
     // line, wavelengths strictly increasing. nullopt (and *error set) if unreadable or invalid.
     static std::optional<PiecewiseLinearSpectrum> Read(const std::string& filename,
                                                        std::string* error = nullptr);
+    // The same from the file's text (filename only names it in errors).
+    static std::optional<PiecewiseLinearSpectrum> Parse(const std::string& contents,
+                                                        const std::string& filename,
+                                                        std::string* error = nullptr);
 
     Float operator()(Float lambda) const;
     SampledSpectrum Sample(const SampledWavelengths& lambda) const;

@@ -131,6 +131,17 @@ TEST(PLY, MalformedFilesThrow) {
                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
                 "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
                 "out of range");
+    // Indices beyond 32 bits are reported as written, not wrapped
+    ExpectError("huge-index.ply",
+                "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                "property float z\nelement face 1\nproperty list uchar uint vertex_indices\n"
+                "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 4294967295\n",
+                "vertex index 4294967295 out of range (3 vertices)");
+    ExpectError("negative-index.ply",
+                "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n",
+                "vertex index -1 out of range");
     ExpectError("missing.ply", "", "");
     EXPECT_THROW(TriQuadMesh::ReadPLY(TempPath("does_not_exist.ply")), SceneError);
 }

@@ -171,5 +171,73 @@ Shape "sphere"
     EXPECT_NE(error.find("camera transform is singular"), std::string::npos) << error;
 }
 
+TEST(HostileInput, ExtremeValuesRenderFinite) {
+    // Temperatures from 0 to 1e6 K, radii from 1e-20 to 1e20, optical constants 0 or huge,
+    // coordinates far from the origin: every sample finite
+    const std::string cases[] = {
+        R"(Material "diffuse" "float temperature" 1e6
+           Translate 0 0.5 0 Shape "sphere" "float radius" 0.5)",
+        R"(Material "conductor" "float roughness" 0.2 "float temperature" 0
+           Translate 0 0.5 0 Shape "sphere" "float radius" 0.5)",
+        R"(Material "conductor" "float roughness" 0 "float temperature" 1e-3
+           Translate 0 0.5 0 Shape "sphere" "float radius" 1e-20)",
+        R"(Material "diffuse" Shape "sphere" "float radius" 1e20)",
+        R"(Material "conductor" "spectrum eta" [400 0 700 0] "spectrum k" [400 0 700 0]
+           "float roughness" 0.1 "float temperature" 2000
+           Translate 0 0.5 0 Shape "sphere" "float radius" 0.5)",
+        R"(Material "conductor" "spectrum eta" [400 1e30 700 1e30] "spectrum k" [400 1e30 700 1e30]
+           "float temperature" 2000 Translate 0 0.5 0 Shape "sphere" "float radius" 0.5)",
+        R"(Material "dielectric" "float eta" 1e30 "float roughness" 0.3
+           Translate 0 0.5 0 Shape "sphere" "float radius" 0.5)",
+        R"(Material "coateddiffuse" "float eta" 1e-30 "float thickness" 1e30
+           "float temperature" 1e5 Translate 0 0.5 0 Shape "sphere" "float radius" 0.5)",
+        R"(AttributeBegin Translate 1e15 0 0 Scale 1e30 1e30 1e30
+             Shape "sphere" "float radius" 1e20 AttributeEnd)",
+        R"(Material "diffuse" "float temperature" 1500
+           Shape "trianglemesh" "integer indices" [0 1 2] "point3 P" [-1 0 0 1 0 0 0 1e-30 0])",
+    };
+    for (const std::string& c : cases) {
+        Rendered r = RenderWorld(c);
+        EXPECT_EQ(r.nonFinite, 0) << c;
+        EXPECT_EQ(r.nonFinitePixels, 0) << c;
+    }
+    // A whole scene, camera included, 1e15 from the origin
+    testing::RenderedScene far = testing::RenderText(R"(
+Film "rgb" "integer xresolution" 16 "integer yresolution" 16
+Sampler "zsobol" "integer pixelsamples" 8
+LookAt 1e15 1.5 -4  1e15 0.5 0  0 1 0
+Camera "perspective" "float fov" 45
+WorldBegin
+LightSource "infinite" "rgb L" [0.4 0.45 0.5]
+Translate 1e15 0 0
+Material "conductor" "float roughness" 0.1 "float temperature" 1800
+Shape "sphere" "float radius" 0.5
+)");
+    EXPECT_EQ(far.scene->film->NonFiniteSampleCount(), 0);
+}
+
+TEST(HostileInput, PerVertexTemperaturesMustBeKelvin) {
+    std::string error = ErrorOf(std::string(kView) + R"(WorldBegin
+Shape "trianglemesh" "integer indices" [0 1 2] "point3 P" [0 0 0 1 0 0 0 1 0]
+    "float temperature" [300 -5 300]
+)");
+    EXPECT_NE(error.find("<test>:9:"), std::string::npos) << error;
+    EXPECT_NE(error.find("vertex 1 has temperature -5"), std::string::npos) << error;
+}
+
+TEST(HostileInput, PrimitivesBeyondFloatRangeAreSkipped) {
+    Rendered r = RenderWorld(R"(
+AttributeBegin
+  Scale 1e30 1e30 1e30
+  Shape "bilinearmesh" "integer indices" [0 1 2 3 0 4 2 5]
+    "point3 P" [0 0 0 1e20 0 0 0 1 0 1 1 0 2 0 0 2 1 0]
+  Shape "sphere" "float radius" 1e20
+AttributeEnd
+)");
+    ExpectFinite(r, "overflowing primitives");
+    EXPECT_TRUE(HasWarning(r, "1 of 2 \"bilinearmesh\" primitives extend beyond float range"));
+    EXPECT_TRUE(HasWarning(r, "1 of 1 \"sphere\" primitives extend beyond float range"));
+}
+
 }  // namespace
 }  // namespace kiln

@@ -60,6 +60,17 @@ TEST(Spectrum, PiecewiseLinearLookupMatchesAScan) {
     for (Float x : l) EXPECT_FLOAT_EQ(s(x), reference(x)) << x;
 }
 
+TEST(Spectrum, ParseRejectsNonFiniteValues) {
+    for (const char* text : {"400 nan\n500 1\n", "400 1\n500 inf\n", "400 1e999\n500 1\n",
+                             "4e40 1\n5e40 1\n"}) {
+        std::string error;
+        EXPECT_FALSE(PiecewiseLinearSpectrum::Parse(text, "bad.spd", &error)) << text;
+        EXPECT_NE(error.find("bad.spd: line"), std::string::npos) << error;
+        EXPECT_NE(error.find("not a finite number"), std::string::npos) << error;
+    }
+    EXPECT_TRUE(PiecewiseLinearSpectrum::Parse("400 1, 500 2 # ok\n", "ok.spd"));
+}
+
 TEST(Spectrum, ReadFile) {
     const std::string path = testing::TempDir() + "kiln_spectrum_test.spd";
     {

@@ -1,5 +1,7 @@
 #include "core/geometry/accelerator.h"
 
+#include <cassert>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <memory>
@@ -232,7 +234,19 @@ void Accelerator::Commit() {
 }
 
 // Ray queries
+// Rays reach Embree finite (its own assertion aborts otherwise): causes are fixed where they
+// arise (parameters validated at load, shapes with non-finite extents dropped); debug builds
+// check here
+static void AssertFiniteRay(const Ray& ray, Float tMax) {
+    assert(IsFinite(ray.o.x) && IsFinite(ray.o.y) && IsFinite(ray.o.z));
+    assert(IsFinite(ray.d.x) && IsFinite(ray.d.y) && IsFinite(ray.d.z));
+    assert(!(tMax < 0) && !std::isnan(tMax));
+    (void)ray;
+    (void)tMax;
+}
+
 RTCRayHit MakeEmbreeRayHit(const Ray& ray, Float tMax) {
+    AssertFiniteRay(ray, tMax);
     RTCRayHit rh;
     rh.ray.org_x = ray.o.x, rh.ray.org_y = ray.o.y, rh.ray.org_z = ray.o.z;
     rh.ray.dir_x = ray.d.x, rh.ray.dir_y = ray.d.y, rh.ray.dir_z = ray.d.z;
@@ -289,6 +303,7 @@ std::optional<ShapeIntersection> Accelerator::Intersect(const Ray& ray, Float tM
 bool Accelerator::IntersectP(const Ray& ray, Float tMax) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
+    AssertFiniteRay(ray, tMax);
     RTCRay r;
     r.org_x = ray.o.x, r.org_y = ray.o.y, r.org_z = ray.o.z;
     r.dir_x = ray.d.x, r.dir_y = ray.d.y, r.dir_z = ray.d.z;

@@ -2,9 +2,13 @@
 // PLY Polygon File Format" (1994).
 #include "core/geometry/ply_reader.h"
 
+#include <algorithm>
 #include <bit>
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -150,13 +154,18 @@ bool IsPlanar(Point3f p0, Point3f p1, Point3f p2, Point3f p3) {
 
 // PLY reading
 TriQuadMesh TriQuadMesh::ReadPLY(const std::string& filename) {
+    std::string data, error;
+    if (!ReadFileBytes(filename, &data, &error))  // gzip-compressed PLY too
+        throw SceneError(FileLoc(std::make_shared<const std::string>(filename), 0, 0),
+                         "cannot read PLY file: " + error);
+    return ParsePLY(data, filename);
+}
+
+TriQuadMesh TriQuadMesh::ParsePLY(const std::string& data, const std::string& filename) {
     auto file = std::make_shared<const std::string>(filename);
     auto fail = [&](int line, const std::string& message) {
         throw SceneError(FileLoc(file, line, 0), "malformed PLY file: " + message);
     };
-    std::string data, error;
-    if (!ReadFileBytes(filename, &data, &error))  // gzip-compressed PLY too
-        throw SceneError(FileLoc(file, 0, 0), "cannot read PLY file: " + error);
 
     // Header
     size_t pos = 0;
@@ -234,6 +243,9 @@ TriQuadMesh TriQuadMesh::ReadPLY(const std::string& filename) {
     // Element data
     PlyDataReader reader(filename, data, std::min(pos, data.size()), *format, line);
     TriQuadMesh mesh;
+    double nVertices = 0;  // from the header, for checking indices wherever faces come
+    for (const PlyElement& e : elements)
+        if (e.name == "vertex") nVertices = double(e.count);
     std::vector<std::vector<int>> faces;
     std::vector<int> faceIndices;
     bool haveVertices = false;
@@ -294,7 +306,14 @@ TriQuadMesh TriQuadMesh::ReadPLY(const std::string& filename) {
                         bool isIndices = p.name == "vertex_indices" || p.name == "vertex_index";
                         for (size_t k = 0; k < n; ++k) {
                             double v = reader.Read(p.type);
-                            if (isIndices) face.push_back(int(v));
+                            if (!isIndices) continue;
+                            if (!(v >= 0 && v < nVertices &&
+                                  v <= double(std::numeric_limits<int>::max())))
+                                reader.Fail("face " + std::to_string(i) + ": vertex index " +
+                                            std::to_string(int64_t(std::clamp(v, -9e18, 9e18))) +
+                                            " out of range (" + std::to_string(int64_t(nVertices)) +
+                                            " vertices)");
+                            face.push_back(int(v));
                         }
                         if (isIndices) {
                             haveIndices = true;
@@ -305,7 +324,11 @@ TriQuadMesh TriQuadMesh::ReadPLY(const std::string& filename) {
                         }
                     } else {
                         double v = reader.Read(p.type);
-                        if (p.name == "face_indices") faceIndices.push_back(int(v));
+                        if (p.name != "face_indices") continue;
+                        if (!(std::abs(v) <= double(std::numeric_limits<int>::max())))
+                            reader.Fail("face " + std::to_string(i) + ": face index " +
+                                        std::to_string(v) + " does not fit in 32 bits");
+                        faceIndices.push_back(int(v));
                     }
                 }
                 if (!haveIndices) reader.Fail("face element lacks vertex_indices");

@@ -28,6 +28,8 @@ struct TriQuadMesh {
 
     // Reads the file; throws SceneError (file name, and line for ascii) when malformed.
     static TriQuadMesh ReadPLY(const std::string& filename);
+    // The same from the file's bytes (filename only names it in errors).
+    static TriQuadMesh ParsePLY(const std::string& data, const std::string& filename);
 };
 
 }  // namespace kiln

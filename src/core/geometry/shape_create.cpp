@@ -1,4 +1,5 @@
 // Shape::Create: shapes from "Shape" directives, with pbrt-v4 parameter names and defaults.
+#include <cmath>
 #include <string>
 
 #include "core/geometry/ply_reader.h"
@@ -51,6 +52,17 @@ void CheckPerVertex(const std::vector<T>& v, size_t nP, const char* name,
                          name);
 }
 
+// Per-vertex temperatures are kelvin: finite and not negative
+void CheckTemperatures(const std::vector<Float>& t, const FileLoc& at, const std::string& what) {
+    for (size_t i = 0; i < t.size(); ++i)
+        if (!(t[i] >= 0) || !std::isfinite(t[i]))
+            throw SceneError(at,
+                             what + ": vertex " + std::to_string(i) + " has temperature " +
+                                 std::to_string(t[i]) +
+                                 "; temperatures must be finite, non-negative kelvin",
+                             "temperature");
+}
+
 std::vector<Shape> CreateTriangleMesh(const Transform* renderFromObject, bool reverseOrientation,
                                       const ParameterDictionary& params, const FileLoc& loc,
                                       ObjectArena& arena, Diagnostics& diag) {
@@ -83,6 +95,7 @@ std::vector<Shape> CreateTriangleMesh(const Transform* renderFromObject, bool re
     CheckPerVertex(N, P.size(), "N", params, loc);
     CheckPerVertex(S, P.size(), "S", params, loc);
     CheckPerVertex(temperature, P.size(), "temperature", params, loc);
+    CheckTemperatures(temperature, LocOf(params, "temperature", loc), "trianglemesh");
     if (!faceIndices.empty() && faceIndices.size() != indices.size() / 3)
         throw SceneError(LocOf(params, "faceIndices", loc),
                          "number of \"faceIndices\" must match the number of triangles",
@@ -153,6 +166,8 @@ std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverse
         throw SceneError(LocOf(params, "filename", loc), e.Loc().ToString() + ": " + e.Message(),
                          filename);
     }
+    if (auto t = ply.vertexAttributes.find("temperature"); t != ply.vertexAttributes.end())
+        CheckTemperatures(t->second, LocOf(params, "filename", loc), filename);
     std::vector<Shape> shapes;
     if (!ply.triIndices.empty()) {
         auto* mesh = arena.New<TriangleMesh>(
@@ -169,13 +184,11 @@ std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverse
     return shapes;
 }
 
-}  // namespace
-
-// Shape creation
-std::vector<Shape> Shape::Create(const std::string& name, const Transform* renderFromObject,
-                                 const Transform* objectFromRender, bool reverseOrientation,
-                                 const ParameterDictionary& params, const FileLoc& loc,
-                                 ObjectArena& arena, Diagnostics& diag) {
+// The shapes of one directive, before the check for finite extents
+std::vector<Shape> CreateShapes(const std::string& name, const Transform* renderFromObject,
+                                const Transform* objectFromRender, bool reverseOrientation,
+                                const ParameterDictionary& params, const FileLoc& loc,
+                                ObjectArena& arena, Diagnostics& diag) {
     // Quadrics intersect in object space, through the inverse transform; under a singular one
     // (e.g. Scale 0, as pbrt-v4 scenes use to hide objects) they have no area to hit
     if ((name == "sphere" || name == "disk" || name == "cylinder") &&
@@ -238,6 +251,32 @@ std::vector<Shape> Shape::Create(const std::string& name, const Transform* rende
     }
     diag.Warn(loc, "unknown shape \"" + name + "\"; skipped");
     return {};
+}
+
+}  // namespace
+
+// Shape creation
+std::vector<Shape> Shape::Create(const std::string& name, const Transform* renderFromObject,
+                                 const Transform* objectFromRender, bool reverseOrientation,
+                                 const ParameterDictionary& params, const FileLoc& loc,
+                                 ObjectArena& arena, Diagnostics& diag) {
+    std::vector<Shape> shapes = CreateShapes(name, renderFromObject, objectFromRender,
+                                             reverseOrientation, params, loc, arena, diag);
+    // Nothing with a non-finite extent reaches the accelerator (vertices or radii that
+    // overflow float, e.g. 1e30 under a Scale of 1e30)
+    size_t kept = 0;
+    for (const Shape& shape : shapes) {
+        Bounds3f b = shape.Bounds();
+        if (IsFinite(b.pMin.x) && IsFinite(b.pMin.y) && IsFinite(b.pMin.z) && IsFinite(b.pMax.x) &&
+            IsFinite(b.pMax.y) && IsFinite(b.pMax.z))
+            shapes[kept++] = shape;
+    }
+    if (kept < shapes.size())
+        diag.Warn(loc, std::to_string(shapes.size() - kept) + " of " +
+                           std::to_string(shapes.size()) + " \"" + name +
+                           "\" primitives extend beyond float range; skipped");
+    shapes.resize(kept);
+    return shapes;
 }
 
 }  // namespace kiln
