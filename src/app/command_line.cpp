@@ -270,6 +270,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
             integrator.Set(p);
         }
         scene = Scene::Create(builder.Description(), overrides, diag);
+        diag.ReportRepeats();
         if (interruptRequested.load()) {
             std::cerr << "kiln: interrupted while loading the scene; nothing written\n";
             return InterruptStatus();
@@ -279,6 +280,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
                          scene->shapeCount, scene->lights.size(), scene->thermalEmitterCount,
                          scene->features.ToString().c_str());
     } catch (const SceneError& e) {
+        diag.ReportRepeats();
         std::cerr << e.what() << "\n";
         return 1;
     } catch (const std::exception& e) {
@@ -327,6 +329,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
             status = 1;
         }
     }
+    diag.ReportRepeats();
     if (!options.quiet) {
         double mpaths = stats.seconds > 0 ? stats.cameraPaths / stats.seconds * 1e-6 : 0;
         std::fprintf(stderr, "kiln: %dx%d, %d spp, %.2fs wall, %.2f Mpaths/s%s\n",

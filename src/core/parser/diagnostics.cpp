@@ -1,5 +1,6 @@
 #include "core/parser/diagnostics.h"
 
+#include <algorithm>
 #include <iostream>
 
 namespace kiln {
@@ -57,13 +58,33 @@ void Diagnostics::SetOutput(std::ostream* out) {
 
 void Diagnostics::Warn(const FileLoc& loc, std::string message) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (out_) *out_ << FormatDiagnostic(loc, "warning", message) << '\n';
-    warnings_.push_back({loc, std::move(message)});
+    ++total_;
+    auto [it, first] = tallies_.try_emplace(message);
+    Tally& t = it->second;
+    if (first) t.order = tallies_.size();
+    if (++t.count == 1 && out_) *out_ << FormatDiagnostic(loc, "warning", message) << '\n';
+    if (t.count <= kKeptPerMessage) warnings_.push_back({loc, std::move(message)});
+}
+
+void Diagnostics::ReportRepeats() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<std::pair<size_t, const std::string*>> repeated;
+    for (auto& [message, t] : tallies_)
+        if (t.count > 1 && t.count != t.reported) repeated.push_back({t.order, &message});
+    std::sort(repeated.begin(), repeated.end());
+    for (auto [order, message] : repeated) {
+        Tally& t = tallies_[*message];
+        if (out_)
+            *out_ << FormatDiagnostic(FileLoc(), "warning",
+                                      *message + " (" + std::to_string(t.count) + " times in all)")
+                  << '\n';
+        t.reported = t.count;
+    }
 }
 
 int Diagnostics::WarningCount() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    return int(warnings_.size());
+    return total_;
 }
 
 std::vector<Diagnostics::Warning> Diagnostics::Warnings() const {

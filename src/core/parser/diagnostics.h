@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "core/parser/file_loc.h"
@@ -58,17 +59,33 @@ class Diagnostics {
 
     void SetOutput(std::ostream* out);
 
-    // Thread-safe: scene objects may be created in parallel.
+    // Thread-safe: scene objects may be created in parallel. Each distinct message is printed
+    // the first time only (a hair file can repeat one warning a million times) and kept, with
+    // its location, up to kKeptPerMessage times; ReportRepeats prints how often each recurred.
     void Warn(const FileLoc& loc, std::string message);
     void Warn(std::string message) { Warn(FileLoc(), std::move(message)); }
 
+    // Prints "warning: <message> (N times in all)" for every message given more than once
+    // since the last call, in the order they first came.
+    void ReportRepeats();
+
+    // Every warning given, repeats included.
     int WarningCount() const;
+    // The warnings kept (see Warn).
     std::vector<Warning> Warnings() const;
 
+    static constexpr int kKeptPerMessage = 100;
+
   private:
+    struct Tally {
+        int count = 0, reported = 0;
+        size_t order = 0;
+    };
     mutable std::mutex mutex_;
     std::ostream* out_;
     std::vector<Warning> warnings_;
+    std::unordered_map<std::string, Tally> tallies_;
+    int total_ = 0;
 };
 
 }  // namespace kiln
