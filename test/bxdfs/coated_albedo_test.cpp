@@ -50,7 +50,7 @@ TEST(CoatedDiffuse, AlbedoMatchesClosedForm) {
             Vector3f wo(std::sqrt(1 - c * c), 0, c);
             for (TransportMode mode : {TransportMode::Radiance, TransportMode::Importance}) {
                 RunningStats s;
-                RNG rng(uint64_t(1000 * c + 10 * rho) + int(mode));
+                RNG rng(uint64_t(int64_t(1000 * c + 10 * rho)) + uint64_t(mode));
                 for (int i = 0; i < 40000; ++i) {
                     Float uc = rng.UniformFloat();
                     Point2f u(rng.UniformFloat(), rng.UniformFloat());

@@ -2,6 +2,8 @@
 // density its PDF reports (Sample_f vs PDF, Sample_wm vs D(w, wm)).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -30,8 +32,12 @@ ChiSquareResult TestSampler(const std::function<std::optional<Vector3f>(Float, P
         Point2f u(rng.UniformFloat(), rng.UniformFloat());
         std::optional<Vector3f> w = sample(uc, u);
         if (!w) continue;
-        int tb = std::min(kThetaBins - 1, int(SphericalTheta(*w) * InvPi * kThetaBins));
-        int pb = std::min(kPhiBins - 1, int(SphericalPhi(*w) * Inv2Pi * kPhiBins));
+        // Binned in double: float acos puts directions 1e-8 above the horizon below it
+        double theta = std::acos(std::clamp(double(w->z), -1.0, 1.0));
+        double phi = std::atan2(double(w->y), double(w->x));
+        if (phi < 0) phi += 2 * Pi;
+        int tb = std::min(kThetaBins - 1, int(theta / Pi * kThetaBins));
+        int pb = std::min(kPhiBins - 1, int(phi / (2 * Pi) * kPhiBins));
         observed[tb * kPhiBins + pb] += 1;
     }
     for (int tb = 0; tb < kThetaBins; ++tb)
