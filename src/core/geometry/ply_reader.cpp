@@ -73,6 +73,14 @@ class PlyDataReader {
                   PlyFormat format, int line)
         : filename(filename), data(data), pos(offset), format(format), line(line) {}
 
+    // A list's length: a whole number >= 0 (ASCII data may say anything)
+    size_t ReadCount(PlyType t) {
+        double n = Read(t);
+        if (!(n >= 0 && n <= 4294967295.0 && n == std::floor(n)))
+            Fail("list length " + std::to_string(n) + " is not a count");
+        return size_t(n);
+    }
+
     double Read(PlyType t) {
         if (format == PlyFormat::Ascii) return ReadAscii();
         int n = TypeSize(t);
@@ -257,7 +265,7 @@ TriQuadMesh TriQuadMesh::ParsePLY(const std::string& data, const std::string& fi
                 for (size_t j = 0; j < e.props.size(); ++j) {
                     const PlyProperty& p = e.props[j];
                     if (p.isList) {
-                        size_t n = size_t(reader.Read(p.countType));
+                        size_t n = reader.ReadCount(p.countType);
                         for (size_t k = 0; k < n; ++k) reader.Read(p.type);
                     } else {
                         values[j].push_back(Float(reader.Read(p.type)));
@@ -300,9 +308,7 @@ TriQuadMesh TriQuadMesh::ParsePLY(const std::string& data, const std::string& fi
                 bool haveIndices = false;
                 for (const PlyProperty& p : e.props) {
                     if (p.isList) {
-                        double nd = reader.Read(p.countType);
-                        if (nd < 0) reader.Fail("negative list length");
-                        size_t n = size_t(nd);
+                        size_t n = reader.ReadCount(p.countType);
                         bool isIndices = p.name == "vertex_indices" || p.name == "vertex_index";
                         for (size_t k = 0; k < n; ++k) {
                             double v = reader.Read(p.type);
@@ -337,7 +343,7 @@ TriQuadMesh TriQuadMesh::ParsePLY(const std::string& data, const std::string& fi
         } else {
             for (size_t i = 0; i < e.count; ++i)
                 for (const PlyProperty& p : e.props) {
-                    size_t n = p.isList ? size_t(reader.Read(p.countType)) : 1;
+                    size_t n = p.isList ? reader.ReadCount(p.countType) : 1;
                     for (size_t k = 0; k < n; ++k) reader.Read(p.type);
                 }
         }
