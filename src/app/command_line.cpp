@@ -141,7 +141,7 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             for (Float& v : c) v = ParseFloat(a, args[++i]);
             if (!(c[0] >= 0 && c[0] < c[1] && c[1] <= 1 && c[2] >= 0 && c[2] < c[3] && c[3] <= 1))
                 throw std::invalid_argument(a + " expects 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1");
-            o.crop = Bounds2f(Point2f(c[0], c[2]), Point2f(c[1], c[3]));
+            o.crop = Bounds2f{Point2f(c[0], c[2]), Point2f(c[1], c[3])};
         } else if (a == "--frames") {
             const std::string& v = value();
             size_t dash = v.find('-', 1);

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "../render/render_test_util.h"
+#include "image_stats.h"
 
 namespace kiln {
 namespace {
@@ -19,37 +19,12 @@ LookAt 0 1.5 -4  0 0.5 0  0 1 0
 Camera "perspective" "float fov" 45
 )";
 
-const char* kEnvAndFloor = R"(
-LightSource "infinite" "rgb L" [0.4 0.45 0.5]
-Material "diffuse" "rgb reflectance" [0.5 0.5 0.5]
-Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]
-  "point3 P" [-5 0 -5  5 0 -5  5 0 5  -5 0 5]
-)";
-
-struct Rendered {
-    int64_t nonFinite = 0;
-    int nonFinitePixels = 0;
-    double meanY = 0;
-    std::vector<std::string> warnings;
-};
+using testing::ImageStats;
+using testing::kEnvAndFloor;
+using Rendered = ImageStats;
 
 Rendered RenderWorld(const std::string& world) {
-    testing::RenderedScene r =
-        testing::RenderText(std::string(kView) + "WorldBegin\n" + kEnvAndFloor + world);
-    Rendered out;
-    out.nonFinite = r.scene->film->NonFiniteSampleCount();
-    Bounds2i b = r.scene->film->PixelBounds();
-    for (int y = b.pMin.y; y < b.pMax.y; ++y)
-        for (int x = b.pMin.x; x < b.pMax.x; ++x) {
-            Float Y = testing::PixelY(*r.scene, {x, y});
-            if (std::isfinite(Y))
-                out.meanY += Y;
-            else
-                ++out.nonFinitePixels;
-        }
-    out.meanY /= b.Area();
-    for (const auto& w : r.warnings) out.warnings.push_back(w.message);
-    return out;
+    return testing::RenderStats(std::string(kView) + "WorldBegin\n" + kEnvAndFloor + world, 1, 8);
 }
 
 void ExpectFinite(const Rendered& r, const std::string& what) {

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "../render/render_test_util.h"
+#include "image_stats.h"
 #include "noise_comparison.h"
 
 namespace kiln {
@@ -18,31 +19,9 @@ Sampler "zsobol" "integer pixelsamples" 16
 Integrator "path" "integer maxdepth" 8
 )";
 
-struct ImageStats {
-    int64_t nonFinite = 0;
-    double meanY = 0;
-    int nonFinitePixels = 0;
-};
-
-ImageStats RenderStats(const std::string& text, int seed = 1, int spp = 16) {
-    SceneOverrides o;
-    o.seed = seed;
-    o.samplesPerPixel = spp;
-    testing::RenderedScene r = testing::RenderText(text, 0, o);
-    ImageStats s;
-    s.nonFinite = r.scene->film->NonFiniteSampleCount();
-    Bounds2i b = r.scene->film->PixelBounds();
-    for (int y = b.pMin.y; y < b.pMax.y; ++y)
-        for (int x = b.pMin.x; x < b.pMax.x; ++x) {
-            Float Y = testing::PixelY(*r.scene, {x, y});
-            if (!std::isfinite(Y))
-                ++s.nonFinitePixels;
-            else
-                s.meanY += Y;
-        }
-    s.meanY /= b.Area();
-    return s;
-}
+using testing::ImageStats;
+using testing::kEnvAndFloor;
+using testing::RenderStats;
 
 void ExpectFinite(const std::string& world, const char* what, bool expectLight = true) {
     std::string text = std::string(kHeader) + world;
@@ -53,13 +32,6 @@ void ExpectFinite(const std::string& world, const char* what, bool expectLight =
         EXPECT_GT(s.meanY, 0) << what;  // not vacuous
     }
 }
-
-const char* kEnvAndFloor = R"(
-LightSource "infinite" "rgb L" [0.4 0.45 0.5]
-Material "diffuse" "rgb reflectance" [0.5 0.5 0.5]
-Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]
-  "point3 P" [-5 0 -5  5 0 -5  5 0 5  -5 0 5]
-)";
 
 TEST(StressTest, DegenerateAndSliverTriangles) {
     ExpectFinite(std::string(R"(LookAt 0 1.5 -4  0 0.5 0  0 1 0

@@ -109,7 +109,7 @@ TEST(RenderTest, EveryBundledSceneRendersWithoutWarningsOrNaNs) {
         SceneOverrides overrides;
         overrides.samplesPerPixel = 1;
         // A crop keeps this fast whatever the scene's resolution.
-        overrides.cropWindow = Bounds2f(Point2f(0.3f, 0.3f), Point2f(0.6f, 0.6f));
+        overrides.cropWindow = Bounds2f{Point2f(0.3f, 0.3f), Point2f(0.6f, 0.6f)};
         testing::RenderedScene r = testing::RenderFile(file, overrides);
         for (const Diagnostics::Warning& w : r.warnings)
             ADD_FAILURE() << w.loc.ToString() << ": " << w.message;
