@@ -1,7 +1,13 @@
 #!/usr/bin/env bash
-# Builds kiln and its tests (installing missing packages first) and runs the whole suite.
+# Builds kiln and its tests (installing missing packages first) and runs the whole suite; then
+# the sanitizer stage (scripts/sanitize.sh: a clang build with AddressSanitizer and
+# UndefinedBehaviorSanitizer, each libFuzzer target fuzzed for KILN_FUZZ_SECONDS, default 60,
+# and the whole suite again under the sanitizers). KILN_QUICK=1 skips that stage.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/bootstrap.sh"
-cd "${KILN_BUILD_DIR:-$root/build}"
-ctest --output-on-failure -j "$(nproc 2>/dev/null || echo 2)" --timeout 900
+(cd "${KILN_BUILD_DIR:-$root/build}" &&
+    ctest --output-on-failure -j "$(nproc 2>/dev/null || echo 2)" --timeout 900)
+if [ "${KILN_QUICK:-0}" != 1 ]; then
+    "$root/scripts/sanitize.sh" "${KILN_FUZZ_SECONDS:-60}"
+fi

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Builds kiln with clang, AddressSanitizer and UndefinedBehaviorSanitizer (any report fails) in
+# build-sanitize/, fuzzes each libFuzzer target of test/fuzz for SECONDS from its committed
+# seed corpus (test/fuzz/corpus/TARGET, plus the repository's scenes and meshes), then runs the
+# whole test suite in that build. A crashing input is kept in build-sanitize/fuzz/TARGET/; add it
+# to test/fuzz/corpus/TARGET once fixed, so it stays a regression input.
+#   scripts/sanitize.sh [SECONDS]    (default 60 per target; 0 skips fuzzing)
+# Fuzzing for hours: build-sanitize/fuzz_parser -max_total_time=3600 DIR test/fuzz/corpus/parser
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${KILN_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
+seconds="${1:-60}"
+
+# clang and its runtimes (libFuzzer, sanitizers) come from Debian's packages
+source "$root/scripts/packages.sh"
+kiln_install_missing clang libclang-rt-14-dev
+
+jobs="$(nproc 2>/dev/null || echo 2)"
+if [ ! -f "$build/CMakeCache.txt" ]; then
+    CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release \
+        -DKILN_SANITIZE=ON -DKILN_FUZZ=ON -DKILN_BENCH=OFF >/dev/null
+fi
+cmake --build "$build" -j "$jobs"
+
+export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+
+if [ "$seconds" -gt 0 ]; then
+    for fuzzer in "$build"/fuzz_*; do
+        target="$(basename "$fuzzer")"
+        target="${target#fuzz_}"
+        work="$build/fuzz/$target"
+        mkdir -p "$work/corpus"
+        seeds=("$root/test/fuzz/corpus/$target")
+        case "$target" in
+        parser | scene) seeds+=("$root/scenes/wilkie2011" "$root/scenes/thermal") ;;
+        ply) seeds+=("$root/scenes/textured-meshes") ;;
+        esac
+        echo "kiln: fuzzing $target for ${seconds}s" >&2
+        (cd "$work" && "$fuzzer" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 \
+            -max_len=65536 -print_final_stats=1 -artifact_prefix="$work/" \
+            corpus "${seeds[@]}" 2>"$work/log.txt") || {
+            tail -n 60 "$work/log.txt" >&2
+            echo "kiln: fuzzer $target failed; inputs in $work" >&2
+            exit 1
+        }
+        grep -E "stat::number_of_executed_units|Done [0-9]+ runs" "$work/log.txt" >&2 || true
+    done
+fi
+
+cd "$build"
+ctest --output-on-failure -j "$jobs" --timeout 1800
