@@ -275,10 +275,16 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
             std::cerr << "kiln: interrupted while loading the scene; nothing written\n";
             return InterruptStatus();
         }
-        if (options.verbose)
-            std::fprintf(stderr, "kiln: %d shapes, %zu lights (%d thermal); chosen: %s\n",
+        if (options.verbose) {
+            double embree = double(scene->aggregate->EmbreePeakBytes());
+            std::fprintf(stderr,
+                         "kiln: %d shapes, %zu lights (%d thermal); Embree peak %.1f MB (%.0f "
+                         "bytes per shape%s)\n",
                          scene->shapeCount, scene->lights.size(), scene->thermalEmitterCount,
-                         scene->features.ToString().c_str());
+                         embree * 1e-6, scene->shapeCount > 0 ? embree / scene->shapeCount : 0.0,
+                         scene->aggregate->Compact() ? ", compact BVH" : "");
+            std::fprintf(stderr, "kiln: chosen: %s\n", scene->features.ToString().c_str());
+        }
     } catch (const SceneError& e) {
         diag.ReportRepeats();
         std::cerr << e.what() << "\n";

@@ -148,5 +148,40 @@ TEST(Accelerator, NoSelfIntersectionFarFromOrigin) {
     EXPECT_EQ(nSelf, 0);
 }
 
+TEST(Accelerator, LargeScenesGetTheCompactBVHAndStillHit) {
+    // A grid of n x n quads: 2 n^2 triangles, just over the compact threshold
+    const int n = 1025;
+    std::vector<Point3f> P;
+    std::vector<int> indices;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) P.push_back(Point3f(Float(i) / n, Float(j) / n, 1));
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+            indices.insert(indices.end(), {a, b, d, a, d, c});
+        }
+    TriangleMesh mesh(Transform(), false, std::move(indices), std::move(P), {}, {}, {}, {});
+    std::vector<Triangle> tris = Triangle::FromMesh(&mesh);
+    std::vector<Shape> shapes;
+    for (const Triangle& t : tris) shapes.push_back(Shape(&t));
+    ASSERT_GT(shapes.size(), Accelerator::kCompactPrimitives);
+
+    Accelerator large, small;
+    large.Add(shapes, Tag(1), {}, nullptr);
+    large.Commit();
+    small.Add(std::span(shapes).first(100), Tag(1), {}, nullptr);
+    small.Commit();
+    EXPECT_TRUE(large.Compact());
+    EXPECT_FALSE(small.Compact());
+    EXPECT_GT(large.EmbreePeakBytes(), 0);
+    // Hits land on the right triangle of the grid
+    for (Float x : {0.0003f, 0.5f, 0.9991f}) {
+        auto h = large.Intersect(Ray(Point3f(x, 0.25f, 0), Vector3f(0, 0, 1)));
+        ASSERT_TRUE(h) << x;
+        EXPECT_NEAR(h->tHit, 1, 1e-6f);
+        EXPECT_NEAR(h->intr.p.x, x, 1e-6f);
+    }
+}
+
 }  // namespace
 }  // namespace kiln

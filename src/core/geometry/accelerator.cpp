@@ -1,7 +1,9 @@
 #include "core/geometry/accelerator.h"
 
+#include <atomic>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <memory>
@@ -85,6 +87,9 @@ void ErrorCallback(void*, RTCError code, const char* message) {
 
 struct Accelerator::Impl {
     RTCDevice device = nullptr;
+    // Bytes Embree holds (its memory monitor), now and at most
+    std::atomic<int64_t> embreeBytes{0}, embreePeakBytes{0};
+    size_t primitives = 0;  // added to the top-level scene and to instance definitions
     SceneBVH top;
     std::vector<SceneBVH> definitions;
     bool committed = false;
@@ -111,9 +116,10 @@ struct Accelerator::Impl {
 void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
                                   const Material* material, std::span<const int> areaLights,
                                   const ThermalEmission* thermal) {
+    primitives += shapes.size();
     bool haveLights = !areaLights.empty();
     // Triangles grouped by mesh (first-seen order), everything else as one user geometry.
-    std::vector<std::pair<const TriangleMesh*, std::vector<size_t>>> meshes;
+    std::vector<std::pair<const TriangleMesh*, std::vector<uint32_t>>> meshes;
     std::vector<size_t> others;
     for (size_t i = 0; i < shapes.size(); ++i) {
         if (const Triangle* t = shapes[i].Get<Triangle>()) {
@@ -123,7 +129,7 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
                 meshes.push_back({t->GetMesh(), {}});
                 it = meshes.end() - 1;
             }
-            it->second.push_back(i);
+            it->second.push_back(uint32_t(i));
         } else {
             others.push_back(i);
         }
@@ -134,18 +140,25 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
         rec->mesh = mesh;
         rec->material = material;
         rec->thermal = thermal;
+        // All of the mesh's triangles in order (the usual case): Embree shares the mesh's
+        // index buffer and no per-triangle index is kept
         bool identity = int(idx.size()) == mesh->nTriangles;
-        for (size_t k = 0; k < idx.size(); ++k) {
-            int tri = shapes[idx[k]].Get<Triangle>()->TriangleIndex();
-            rec->triIndices.push_back(tri);
-            identity = identity && tri == int(k);
-            if (haveLights) rec->lights.push_back(areaLights[idx[k]]);
+        for (size_t k = 0; k < idx.size() && identity; ++k)
+            identity = shapes[idx[k]].Get<Triangle>()->TriangleIndex() == int(k);
+        if (!identity) {
+            rec->triIndices.reserve(idx.size());
+            for (uint32_t i : idx)
+                rec->triIndices.push_back(shapes[i].Get<Triangle>()->TriangleIndex());
         }
+        if (haveLights) {
+            rec->lights.reserve(idx.size());
+            for (uint32_t i : idx) rec->lights.push_back(areaLights[i]);
+        }
+        idx = {};  // released before the BVH build
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
         rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh->p.data(),
                                    0, sizeof(Point3f), mesh->nVertices);
         if (identity) {
-            rec->triIndices.clear();
             rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                        mesh->vertexIndices.data(), 0, 3 * sizeof(int),
                                        mesh->nTriangles);
@@ -182,6 +195,17 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
 Accelerator::Accelerator() : impl(std::make_unique<Impl>()) {
     impl->device = rtcNewDevice(nullptr);
     rtcSetDeviceErrorFunction(impl->device, ErrorCallback, nullptr);
+    rtcSetDeviceMemoryMonitorFunction(
+        impl->device,
+        [](void* user, ssize_t bytes, bool) {
+            auto* a = static_cast<Impl*>(user);
+            int64_t now = a->embreeBytes.fetch_add(bytes) + bytes;
+            int64_t peak = a->embreePeakBytes.load();
+            while (now > peak && !a->embreePeakBytes.compare_exchange_weak(peak, now)) {
+            }
+            return true;
+        },
+        impl.get());
     impl->top = impl->NewScene();
 }
 
@@ -228,6 +252,12 @@ void Accelerator::AddInstance(int definition, const Transform& renderFromInstanc
 }
 
 void Accelerator::Commit() {
+    // Large scenes trade a little traversal speed for half the BVH memory
+    if (Compact()) {
+        for (SceneBVH& d : impl->definitions)
+            rtcSetSceneFlags(d.scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT);
+        rtcSetSceneFlags(impl->top.scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT);
+    }
     for (SceneBVH& d : impl->definitions) rtcCommitScene(d.scene);
     rtcCommitScene(impl->top.scene);
     impl->committed = true;
@@ -316,6 +346,10 @@ bool Accelerator::IntersectP(const Ray& ray, Float tMax) const {
     rtcOccluded1(impl->top.scene, &context, &r);
     return r.tfar < 0;
 }
+
+int64_t Accelerator::EmbreePeakBytes() const { return impl->embreePeakBytes.load(); }
+
+bool Accelerator::Compact() const { return impl->primitives > kCompactPrimitives; }
 
 Bounds3f Accelerator::Bounds() const {
     if (impl->top.records.empty()) return Bounds3f();

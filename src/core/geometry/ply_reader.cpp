@@ -3,6 +3,7 @@
 #include "core/geometry/ply_reader.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -254,7 +255,8 @@ TriQuadMesh TriQuadMesh::ParsePLY(const std::string& data, const std::string& fi
     double nVertices = 0;  // from the header, for checking indices wherever faces come
     for (const PlyElement& e : elements)
         if (e.name == "vertex") nVertices = double(e.count);
-    std::vector<std::vector<int>> faces;
+    // Faces as four vertex indices (the last -1 for a triangle): no allocation per face
+    std::vector<std::array<int, 4>> faces;
     std::vector<int> faceIndices;
     bool haveVertices = false;
     for (const PlyElement& e : elements) {
@@ -303,13 +305,17 @@ TriQuadMesh TriQuadMesh::ParsePLY(const std::string& data, const std::string& fi
                 mesh.vertexAttributes[e.props[j].name] = std::move(values[j]);
             }
         } else if (e.name == "face") {
+            faces.reserve(std::min<size_t>(e.count, data.size() / 4));
             for (size_t i = 0; i < e.count; ++i) {
-                std::vector<int> face;
+                std::array<int, 4> face = {-1, -1, -1, -1};  // a triangle leaves the last -1
                 bool haveIndices = false;
                 for (const PlyProperty& p : e.props) {
                     if (p.isList) {
                         size_t n = reader.ReadCount(p.countType);
                         bool isIndices = p.name == "vertex_indices" || p.name == "vertex_index";
+                        if (isIndices && n != 3 && n != 4)
+                            reader.Fail("face " + std::to_string(i) + " has " + std::to_string(n) +
+                                        " vertices; only triangles and quads are supported");
                         for (size_t k = 0; k < n; ++k) {
                             double v = reader.Read(p.type);
                             if (!isIndices) continue;
@@ -319,15 +325,9 @@ TriQuadMesh TriQuadMesh::ParsePLY(const std::string& data, const std::string& fi
                                             std::to_string(int64_t(std::clamp(v, -9e18, 9e18))) +
                                             " out of range (" + std::to_string(int64_t(nVertices)) +
                                             " vertices)");
-                            face.push_back(int(v));
+                            face[k] = int(v);
                         }
-                        if (isIndices) {
-                            haveIndices = true;
-                            if (n != 3 && n != 4)
-                                reader.Fail("face " + std::to_string(i) + " has " +
-                                            std::to_string(n) +
-                                            " vertices; only triangles and quads are supported");
-                        }
+                        haveIndices = haveIndices || isIndices;
                     } else {
                         double v = reader.Read(p.type);
                         if (p.name != "face_indices") continue;
@@ -338,7 +338,7 @@ TriQuadMesh TriQuadMesh::ParsePLY(const std::string& data, const std::string& fi
                     }
                 }
                 if (!haveIndices) reader.Fail("face element lacks vertex_indices");
-                faces.push_back(std::move(face));
+                faces.push_back(face);
             }
         } else {
             for (size_t i = 0; i < e.count; ++i)
@@ -352,17 +352,13 @@ TriQuadMesh TriQuadMesh::ParsePLY(const std::string& data, const std::string& fi
 
     // Triangles, planar quads as triangle pairs, other quads as bilinear patches.
     for (size_t f = 0; f < faces.size(); ++f) {
-        const std::vector<int>& v = faces[f];
-        for (int idx : v)
-            if (idx < 0 || size_t(idx) >= mesh.p.size())
-                reader.Fail("face " + std::to_string(f) + " has vertex index " +
-                            std::to_string(idx) + " out of range [0, " +
-                            std::to_string(mesh.p.size()) + ")");
+        const std::array<int, 4>& v = faces[f];
+        const bool triangle = v[3] < 0;
         int fi = faceIndices.size() == faces.size() ? faceIndices[f] : -1;
-        if (v.size() == 3 || IsPlanar(mesh.p[v[0]], mesh.p[v[1]], mesh.p[v[2]], mesh.p[v[3]])) {
+        if (triangle || IsPlanar(mesh.p[v[0]], mesh.p[v[1]], mesh.p[v[2]], mesh.p[v[3]])) {
             mesh.triIndices.insert(mesh.triIndices.end(), {v[0], v[1], v[2]});
             if (fi >= 0) mesh.triFaceIndices.push_back(fi);
-            if (v.size() == 4) {
+            if (!triangle) {
                 mesh.triIndices.insert(mesh.triIndices.end(), {v[0], v[2], v[3]});
                 if (fi >= 0) mesh.triFaceIndices.push_back(fi);
             }

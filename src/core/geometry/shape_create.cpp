@@ -33,11 +33,13 @@ void AddTriangles(const TriangleMesh* mesh, ObjectArena& arena, std::vector<Shap
         diag.Warn(
             loc, std::to_string(mesh->nDegenerate) + " degenerate (zero-area) triangle(s) skipped");
     auto* tris = arena.New<std::vector<Triangle>>(Triangle::FromMesh(mesh));
+    shapes->reserve(shapes->size() + tris->size());
     for (const Triangle& t : *tris) shapes->push_back(Shape(&t));
 }
 
 void AddPatches(const BilinearPatchMesh* mesh, ObjectArena& arena, std::vector<Shape>* shapes) {
     auto* patches = arena.New<std::vector<BilinearPatch>>(BilinearPatch::FromMesh(mesh));
+    shapes->reserve(shapes->size() + patches->size());
     for (const BilinearPatch& b : *patches) shapes->push_back(Shape(&b));
 }
 
