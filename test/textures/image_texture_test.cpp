@@ -1,5 +1,6 @@
 // Tests of "imagemap" textures on small images written to a temporary directory.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <OpenImageIO/imageio.h>
 
@@ -24,10 +25,8 @@ constexpr int kW = 4, kH = 2;
 class ImageTextureTest : public ::testing::Test {
   protected:
     void SetUp() override {
-        dir =
-            fs::temp_directory_path() /
-            ("kiln_imagetex_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-             "_" + std::to_string(reinterpret_cast<uintptr_t>(this)));
+        dir = fs::temp_directory_path() / ("kiln_imagetex_" + std::to_string(::getpid()) + "_" +
+                                           std::to_string(reinterpret_cast<uintptr_t>(this)));
         fs::create_directories(dir);
         exrPath = (dir / "ramp.exr").string();
         std::vector<float> px;

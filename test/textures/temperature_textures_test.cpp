@@ -2,6 +2,7 @@
 // vertexattribute (trianglemesh and PLY meshes), cooling, keyframes, and their composition
 // with scale and mix. (Needs kiln_geometry linked into the textures tests.)
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <OpenImageIO/imageio.h>
 
@@ -37,8 +38,8 @@ TextureEvalContext At(Point3f p) {
 class TemperatureTexturesTest : public ::testing::Test {
   protected:
     void SetUp() override {
-        dir = fs::temp_directory_path() /
-              ("kiln_temperature_" + std::to_string(reinterpret_cast<uintptr_t>(this)));
+        dir = fs::temp_directory_path() / ("kiln_temperature_" + std::to_string(getpid()) + "_" +
+                                           std::to_string(reinterpret_cast<uintptr_t>(this)));
         fs::create_directories(dir);
     }
     void TearDown() override { fs::remove_all(dir); }
