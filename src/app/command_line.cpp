@@ -53,20 +53,20 @@ Float ParseFloat(const std::string& flag, const std::string& v) {
     return value;
 }
 
-// Ctrl-C: the first one asks the render to stop and write what it has; a second one kills.
-// A signal handler can only reach static storage, hence this one process-wide flag.
-// SIGINT and SIGTERM (what schedulers send before they kill a job): the first stops loading or
-// rendering and lets the image so far be written; a second ends the process at once, removing
-// a temporary file being written. The exit status is 128 + the signal's number.
+// SIGINT (Ctrl-C) and SIGTERM (what schedulers send before they kill a job): the first stops
+// loading or rendering and lets the image so far be written; a second ends the process at
+// once, removing a temporary file being written. The exit status is 128 + the first signal's
+// number. A signal handler can only reach static storage, hence these process-wide atomics.
 std::atomic<bool> interruptRequested{false};
 std::atomic<int> interruptSignal{0};
 
 extern "C" void HandleInterrupt(int signal) {
+    int none = 0;
+    interruptSignal.compare_exchange_strong(none, signal);  // set before the flag is seen
     if (interruptRequested.exchange(true)) {
         RemovePendingTemporaryFile();
         _exit(128 + signal);
     }
-    interruptSignal.store(signal);
 }
 
 int InterruptStatus() { return 128 + interruptSignal.load(); }
