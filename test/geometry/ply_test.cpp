@@ -142,8 +142,21 @@ TEST(PLY, MalformedFilesThrow) {
                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
                 "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n",
                 "vertex index -1 out of range");
+    ExpectError("novertexprops.ply",
+                "ply\nformat ascii 1.0\nelement vertex 22222222222\nend_header\n",
+                "lacks x, y or z");
     ExpectError("missing.ply", "", "");
     EXPECT_THROW(TriQuadMesh::ReadPLY(TempPath("does_not_exist.ply")), SceneError);
+}
+
+TEST(PLY, ElementsWithoutPropertiesHaveNoData) {
+    // A huge element without properties (found by fuzzing: it used to loop for hours)
+    TriQuadMesh mesh = TriQuadMesh::ParsePLY(
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nelement blank 22222222222\nelement face 1\n"
+        "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+        "blank.ply");
+    EXPECT_EQ(mesh.triIndices, (std::vector<int>{0, 1, 2}));
 }
 
 }  // namespace

@@ -260,6 +260,13 @@ TriQuadMesh TriQuadMesh::ParsePLY(const std::string& data, const std::string& fi
     std::vector<int> faceIndices;
     bool haveVertices = false;
     for (const PlyElement& e : elements) {
+        // An element without properties has no data, whatever its count says (a huge count
+        // would otherwise loop without reading anything)
+        if (e.props.empty()) {
+            if (e.name == "vertex") fail(line, "vertex element lacks x, y or z");
+            if (e.name == "face" && e.count > 0) fail(line, "face element lacks vertex_indices");
+            continue;
+        }
         if (e.name == "vertex") {
             haveVertices = true;
             std::vector<std::vector<Float>> values(e.props.size());
