@@ -37,7 +37,10 @@ if [ "$seconds" -gt 0 ]; then
         ply) seeds+=("$root/scenes/textured-meshes") ;;
         esac
         echo "kiln: fuzzing $target for ${seconds}s" >&2
-        (cd "$work" && "$fuzzer" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 \
+        # A fixed seed (KILN_FUZZ_SEED, default 1): runs draw the same inputs, as far as their
+        # time allows, so a failure in CI recurs in a local run of the same length
+        (cd "$work" && "$fuzzer" -seed="${KILN_FUZZ_SEED:-1}" -max_total_time="$seconds" \
+            -timeout=20 -rss_limit_mb=4096 \
             -max_len=65536 -print_final_stats=1 -artifact_prefix="$work/" \
             corpus "${seeds[@]}" 2>"$work/log.txt") || {
             tail -n 60 "$work/log.txt" >&2
