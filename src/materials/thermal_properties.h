@@ -19,7 +19,6 @@ class TextureParameterDictionary;
 struct ThermalProperties {
     std::optional<FloatTexture> temperature;  // kelvin
     std::optional<EmissionModel> model;
-
 };
 
 // Reads (and marks as used) "temperature" and "emission"; SceneError for malformed values. A

@@ -61,8 +61,8 @@ TEST(Spectrum, PiecewiseLinearLookupMatchesAScan) {
 }
 
 TEST(Spectrum, ParseRejectsNonFiniteValues) {
-    for (const char* text : {"400 nan\n500 1\n", "400 1\n500 inf\n", "400 1e999\n500 1\n",
-                             "4e40 1\n5e40 1\n"}) {
+    for (const char* text :
+         {"400 nan\n500 1\n", "400 1\n500 inf\n", "400 1e999\n500 1\n", "4e40 1\n5e40 1\n"}) {
         std::string error;
         EXPECT_FALSE(PiecewiseLinearSpectrum::Parse(text, "bad.spd", &error)) << text;
         EXPECT_NE(error.find("bad.spd: line"), std::string::npos) << error;
