@@ -1,5 +1,7 @@
 #include "materials/bxdfs/bsdf.h"
 
+#include "materials/bxdfs/fresnel_mueller.h"
+
 namespace kiln {
 
 BSDF::BSDF(Normal3f ns, Vector3f dpdus, const BxDF& bxdf, Normal3f ngeom)
@@ -25,38 +27,80 @@ BSDF::BSDF(Normal3f ns, Vector3f dpdus, const BxDF& bxdf, Normal3f ngeom)
     }
 }
 
-SampledSpectrum BSDF::f(Vector3f woRender, Vector3f wiRender, TransportMode mode) const {
+template <typename Value>
+Value BSDF::f(Vector3f woRender, Vector3f wiRender, TransportMode mode) const {
+    constexpr bool polarized = std::is_same_v<Value, MuellerMatrix>;
     Vector3f wi = RenderToLocal(wiRender), wo = RenderToLocal(woRender);
     if (wo.z == 0) return {};
-    if (!fold) return bxdf.f(wo, wi, mode);
+    auto value = [&](Vector3f wiR, Vector3f wiLocal) {
+        Value v = bxdf.f<Value>(wo, wiLocal, mode);
+        if constexpr (polarized)
+            if (v) v = ToRenderFrames(v, woRender, wiR, wo, wiLocal);
+        return v;
+    };
+    if (!fold) return value(wiRender, wi);
     if (!SameSide(woRender, wiRender) || wi.z == 0) return {};
-    SampledSpectrum f = bxdf.f(wo, wi, mode);
-    Vector3f mi = RenderToLocal(Mirror(wiRender));
-    if (SameHemisphere(wo, mi)) f += bxdf.f(wo, mi, mode) * (AbsCosTheta(mi) / AbsCosTheta(wi));
+    Value f = value(wiRender, wi);
+    Vector3f miRender = Mirror(wiRender), mi = RenderToLocal(miRender);
+    if (SameHemisphere(wo, mi)) {
+        Value fm = value(miRender, mi);
+        if constexpr (polarized) fm = fm * FoldMueller(wiRender);
+        f += fm * (AbsCosTheta(mi) / AbsCosTheta(wi));
+    }
     return f;
 }
 
-std::optional<BSDFSample> BSDF::Sample_f(Vector3f woRender, Float u, Point2f u2, TransportMode mode,
-                                         BxDFReflTransFlags sampleFlags) const {
+template <typename Value>
+std::optional<BSDFSampleOf<Value>> BSDF::Sample_f(Vector3f woRender, Float u, Point2f u2,
+                                                  TransportMode mode,
+                                                  BxDFReflTransFlags sampleFlags) const {
+    constexpr bool polarized = std::is_same_v<Value, MuellerMatrix>;
     Vector3f wo = RenderToLocal(woRender);
     // BxDFFlags::Reflection/Transmission share their bits with BxDFReflTransFlags.
     if (wo.z == 0 || !(unsigned(bxdf.Flags()) & unsigned(sampleFlags))) return {};
-    std::optional<BSDFSample> bs = bxdf.Sample_f(wo, u, u2, mode, sampleFlags);
+    std::optional<BSDFSampleOf<Value>> bs = bxdf.Sample_f<Value>(wo, u, u2, mode, sampleFlags);
     if (!bs || !bs->f || bs->pdf == 0 || bs->wi.z == 0) return {};
+    Vector3f wiLocal = bs->wi;
     bs->wi = LocalToRender(bs->wi);
+    if constexpr (polarized) bs->f = ToRenderFrames(bs->f, woRender, bs->wi, wo, wiLocal);
     if (!fold) return bs;
     if (!SameSide(woRender, bs->wi)) {
         // Redirect to the mirror image, keeping the sample's weight f |cos| / pdf
         Vector3f w = Mirror(bs->wi);
         Float cosW = AbsCosTheta(RenderToLocal(w));
         if (cosW == 0 || !SameSide(woRender, w)) return {};
-        bs->f *= AbsCosTheta(RenderToLocal(bs->wi)) / cosW;
+        if constexpr (polarized) bs->f = bs->f * FoldMueller(w);
+        bs->f = bs->f * (AbsCosTheta(RenderToLocal(bs->wi)) / cosW);
         bs->wi = w;
     }
     // A direction can come from either of its two pre-images: the density that MIS needs is
     // PDF()'s sum, not this sample's own
     if (!bs->IsSpecular()) bs->pdfIsProportional = true;
     return bs;
+}
+
+template SampledSpectrum BSDF::f<SampledSpectrum>(Vector3f, Vector3f, TransportMode) const;
+template MuellerMatrix BSDF::f<MuellerMatrix>(Vector3f, Vector3f, TransportMode) const;
+template std::optional<BSDFSampleOf<SampledSpectrum>> BSDF::Sample_f<SampledSpectrum>(
+    Vector3f, Float, Point2f, TransportMode, BxDFReflTransFlags) const;
+template std::optional<BSDFSampleOf<MuellerMatrix>> BSDF::Sample_f<MuellerMatrix>(
+    Vector3f, Float, Point2f, TransportMode, BxDFReflTransFlags) const;
+
+// Polarisation frames
+MuellerMatrix BSDF::ToRenderFrames(const MuellerMatrix& M, Vector3f woRender, Vector3f wiRender,
+                                   Vector3f wo, Vector3f wi) const {
+    const Vector3f z(0, 0, 1);
+    return RotateMuellerBasis(M, -wiRender, LocalToRender(PlaneAxis(z, wi)), StokesBasis(-wiRender),
+                              woRender, LocalToRender(PlaneAxis(z, wo)), StokesBasis(woRender));
+}
+
+MuellerMatrix BSDF::FoldMueller(Vector3f wiRender) const {
+    Vector3f miRender = Mirror(wiRender);
+    // A perfect mirror with the s axes: diag(1, 1, -1, -1)
+    MuellerMatrix mirror = MuellerMatrix::Identity();
+    mirror(2, 2) = mirror(3, 3) = SampledSpectrum(-1.f);
+    return RotateMuellerBasis(mirror, -wiRender, PlaneAxis(ng, wiRender), StokesBasis(-wiRender),
+                              -miRender, PlaneAxis(ng, miRender), StokesBasis(-miRender));
 }
 
 Float BSDF::PDF(Vector3f woRender, Vector3f wiRender, TransportMode mode,

@@ -11,6 +11,12 @@
 // 1 - albedo stays exact and a closed cavity stays in equilibrium), no light passes through an
 // opaque surface, and the same estimate holds for light and BSDF sampling (MIS). A deliberate
 // difference from pbrt-v4, visible only where shading and geometric normals differ strongly.
+//
+// Polarised transport (Value = MuellerMatrix): f and Sample_f return Mueller matrices between
+// the implicit frames of render-space directions (spectral/polarization.h): light arriving
+// along -wi with reference axis StokesBasis(-wi), leaving along wo with StokesBasis(wo). A
+// folded direction is a reflection in a perfect mirror lying in the geometric tangent plane,
+// and its Mueller matrix is that mirror's (rs = -1, rp = 1).
 #pragma once
 
 #include <optional>
@@ -32,11 +38,14 @@ class BSDF {
     explicit operator bool() const { return valid; }
 
     // BSDF value (sr^-1) for render-space directions, both pointing away from the surface.
-    SampledSpectrum f(Vector3f woRender, Vector3f wiRender,
-                      TransportMode mode = TransportMode::Radiance) const;
+    // Value: SampledSpectrum or MuellerMatrix.
+    template <typename Value = SampledSpectrum>
+    Value f(Vector3f woRender, Vector3f wiRender,
+            TransportMode mode = TransportMode::Radiance) const;
     // Samples wi (returned in render space). Returns nothing for wo in the tangent plane, zero
     // f, zero pdf or wi in the tangent plane, as pbrt-v4.
-    std::optional<BSDFSample> Sample_f(
+    template <typename Value = SampledSpectrum>
+    std::optional<BSDFSampleOf<Value>> Sample_f(
         Vector3f woRender, Float u, Point2f u2, TransportMode mode = TransportMode::Radiance,
         BxDFReflTransFlags sampleFlags = BxDFReflTransFlags::All) const;
     Float PDF(Vector3f woRender, Vector3f wiRender, TransportMode mode = TransportMode::Radiance,
@@ -59,6 +68,13 @@ class BSDF {
     Vector3f Mirror(Vector3f w) const { return w - 2 * Dot(w, ng) * ng; }
     // Whether w leaves on wo's side of the geometric surface.
     bool SameSide(Vector3f wo, Vector3f w) const { return Dot(wo, ng) * Dot(w, ng) > 0; }
+    // A BxDF's Mueller matrix for local wo, wi re-expressed in the implicit frames of woRender
+    // and wiRender.
+    MuellerMatrix ToRenderFrames(const MuellerMatrix& M, Vector3f woRender, Vector3f wiRender,
+                                 Vector3f wo, Vector3f wi) const;
+    // The folding mirror's Mueller matrix taking light travelling along -wiRender to light
+    // travelling along -Mirror(wiRender), implicit frames.
+    MuellerMatrix FoldMueller(Vector3f wiRender) const;
 
     BxDF bxdf;
     Frame shadingFrame;

@@ -1,6 +1,14 @@
 // BxDF: the closed set of scattering functions, held by value and dispatched with std::visit.
 //
 // All directions are in the local shading frame (normal = +z) and point away from the surface.
+//
+// f and Sample_f take the type of value that transport carries (Mitsuba 3's variants):
+// SampledSpectrum (unpolarised, the default) or MuellerMatrix (polarised: frames as in
+// fresnel_mueller.h). A BxDF with polarising interfaces provides MuellerF and MuellerSample;
+// the others (diffuse, layered) depolarise: their Mueller matrix is the ideal depolariser
+// f diag(1, 0, 0, 0), which needs no frame. Sampling is the same in both variants: the
+// polarised sample is the unpolarised one with its Mueller value, so both make the same
+// random decisions and M00 equals the unpolarised value.
 #pragma once
 
 #include <optional>
@@ -14,6 +22,7 @@
 #include "materials/bxdfs/diffuse_bxdf.h"
 #include "materials/bxdfs/layered_bxdf.h"
 #include "materials/bxdfs/thin_dielectric_bxdf.h"
+#include "spectral/polarization.h"
 
 namespace kiln {
 
@@ -27,14 +36,40 @@ class BxDF {
     requires std::is_constructible_v<Variant, T> BxDF(T bxdf) : v(std::move(bxdf)) {}
 
     // BSDF value (sr^-1) per wavelength; includes no cosine factor.
-    SampledSpectrum f(Vector3f wo, Vector3f wi, TransportMode mode) const {
-        return std::visit([&](const auto& b) { return b.f(wo, wi, mode); }, v);
+    template <typename Value = SampledSpectrum>
+    Value f(Vector3f wo, Vector3f wi, TransportMode mode) const {
+        if constexpr (std::is_same_v<Value, SampledSpectrum>) {
+            return std::visit([&](const auto& b) { return b.f(wo, wi, mode); }, v);
+        } else {
+            return std::visit(
+                [&](const auto& b) {
+                    if constexpr (requires { b.MuellerF(wo, wi, mode); })
+                        return b.MuellerF(wo, wi, mode);
+                    else
+                        return MuellerMatrix::Depolarizer(b.f(wo, wi, mode));
+                },
+                v);
+        }
     }
-    std::optional<BSDFSample> Sample_f(
+    template <typename Value = SampledSpectrum>
+    std::optional<BSDFSampleOf<Value>> Sample_f(
         Vector3f wo, Float uc, Point2f u, TransportMode mode = TransportMode::Radiance,
         BxDFReflTransFlags sampleFlags = BxDFReflTransFlags::All) const {
-        return std::visit([&](const auto& b) { return b.Sample_f(wo, uc, u, mode, sampleFlags); },
-                          v);
+        if constexpr (std::is_same_v<Value, SampledSpectrum>) {
+            return std::visit(
+                [&](const auto& b) { return b.Sample_f(wo, uc, u, mode, sampleFlags); }, v);
+        } else {
+            return std::visit(
+                [&](const auto& b) -> std::optional<BSDFSampleOf<Value>> {
+                    std::optional<BSDFSample> bs = b.Sample_f(wo, uc, u, mode, sampleFlags);
+                    if (!bs) return {};
+                    if constexpr (requires { b.MuellerSample(wo, *bs, mode); })
+                        return BSDFSampleOf<Value>(*bs, b.MuellerSample(wo, *bs, mode));
+                    else
+                        return BSDFSampleOf<Value>(*bs, MuellerMatrix::Depolarizer(bs->f));
+                },
+                v);
+        }
     }
     Float PDF(Vector3f wo, Vector3f wi, TransportMode mode,
               BxDFReflTransFlags sampleFlags = BxDFReflTransFlags::All) const {

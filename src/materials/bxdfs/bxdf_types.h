@@ -47,25 +47,32 @@ inline bool operator&(BxDFReflTransFlags a, BxDFReflTransFlags b) {
     return (unsigned(a) & unsigned(b)) != 0;
 }
 
-// A sampled direction wi with BSDF value f (sr^-1 per wavelength), its pdf (sr^-1; for specular
-// lobes the discrete probability), the lobe flags, the relative IOR crossed on transmission
-// (1 otherwise) and whether pdf is only proportional to the true density (layered BxDFs).
-struct BSDFSample {
-    SampledSpectrum f;
+// A sampled direction wi with BSDF value f (sr^-1; per wavelength, or a Mueller matrix per
+// wavelength in polarised transport), its pdf (sr^-1; for specular lobes the discrete
+// probability), the lobe flags, the relative IOR crossed on transmission (1 otherwise) and
+// whether pdf is only proportional to the true density (layered BxDFs).
+template <typename Value>
+struct BSDFSampleOf {
+    Value f;
     Vector3f wi;
     Float pdf = 0;
     BxDFFlags flags = BxDFFlags::Unset;
     Float eta = 1;
     bool pdfIsProportional = false;
 
-    BSDFSample() = default;
-    BSDFSample(SampledSpectrum f, Vector3f wi, Float pdf, BxDFFlags flags, Float eta = 1,
-               bool pdfIsProportional = false)
+    BSDFSampleOf() = default;
+    BSDFSampleOf(Value f, Vector3f wi, Float pdf, BxDFFlags flags, Float eta = 1,
+                 bool pdfIsProportional = false)
         : f(f), wi(wi), pdf(pdf), flags(flags), eta(eta), pdfIsProportional(pdfIsProportional) {}
+    // The same sample with another value (its polarised counterpart).
+    template <typename Other>
+    BSDFSampleOf(const BSDFSampleOf<Other>& bs, Value f)
+        : BSDFSampleOf(f, bs.wi, bs.pdf, bs.flags, bs.eta, bs.pdfIsProportional) {}
 
     bool IsReflection() const { return kiln::IsReflective(flags); }
     bool IsTransmission() const { return kiln::IsTransmissive(flags); }
     bool IsSpecular() const { return kiln::IsSpecular(flags); }
 };
+using BSDFSample = BSDFSampleOf<SampledSpectrum>;
 
 }  // namespace kiln

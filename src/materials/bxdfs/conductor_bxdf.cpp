@@ -1,6 +1,7 @@
 #include "materials/bxdfs/conductor_bxdf.h"
 
 #include "materials/bxdfs/fresnel.h"
+#include "materials/bxdfs/fresnel_mueller.h"
 
 namespace kiln {
 
@@ -47,6 +48,26 @@ Float ConductorBxDF::PDF(Vector3f wo, Vector3f wi, TransportMode,
     if (LengthSquared(wm) == 0) return 0;
     wm = FaceForward(Normalize(wm), Vector3f(0, 0, 1));
     return mfDistrib.PDF(wo, wm) / (4 * AbsDot(wo, wm));
+}
+
+// Polarised transport
+MuellerMatrix ConductorBxDF::MuellerF(Vector3f wo, Vector3f wi, TransportMode) const {
+    if (!SameHemisphere(wo, wi) || mfDistrib.EffectivelySmooth()) return {};
+    Float cosTheta_o = AbsCosTheta(wo), cosTheta_i = AbsCosTheta(wi);
+    if (cosTheta_i == 0 || cosTheta_o == 0) return {};
+    Vector3f wm = wi + wo;
+    if (LengthSquared(wm) == 0) return {};
+    wm = Normalize(wm);
+    // The Fresnel matrix of the microfacet, in its own plane of incidence
+    MuellerMatrix F = FresnelReflectionMueller(AbsDot(wo, wm), eta, k);
+    return MicrofacetToSurfaceFrame(F, wo, wi, wm) *
+           (mfDistrib.D(wm) * mfDistrib.G(wo, wi) / (4 * cosTheta_i * cosTheta_o));
+}
+
+MuellerMatrix ConductorBxDF::MuellerSample(Vector3f wo, const BSDFSample& bs,
+                                           TransportMode mode) const {
+    if (!bs.IsSpecular()) return MuellerF(wo, bs.wi, mode);
+    return FresnelReflectionMueller(AbsCosTheta(bs.wi), eta, k) / AbsCosTheta(bs.wi);
 }
 
 }  // namespace kiln

@@ -1,6 +1,7 @@
 #include "materials/bxdfs/dielectric_bxdf.h"
 
 #include "materials/bxdfs/fresnel.h"
+#include "materials/bxdfs/fresnel_mueller.h"
 
 namespace kiln {
 
@@ -117,6 +118,36 @@ Float DielectricBxDF::PDF(Vector3f wo, Vector3f wi, TransportMode,
     Float denom = Sqr(Dot(wi, wm) + Dot(wo, wm) / etap);
     Float dwm_dwi = AbsDot(wi, wm) / denom;
     return mfDistrib.PDF(wo, wm) * dwm_dwi * pt / (pr + pt);
+}
+
+// Polarised transport
+MuellerMatrix DielectricBxDF::MuellerF(Vector3f wo, Vector3f wi, TransportMode mode) const {
+    if (eta == 1 || mfDistrib.EffectivelySmooth()) return {};
+    Vector3f wm;
+    Float etap;
+    bool reflect;
+    if (!HalfVector(wo, wi, eta, &wm, &etap, &reflect)) return {};
+    if (reflect) {
+        MuellerMatrix F = FresnelReflectionMueller(Dot(wo, wm), eta);
+        return MicrofacetToSurfaceFrame(F, wo, wi, wm) *
+               (mfDistrib.D(wm) * mfDistrib.G(wo, wi) / std::abs(4 * CosTheta(wi) * CosTheta(wo)));
+    }
+    Float denom = Sqr(Dot(wi, wm) + Dot(wo, wm) / etap) * CosTheta(wi) * CosTheta(wo);
+    Float scale =
+        mfDistrib.D(wm) * mfDistrib.G(wo, wi) * std::abs(Dot(wi, wm) * Dot(wo, wm) / denom);
+    if (mode == TransportMode::Radiance) scale /= Sqr(etap);
+    MuellerMatrix T = FresnelTransmissionMueller(Dot(wo, wm), eta);
+    return MicrofacetToSurfaceFrame(T, wo, wi, wm) * scale;
+}
+
+MuellerMatrix DielectricBxDF::MuellerSample(Vector3f wo, const BSDFSample& bs,
+                                            TransportMode mode) const {
+    if (!bs.IsSpecular()) return MuellerF(wo, bs.wi, mode);
+    // Smooth: the plane of incidence contains the normal, so the s axes are the frame's
+    if (bs.IsReflection()) return FresnelReflectionMueller(CosTheta(wo), eta) / AbsCosTheta(bs.wi);
+    MuellerMatrix T = FresnelTransmissionMueller(CosTheta(wo), eta) / AbsCosTheta(bs.wi);
+    if (mode == TransportMode::Radiance) T = T / Sqr(bs.eta);
+    return T;
 }
 
 }  // namespace kiln

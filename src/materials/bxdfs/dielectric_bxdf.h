@@ -6,6 +6,7 @@
 
 #include "materials/bxdfs/bxdf_types.h"
 #include "materials/bxdfs/microfacet.h"
+#include "spectral/polarization.h"
 
 namespace kiln {
 
@@ -24,6 +25,10 @@ class DielectricBxDF {
         BxDFReflTransFlags sampleFlags = BxDFReflTransFlags::All) const;
     Float PDF(Vector3f wo, Vector3f wi, TransportMode mode,
               BxDFReflTransFlags sampleFlags = BxDFReflTransFlags::All) const;
+    // Polarised transport: Mueller matrices in the frames of fresnel_mueller.h, for a pair of
+    // directions (zero for specular lobes) and for a sample Sample_f returned.
+    MuellerMatrix MuellerF(Vector3f wo, Vector3f wi, TransportMode mode) const;
+    MuellerMatrix MuellerSample(Vector3f wo, const BSDFSample& bs, TransportMode mode) const;
     BxDFFlags Flags() const {
         BxDFFlags flags = (eta == 1) ? BxDFFlags::Transmission
                                      : (BxDFFlags::Reflection | BxDFFlags::Transmission);

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "materials/bxdfs/bxdf_types.h"
+#include "spectral/polarization.h"
 
 namespace kiln {
 
@@ -22,6 +23,10 @@ class ThinDielectricBxDF {
               BxDFReflTransFlags = BxDFReflTransFlags::All) const {
         return 0;
     }
+    // Polarised transport: Mueller matrices in the frames of fresnel_mueller.h, for a pair of
+    // directions (zero for specular lobes) and for a sample Sample_f returned.
+    MuellerMatrix MuellerF(Vector3f, Vector3f, TransportMode) const { return {}; }
+    MuellerMatrix MuellerSample(Vector3f wo, const BSDFSample& bs, TransportMode mode) const;
     BxDFFlags Flags() const {
         return BxDFFlags::Reflection | BxDFFlags::Transmission | BxDFFlags::Specular;
     }
