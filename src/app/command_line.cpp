@@ -105,6 +105,8 @@ std::string UsageText() {
            "  --wavelengths N       wavelengths per path: 4 (hero, default) or 1\n"
            "  --view NAME           display view for PNG/JPEG/TIFF outputs: Standard, Filmic,\n"
            "                        ACES, Glow (24 stops of log luminance) or Raw\n"
+           "  --stokes              render polarised light; the EXR gains Stokes layers\n"
+           "                        S0.R ... S3.B (as Film \"bool stokes\" true)\n"
            "  --verbose             print what kiln chose for the scene (code paths, tables)\n"
            "  --generic LIST        run generic code paths instead of the chosen ones, to\n"
            "                        measure what the choices save: footprints (texture\n"
@@ -165,6 +167,8 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             if (*o.lightSampler != "bvh" && *o.lightSampler != "power" &&
                 *o.lightSampler != "uniform" && *o.lightSampler != "area")
                 throw std::invalid_argument("--light-sampler expects bvh, power, uniform or area");
+        } else if (a == "--stokes") {
+            o.stokes = true;
         } else if (a == "--generic") {
             std::string list = value();
             size_t start = 0;
@@ -245,6 +249,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
         SceneOverrides overrides{options.spp, options.seed, options.crop, std::nullopt};
         overrides.genericFootprints = options.genericFootprints;
         overrides.genericAOVs = options.genericAOVs;
+        overrides.stokes = options.stokes;
         if (options.emission) overrides.emission = ParseEmissionModel(*options.emission);
         if (frame) {
             overrides.frame = *frame;

@@ -27,6 +27,7 @@ struct CommandLineOptions {
     // --generic footprints,aovs: run those generic code paths (measuring specialisation)
     bool genericFootprints = false, genericAOVs = false;
     std::optional<int> wavelengths;  // 1 | 4
+    bool stokes = false;             // --stokes: polarised rendering with Stokes layers
     bool help = false, version = false;
 };
 

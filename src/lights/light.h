@@ -86,15 +86,18 @@ class Light {
             },
             kind);
     }
-    // The radiance of a sample from SampleLiDeferred (its L unless deferred).
-    SampledSpectrum DeferredL(const LightLiSample& ls, const SampledWavelengths& lambda) const {
-        if (!ls.deferredL) return ls.L;
+    // The radiance of a sample from SampleLiDeferred (its L unless deferred). Radiance:
+    // SampledSpectrum, or Stokes in the implicit frame of -ls.wi (polarization.h; only
+    // thermal emission is polarised).
+    template <typename Radiance = SampledSpectrum>
+    Radiance DeferredL(const LightLiSample& ls, const SampledWavelengths& lambda) const {
+        if (!ls.deferredL) return Radiance(ls.L);
         return std::visit(
-            [&](auto l) -> SampledSpectrum {
-                if constexpr (requires { l->DeferredL(ls, lambda); })
-                    return l->DeferredL(ls, lambda);
+            [&](auto l) -> Radiance {
+                if constexpr (requires { l->template DeferredL<Radiance>(ls, lambda); })
+                    return l->template DeferredL<Radiance>(ls, lambda);
                 else
-                    return ls.L;
+                    return Radiance(ls.L);
             },
             kind);
     }
@@ -104,15 +107,19 @@ class Light {
         return std::visit([&](auto l) { return l->PDF_Li(ctx, wi, allowIncompletePDF); }, kind);
     }
     // Area lights: radiance leaving si, a point of the light's shape, towards w; bsdf is the
-    // BSDF at si (thermal emission derives from it). 0 for the other kinds.
-    SampledSpectrum L(const SurfaceInteraction& si, const BSDF& bsdf, Vector3f w,
-                      const SampledWavelengths& lambda) const {
+    // BSDF at si (thermal emission derives from it). 0 for the other kinds. Radiance as for
+    // DeferredL, in the implicit frame of w.
+    template <typename Radiance = SampledSpectrum>
+    Radiance L(const SurfaceInteraction& si, const BSDF& bsdf, Vector3f w,
+               const SampledWavelengths& lambda) const {
         return std::visit(
-            [&](auto l) -> SampledSpectrum {
-                if constexpr (requires { l->L(si, bsdf, w, lambda); })
-                    return l->L(si, bsdf, w, lambda);
+            [&](auto l) -> Radiance {
+                if constexpr (requires { l->template L<Radiance>(si, bsdf, w, lambda); })
+                    return l->template L<Radiance>(si, bsdf, w, lambda);
+                else if constexpr (requires { l->L(si, bsdf, w, lambda); })
+                    return Radiance(l->L(si, bsdf, w, lambda));
                 else
-                    return SampledSpectrum(0.f);
+                    return {};
             },
             kind);
     }

@@ -154,21 +154,26 @@ std::optional<LightLiSample> ThermalAreaLight::SampleLiDeferred(const LightSampl
     return ls;
 }
 
-SampledSpectrum ThermalAreaLight::DeferredL(const LightLiSample& ls,
-                                            const SampledWavelengths& lambda) const {
-    return EmissionAt(ls.pLight.p, -ls.wi, lambda, nullptr);
+template <typename Radiance>
+Radiance ThermalAreaLight::DeferredL(const LightLiSample& ls,
+                                     const SampledWavelengths& lambda) const {
+    return EmissionAt<Radiance>(ls.pLight.p, -ls.wi, lambda, nullptr);
 }
+template SampledSpectrum ThermalAreaLight::DeferredL<SampledSpectrum>(
+    const LightLiSample&, const SampledWavelengths&) const;
+template Stokes ThermalAreaLight::DeferredL<Stokes>(const LightLiSample&,
+                                                    const SampledWavelengths&) const;
 
-SampledSpectrum ThermalAreaLight::EmissionAt(Point3f p, Vector3f w,
-                                             const SampledWavelengths& lambda,
-                                             SurfaceInteraction* interaction) const {
+template <typename Radiance>
+Radiance ThermalAreaLight::EmissionAt(Point3f p, Vector3f w, const SampledWavelengths& lambda,
+                                      SurfaceInteraction* interaction) const {
     // The BSDF built as at a ray hit (on a copy of the wavelengths: the receiving path keeps
     // all of its own)
     SurfaceInteraction si = InteractionAt(p, 0, w);
     SampledWavelengths l = lambda;
     BSDF bsdf = shader->GetBSDF(si, l);
     if (interaction) *interaction = si;
-    return emission->L(si, bsdf, w, lambda);
+    return emission->L<Radiance>(si, bsdf, w, lambda);
 }
 
 std::optional<LightLiSample> ThermalAreaLight::SampleLi(const LightSampleContext& ctx, Point2f u,

@@ -47,9 +47,11 @@ class ThermalAreaLight {
     bool SamplesByPower() const { return distribution.has_value(); }
 
     // Radiance leaving si (on this light's shape) towards w; bsdf the BSDF at si.
-    SampledSpectrum L(const SurfaceInteraction& si, const BSDF& bsdf, Vector3f w,
-                      const SampledWavelengths& lambda) const {
-        return emission->L(si, bsdf, w, lambda);
+    // Radiance: SampledSpectrum or Stokes (thermal_emission.h).
+    template <typename Radiance = SampledSpectrum>
+    Radiance L(const SurfaceInteraction& si, const BSDF& bsdf, Vector3f w,
+               const SampledWavelengths& lambda) const {
+        return emission->L<Radiance>(si, bsdf, w, lambda);
     }
     std::optional<LightLiSample> SampleLi(const LightSampleContext& ctx, Point2f u,
                                           const SampledWavelengths& lambda,
@@ -58,7 +60,8 @@ class ThermalAreaLight {
     std::optional<LightLiSample> SampleLiDeferred(const LightSampleContext& ctx, Point2f u,
                                                   const SampledWavelengths& lambda,
                                                   bool allowIncompletePDF = false) const;
-    SampledSpectrum DeferredL(const LightLiSample& ls, const SampledWavelengths& lambda) const;
+    template <typename Radiance = SampledSpectrum>
+    Radiance DeferredL(const LightLiSample& ls, const SampledWavelengths& lambda) const;
     Float PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool allowIncompletePDF = false) const;
     // Emitted power over 360-830 nm, W (both sides), as estimated at creation.
     Float VisiblePower() const { return visiblePower; }
@@ -72,8 +75,9 @@ class ThermalAreaLight {
     // The full interaction at a point of the shape, with the shape's material and emission.
     SurfaceInteraction InteractionAt(Point3f p, Float time, Vector3f wo) const;
     // Radiance leaving p towards w, from the BSDF there; the interaction if asked for.
-    SampledSpectrum EmissionAt(Point3f p, Vector3f w, const SampledWavelengths& lambda,
-                               SurfaceInteraction* interaction) const;
+    template <typename Radiance = SampledSpectrum>
+    Radiance EmissionAt(Point3f p, Vector3f w, const SampledWavelengths& lambda,
+                        SurfaceInteraction* interaction) const;
     std::optional<Float> ParametricPDF(Point3f p) const;
 
     const Shape* shape;

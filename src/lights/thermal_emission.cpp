@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "materials/bxdfs/fresnel_mueller.h"
 #include "materials/emissivity.h"
 #include "spectral/planck.h"
 
@@ -12,16 +13,33 @@ Float ThermalEmission::Temperature(const SurfaceInteraction& si) const {
     return std::isfinite(T) && T > 0 ? T : 0;
 }
 
-SampledSpectrum ThermalEmission::L(const SurfaceInteraction& si, const BSDF& bsdf, Vector3f w,
-                                   const SampledWavelengths& lambda) const {
-    if (model == EmissionModel::None) return SampledSpectrum(0.f);
+template <typename Radiance>
+Radiance ThermalEmission::L(const SurfaceInteraction& si, const BSDF& bsdf, Vector3f w,
+                            const SampledWavelengths& lambda) const {
+    if (model == EmissionModel::None) return {};
     Float T = Temperature(si);
-    if (T <= 0) return SampledSpectrum(0.f);
+    if (T <= 0) return {};
     SampledSpectrum B = scale * planck_radiance(lambda, T);
-    if (model != EmissionModel::Kirchhoff) return B;
-    if (!bsdf) return SampledSpectrum(0.f);
-    return B * (SampledSpectrum(1.f) - albedo->Evaluate(si.material, bsdf, w, lambda));
+    if (model != EmissionModel::Kirchhoff) return Radiance(B);
+    if (!bsdf) return {};
+    SampledSpectrum Le =
+        B * (SampledSpectrum(1.f) - albedo->Evaluate(si.material, bsdf, w, lambda));
+    if constexpr (std::is_same_v<Radiance, SampledSpectrum>) {
+        return Le;
+    } else {
+        SampledSpectrum a1 = albedo->LinearPolarization(si.material, bsdf, w);
+        if (!a1) return Stokes(Le);
+        // (1 - A, -a1) B with reference axis perpendicular to the plane of ns and w
+        Vector3f axis = bsdf.LocalToRender(PlaneAxis(Vector3f(0, 0, 1), bsdf.RenderToLocal(w)));
+        return RotateStokesBasis(Stokes(Le, -B * a1, {}, {}), w, axis, StokesBasis(w));
+    }
 }
+
+template SampledSpectrum ThermalEmission::L<SampledSpectrum>(const SurfaceInteraction&, const BSDF&,
+                                                             Vector3f,
+                                                             const SampledWavelengths&) const;
+template Stokes ThermalEmission::L<Stokes>(const SurfaceInteraction&, const BSDF&, Vector3f,
+                                           const SampledWavelengths&) const;
 
 Float ThermalEmission::VisibleExitance(const SurfaceInteraction& si, const BSDF& bsdf) const {
     if (model == EmissionModel::None) return 0;

@@ -8,11 +8,15 @@
 //                        non-reflecting material)
 // with B Planck's spectral radiance in W m^-2 sr^-1 nm^-1 (spectral/planck.h) times "scale"
 // (1: absolute units). Opaque surfaces emit on both sides, as their BSDFs reflect on both.
+// In polarised transport (Radiance = Stokes) kirchhoff emission is polarised as Kirchhoff's
+// law per polarisation state requires (emissivity.h); additive and diffuse emission are
+// unpolarised, as in the paper.
 #pragma once
 
 #include "core/base/interaction.h"
 #include "materials/bxdfs/bsdf.h"
 #include "materials/emission_model.h"
+#include "spectral/polarization.h"
 #include "textures/texture.h"
 
 namespace kiln {
@@ -35,8 +39,10 @@ class ThermalEmission {
 
     // Radiance leaving si towards w, W m^-2 sr^-1 nm^-1. bsdf: the BSDF at si, which
     // si.material built (SurfaceShader::GetBSDF); none (an interface) emits nothing.
-    SampledSpectrum L(const SurfaceInteraction& si, const BSDF& bsdf, Vector3f w,
-                      const SampledWavelengths& lambda) const;
+    // Radiance: SampledSpectrum, or Stokes in the implicit frame of w (polarization.h).
+    template <typename Radiance = SampledSpectrum>
+    Radiance L(const SurfaceInteraction& si, const BSDF& bsdf, Vector3f w,
+               const SampledWavelengths& lambda) const;
     // Radiant exitance at si over 360-830 nm, both sides, W m^-2: 2 pi integral of
     // B(lambda, T) times the hemispherical emissivity, by an 8-point midpoint rule in
     // wavelength (for the power estimates light selection uses).

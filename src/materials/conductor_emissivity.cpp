@@ -336,4 +336,17 @@ SampledSpectrum ConductorEmissivity::Albedo(const ConductorBxDF& bxdf, Vector3f 
     return A;
 }
 
+SampledSpectrum ConductorEmissivity::LinearPolarization(const ConductorBxDF& bxdf,
+                                                        Vector3f wo) const {
+    SampledSpectrum a1;
+    if (!bxdf.Distribution().EffectivelySmooth()) return a1;
+    Float cosTheta = std::min<Float>(1, AbsCosTheta(wo));
+    for (int i = 0; i < NSpectrumSamples; ++i) {
+        FresnelRsRp R =
+            FrComplexPolarized(cosTheta, std::complex<Float>(bxdf.Eta()[i], bxdf.K()[i]));
+        a1[i] = (R.Rs - R.Rp) / 2;
+    }
+    return a1;
+}
+
 }  // namespace kiln

@@ -43,6 +43,12 @@ class ConductorEmissivity {
     SampledSpectrum Albedo(const ConductorBxDF& bxdf, Vector3f wo,
                            const SampledWavelengths& lambda) const;
 
+    // Linear polarisation of what bxdf reflects towards wo under uniform unpolarised
+    // illumination of unit radiance: S1 with reference axis perpendicular to the plane of the
+    // normal and wo (its S2 vanishes by mirror symmetry about that plane). Smooth conductors:
+    // (Rs - Rp) / 2. Rough ones: 0 for now (not yet tabulated; documented in emissivity.h).
+    SampledSpectrum LinearPolarization(const ConductorBxDF& bxdf, Vector3f wo) const;
+
     // False for textured anisotropic roughness (approximated).
     bool Exact() const { return exact; }
 

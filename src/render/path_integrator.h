@@ -1,7 +1,7 @@
 // Unidirectional path tracing with multiple importance sampling (pbrt-v4's PathIntegrator).
 //
 // The radiance representation is a template parameter (see radiance.h): the same code renders
-// unpolarised and, later, polarised light. At each surface the integrator builds the BSDF,
+// unpolarised and polarised light. At each surface the integrator builds the BSDF,
 // adds the surface's emission (computed from that BSDF, in its shading frame: thermal emission
 // is a property of the surface; MIS-weighted against light sampling when the surface is a
 // light), samples one light (MIS-weighted against BSDF sampling), then continues the path by
@@ -25,8 +25,9 @@ class PathIntegrator {
     PathIntegrator(const Scene& scene, PathIntegratorSettings settings)
         : scene(scene), settings(settings) {}
 
-    // Radiance arriving along ray at the wavelengths lambda. visibleSurface (if non-null) gets
-    // the first hit's geometry and albedo for AOVs.
+    // Radiance arriving along ray at the wavelengths lambda (polarised: Stokes in the implicit
+    // frame of -ray.d). visibleSurface (if non-null) gets the first hit's geometry and albedo
+    // for AOVs.
     Spectrum Li(Ray ray, SampledWavelengths& lambda, Sampler& sampler,
                 VisibleSurface* visibleSurface) const {
         Spectrum L{};
@@ -47,12 +48,12 @@ class PathIntegrator {
                     SampledSpectrum Le = light.Le(ray, lambda);
                     if (!Le) continue;
                     if (depth == 0 || specularBounce) {
-                        L += Radiance::Apply(beta, Radiance::Emitted(Le));
+                        L += Radiance::Apply(beta, Radiance::Unpolarized(Le));
                     } else {
                         Float lightPdf = scene.lightSampler->PMF(prevContext, index) *
                                          light.PDF_Li(prevContext, ray.d, true);
                         Float w = EmissionWeight(prevBsdfPdf, lightPdf);
-                        L += Radiance::Apply(beta, Radiance::Emitted(w * Le));
+                        L += Radiance::Apply(beta, Radiance::Unpolarized(w * Le));
                     }
                 }
                 break;
@@ -62,16 +63,16 @@ class PathIntegrator {
             // The BSDF at the hit (invalid for interface materials, which only mark
             // boundaries); emission is computed from it, in its shading frame
             BSDF bsdf = scene.GetBSDF(isect, lambda);
-            if (SampledSpectrum Le = scene.SurfaceLe(isect, bsdf, -ray.d, lambda)) {
+            if (Spectrum Le = scene.SurfaceLe<Spectrum>(isect, bsdf, -ray.d, lambda)) {
                 if (depth == 0 || specularBounce || isect.lightIndex < 0) {
                     // All of it: light sampling could not have found it
-                    L += Radiance::Apply(beta, Radiance::Emitted(Le));
+                    L += Radiance::Apply(beta, Le);
                 } else {
                     const Light& light = scene.lights[size_t(isect.lightIndex)];
                     Float lightPdf = scene.lightSampler->PMF(prevContext, isect.lightIndex) *
                                      light.PDF_Li(prevContext, ray.d, true);
                     Float w = EmissionWeight(prevBsdfPdf, lightPdf);
-                    L += Radiance::Apply(beta, Radiance::Emitted(w * Le));
+                    L += Radiance::Apply(beta, Le * w);
                 }
             }
             if (!bsdf) {
@@ -88,15 +89,16 @@ class PathIntegrator {
             // Direct lighting by light sampling
             Vector3f wo = -ray.d;
             if (IsNonSpecular(bsdf.Flags()) && settings.strategy != LightStrategy::BSDFOnly) {
-                SampledSpectrum Ld = SampleLd(isect, bsdf, lambda, sampler);
-                if (Ld) L += Radiance::Apply(beta, Radiance::Emitted(Ld));
+                Spectrum Ld = SampleLd(isect, bsdf, lambda, sampler);
+                if (Ld) L += Radiance::Apply(beta, Ld);
             }
 
             // Continue the path by sampling the BSDF
             Float u = sampler.Get1D();
-            std::optional<BSDFSample> bs = bsdf.Sample_f(wo, u, sampler.Get2D());
+            std::optional<BSDFSampleOf<Throughput>> bs =
+                bsdf.Sample_f<Throughput>(wo, u, sampler.Get2D());
             if (!bs || bs->pdf == 0 || !bs->f) break;
-            beta = beta * Radiance::Scatter(bs->f * AbsDot(bs->wi, isect.shading.n) / bs->pdf);
+            beta = beta * (bs->f * (AbsDot(bs->wi, isect.shading.n) / bs->pdf));
             prevBsdfPdf = bs->pdfIsProportional ? bsdf.PDF(wo, bs->wi) : bs->pdf;
             specularBounce = bs->IsSpecular();
             anyNonSpecularBounces |= !bs->IsSpecular();
@@ -105,7 +107,7 @@ class PathIntegrator {
             ray = isect.SpawnRay(bs->wi);
 
             // Russian roulette, on throughput with the radiance scaling of refraction removed
-            Float rrBeta = Radiance::MaxComponent(beta) * etaScale;
+            Float rrBeta = Radiance::RouletteWeight(beta) * etaScale;
             if (rrBeta < 1 && depth > 1) {
                 Float q = std::max<Float>(0, 1 - rrBeta);
                 if (sampler.Get1D() < q) break;
@@ -131,8 +133,8 @@ class PathIntegrator {
     }
 
     // One light sample: pick a light by power, sample a point on it, MIS-weight against the BSDF.
-    SampledSpectrum SampleLd(const SurfaceInteraction& intr, const BSDF& bsdf,
-                             const SampledWavelengths& lambda, Sampler& sampler) const {
+    Spectrum SampleLd(const SurfaceInteraction& intr, const BSDF& bsdf,
+                      const SampledWavelengths& lambda, Sampler& sampler) const {
         LightSampleContext ctx(intr);
         // Move the reference point to the side the BSDF can scatter to, for one-sided BSDFs.
         BxDFFlags flags = bsdf.Flags();
@@ -151,18 +153,19 @@ class PathIntegrator {
         if (!ls || ls->pdf == 0 || (!ls->deferredL && !ls->L)) return {};
 
         Vector3f wo = intr.wo, wi = ls->wi;
-        SampledSpectrum f = bsdf.f(wo, wi) * AbsDot(wi, intr.shading.n);
+        Throughput f = bsdf.f<Throughput>(wo, wi);
         if (!f) return {};
         if (scene.aggregate->IntersectP(intr.SpawnRayTo(ls->pLight), 1 - ShadowEpsilon)) return {};
-        ls->L = light.DeferredL(*ls, lambda);
-        if (!ls->L) return {};
+        Spectrum Li = light.DeferredL<Spectrum>(*ls, lambda);
+        if (!Li) return {};
 
         Float lightPdf = sampled->p * ls->pdf;
-        if (IsDeltaLight(light.Type())) return ls->L * f / lightPdf;
+        Float cosTheta = AbsDot(wi, intr.shading.n);
+        if (IsDeltaLight(light.Type())) return Radiance::Apply(f, Li) * (cosTheta / lightPdf);
         Float bsdfPdf = bsdf.PDF(wo, wi);
         Float w = settings.strategy == LightStrategy::MIS ? PowerHeuristic(1, lightPdf, 1, bsdfPdf)
                                                           : Float(1);
-        return w * ls->L * f / lightPdf;
+        return Radiance::Apply(f, Li) * (w * cosTheta / lightPdf);
     }
 
     const Scene& scene;

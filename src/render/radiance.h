@@ -1,34 +1,52 @@
 // What a light path carries: the integrator's radiance type parameter.
 //
 // Following Mitsuba 3's variants, PathIntegrator<Radiance> is written once against the small
-// interface below. UnpolarizedRadiance carries a SampledSpectrum and multiplies throughput by
-// scalar BSDF values per wavelength. A polarised variant (Stokes vectors for radiance, Mueller
-// matrices for throughput, rotated into each interaction's reference frame) supplies the same
-// members, so the integrator does not change and unpolarised scenes pay nothing for it.
+// interface below, and the scene's needs choose the variant at load (renderer.cpp):
+//   UnpolarizedRadiance: radiance and throughput are SampledSpectrum; BSDFs return scalar values
+//                        per wavelength.
+//   PolarizedRadiance:   radiance is a Stokes vector per wavelength and throughput a Mueller
+//                        matrix per wavelength, both in the implicit frames of the directions
+//                        of travel (spectral/polarization.h); BSDFs return Mueller matrices
+//                        rotated into those frames, thermal emission is polarised, other
+//                        emitters are unpolarised.
 #pragma once
 
-#include "materials/bxdfs/bsdf.h"
+#include "spectral/polarization.h"
 #include "spectral/sampled_spectrum.h"
 
 namespace kiln {
 
 struct UnpolarizedRadiance {
-    // Radiance arriving at the camera, W m^-2 sr^-1 nm^-1 at each sampled wavelength.
+    static constexpr bool Polarized = false;
+    // Radiance, W m^-2 sr^-1 nm^-1 at each sampled wavelength.
     using Spectrum = SampledSpectrum;
-    // Path throughput: what multiplies radiance found further along the path.
+    // What BSDFs return and path throughput is: it multiplies radiance found further on.
     using Throughput = SampledSpectrum;
 
     static Throughput One() { return SampledSpectrum(1.f); }
-    // Throughput change of scattering from wi towards wo (f * |cos| / pdf style factors).
-    static Throughput Scatter(const SampledSpectrum& f) { return f; }
-    // Radiance emitted by a light (unpolarised emitters).
-    static Spectrum Emitted(const SampledSpectrum& L) { return L; }
-    // Applies throughput to radiance.
+    // Radiance of an unpolarised emitter.
+    static Spectrum Unpolarized(const SampledSpectrum& L) { return L; }
+    // Throughput applied to radiance.
     static Spectrum Apply(const Throughput& beta, const Spectrum& L) { return beta * L; }
-    // The intensity (first Stokes component) that the film records.
+    // The intensity (first Stokes component).
     static const SampledSpectrum& Intensity(const Spectrum& L) { return L; }
-    // Magnitude used for Russian roulette.
-    static Float MaxComponent(const Throughput& beta) { return beta.MaxComponentValue(); }
+    // Magnitude used for Russian roulette: the throughput of intensity.
+    static Float RouletteWeight(const Throughput& beta) { return beta.MaxComponentValue(); }
+};
+
+struct PolarizedRadiance {
+    static constexpr bool Polarized = true;
+    using Spectrum = Stokes;
+    using Throughput = MuellerMatrix;
+
+    static Throughput One() { return MuellerMatrix::Identity(); }
+    static Spectrum Unpolarized(const SampledSpectrum& L) { return Stokes(L); }
+    static Spectrum Apply(const Throughput& beta, const Spectrum& L) { return beta * L; }
+    static const SampledSpectrum& Intensity(const Spectrum& L) { return L.Intensity(); }
+    // M00: what the throughput does to unpolarised light.
+    static Float RouletteWeight(const Throughput& beta) {
+        return beta.Intensity().MaxComponentValue();
+    }
 };
 
 }  // namespace kiln

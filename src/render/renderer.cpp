@@ -26,9 +26,29 @@ struct PixelFeatures {
     bool fixedPixelCenter;  // Option "disablepixeljitter"
 };
 
+// Polarised radiance arriving at the camera along -d (Stokes in the implicit frame of d, the
+// direction of travel) in the film's frame: reference axis the image's horizontal, S2 > 0 along
+// the diagonal towards the image's upper right, whatever the handedness of the camera
+// transform; then through the camera's polariser, if any.
+Stokes ToFilmFrame(const Scene& scene, Stokes S, Vector3f d) {
+    const Transform& renderFromCamera = scene.camera->GetCameraTransform().RenderFromCamera();
+    Vector3f right = renderFromCamera(Vector3f(1, 0, 0)), up = renderFromCamera(Vector3f(0, 1, 0));
+    Vector3f x = GramSchmidt(Normalize(right), d);
+    if (LengthSquared(x) < 1e-8f) return Stokes(S[0]);  // the ray runs along the horizontal
+    x = Normalize(x);
+    S = RotateStokesBasis(S, d, StokesBasis(d), x);
+    // The frame (x, d x x, d) shows the image mirrored when d x x points down
+    if (Dot(Cross(d, x), up) < 0) {
+        S[2] = -S[2];
+        S[3] = -S[3];
+    }
+    if (scene.cameraPolarizer) S = LinearPolarizer(*scene.cameraPolarizer) * S;
+    return S;
+}
+
 // One pixel sample: camera ray, radiance along it, film update.
-template <bool AOVs, bool SingleWavelength, bool FixedPixelCenter>
-void RenderPixelSample(const Scene& scene, const PathIntegrator<UnpolarizedRadiance>& integrator,
+template <typename Radiance, bool AOVs, bool SingleWavelength, bool FixedPixelCenter>
+void RenderPixelSample(const Scene& scene, const PathIntegrator<Radiance>& integrator,
                        kiln::Sampler& sampler, Point2i pPixel, int sampleIndex) {
     sampler.StartPixelSample(pPixel, sampleIndex);
     // Wavelengths first, then the camera sample (pbrt-v4's order)
@@ -41,31 +61,43 @@ void RenderPixelSample(const Scene& scene, const PathIntegrator<UnpolarizedRadia
         cs.filterWeight = 1;
     }
     std::optional<CameraRay> cameraRay = scene.camera->GenerateRay(cs, lambda);
-    SampledSpectrum L;
+    typename Radiance::Spectrum L;
     // The first hit's albedo etc. only when the film writes AOV layers (it costs a BSDF
     // albedo estimate per camera ray)
     VisibleSurface visible;
     VisibleSurface* pVisible = AOVs ? &visible : nullptr;
-    if (cameraRay) L = cameraRay->weight * integrator.Li(cameraRay->ray, lambda, sampler, pVisible);
+    if (cameraRay) {
+        L = cameraRay->weight * integrator.Li(cameraRay->ray, lambda, sampler, pVisible);
+        if constexpr (Radiance::Polarized) L = ToFilmFrame(scene, L, -cameraRay->ray.d);
+    }
     scene.film->AddSample(pPixel, L, lambda, pVisible, cs.filterWeight);
 }
 
-using PixelSampleFunction = void (*)(const Scene&, const PathIntegrator<UnpolarizedRadiance>&,
-                                     kiln::Sampler&, Point2i, int);
+template <typename Radiance>
+using PixelSampleFunction = void (*)(const Scene&, const PathIntegrator<Radiance>&, kiln::Sampler&,
+                                     Point2i, int);
 
 // The instantiation for the scene's features, chosen once per render.
-PixelSampleFunction PixelSampleFor(PixelFeatures f) {
-    static constexpr PixelSampleFunction table[8] = {
-        RenderPixelSample<false, false, false>, RenderPixelSample<false, false, true>,
-        RenderPixelSample<false, true, false>,  RenderPixelSample<false, true, true>,
-        RenderPixelSample<true, false, false>,  RenderPixelSample<true, false, true>,
-        RenderPixelSample<true, true, false>,   RenderPixelSample<true, true, true>};
+template <typename Radiance>
+PixelSampleFunction<Radiance> PixelSampleFor(PixelFeatures f) {
+    static constexpr PixelSampleFunction<Radiance> table[8] = {
+        RenderPixelSample<Radiance, false, false, false>,
+        RenderPixelSample<Radiance, false, false, true>,
+        RenderPixelSample<Radiance, false, true, false>,
+        RenderPixelSample<Radiance, false, true, true>,
+        RenderPixelSample<Radiance, true, false, false>,
+        RenderPixelSample<Radiance, true, false, true>,
+        RenderPixelSample<Radiance, true, true, false>,
+        RenderPixelSample<Radiance, true, true, true>};
     return table[(f.aovs ? 4 : 0) + (f.singleWavelength ? 2 : 0) + (f.fixedPixelCenter ? 1 : 0)];
 }
 
 }  // namespace
 
-RenderStats Render(Scene& scene, const RenderSettings& settings) {
+namespace {
+
+template <typename Radiance>
+RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
     RenderStats stats;
     Bounds2i pixelBounds = scene.film->PixelBounds();
     Point2i res(pixelBounds.pMax.x - pixelBounds.pMin.x, pixelBounds.pMax.y - pixelBounds.pMin.y);
@@ -79,10 +111,10 @@ RenderStats Render(Scene& scene, const RenderSettings& settings) {
         threadLimit = std::make_unique<tbb::global_control>(
             tbb::global_control::max_allowed_parallelism, size_t(settings.threads));
 
-    PathIntegrator<UnpolarizedRadiance> integrator(scene, scene.integrator);
+    PathIntegrator<Radiance> integrator(scene, scene.integrator);
     const SceneFeatures& f = scene.features;
-    const PixelSampleFunction renderPixelSample =
-        PixelSampleFor({f.aovs, f.singleWavelength, f.fixedPixelCenter});
+    const PixelSampleFunction<Radiance> renderPixelSample =
+        PixelSampleFor<Radiance>({f.aovs, f.singleWavelength, f.fixedPixelCenter});
     tbb::enumerable_thread_specific<kiln::Sampler> samplers([&] { return scene.sampler->Clone(); });
 
     std::ostringstream title;
@@ -124,6 +156,14 @@ RenderStats Render(Scene& scene, const RenderSettings& settings) {
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats.cameraPaths = pathsTraced.load();
     return stats;
+}
+
+}  // namespace
+
+RenderStats Render(Scene& scene, const RenderSettings& settings) {
+    // The radiance variant the scene needs, chosen once (radiance.h)
+    if (scene.features.polarized) return RenderVariant<PolarizedRadiance>(scene, settings);
+    return RenderVariant<UnpolarizedRadiance>(scene, settings);
 }
 
 }  // namespace kiln

@@ -17,7 +17,7 @@ std::string SceneFeatures::ToString() const {
         "thermal emission %s (%d lights, %d emissivity tables in %.2f s%s); texture footprints "
         "at %d of %d materials; pixel loop: AOVs %s, %d wavelength%s, %s pixel positions; "
         "light sampler %s; area lights %s, environment light %s, dispersion %s; "
-        "polarisation off (not implemented)%s%s",
+        "polarisation %s%s%s",
         onOff(thermalEmission), thermalLights, emissivityTables, emissivitySeconds,
         varyingTemperatures ? ", varying temperatures" : "", footprintMaterials, materials,
         onOff(aovs), singleWavelength ? 1 : NSpectrumSamples, singleWavelength ? "" : "s",
@@ -27,6 +27,7 @@ std::string SceneFeatures::ToString() const {
         : lightSelection == LightSelection::Uniform ? "uniform"
                                                     : "area",
         onOff(areaLights), onOff(environmentLight), onOff(dispersion),
+        polarized ? "on (Stokes vectors, Mueller matrices)" : "off",
         genericFootprints ? "; generic footprints (--generic)" : "",
         genericAOVs ? "; generic AOVs (--generic)" : "");
     return buf;
@@ -60,13 +61,6 @@ BSDF SceneShader::GetBSDF(SurfaceInteraction& si, SampledWavelengths& lambda) co
 }
 
 // Scene
-SampledSpectrum Scene::SurfaceLe(const SurfaceInteraction& isect, const BSDF& bsdf, Vector3f wo,
-                                 const SampledWavelengths& lambda) const {
-    if (isect.thermal) return isect.thermal->L(isect, bsdf, wo, lambda);
-    if (isect.lightIndex >= 0) return lights[size_t(isect.lightIndex)].L(isect, bsdf, wo, lambda);
-    return SampledSpectrum(0.f);
-}
-
 VisibleSurface Scene::MakeVisibleSurface(const SurfaceInteraction& isect, const BSDF& bsdf,
                                          const SampledWavelengths& lambda) const {
     (void)lambda;

@@ -21,6 +21,7 @@
 #include "core/parser/diagnostics.h"
 #include "lights/light.h"
 #include "lights/light_sampler.h"
+#include "lights/thermal_emission.h"
 #include "materials/bxdfs/bsdf.h"
 #include "materials/emission_model.h"
 #include "materials/emissivity_tables.h"
@@ -45,6 +46,8 @@ struct SceneOverrides {
     // measure what the choices save: texture footprints at every hit, AOV work for every
     // camera ray.
     bool genericFootprints = false, genericAOVs = false;
+    // kiln --stokes: the film records Stokes layers (Film "bool stokes" true).
+    bool stokes = false;
 };
 
 // How direct light is found: pbrt-v4's MIS of light and BSDF sampling (default), or one of the
@@ -91,6 +94,9 @@ struct SceneFeatures {
     LightSelection lightSelection = LightSelection::BVH;
     bool areaLights = false, environmentLight = false;
     bool dispersion = false;  // wavelength-dependent IOR (terminates secondaries)
+    // Polarised transport (radiance.h): when the film records Stokes layers or the camera
+    // carries a polariser; otherwise the unpolarised variant runs
+    bool polarized = false;
     std::string ToString() const;
 };
 
@@ -127,9 +133,16 @@ class Scene {
         return shader->GetBSDF(isect, lambda);
     }
     // Radiance the surface at isect emits towards wo: its thermal emission, or its area
-    // light's. bsdf: the BSDF GetBSDF returned there.
-    SampledSpectrum SurfaceLe(const SurfaceInteraction& isect, const BSDF& bsdf, Vector3f wo,
-                              const SampledWavelengths& lambda) const;
+    // light's. bsdf: the BSDF GetBSDF returned there. Radiance: SampledSpectrum or Stokes
+    // (in the implicit frame of wo).
+    template <typename Radiance = SampledSpectrum>
+    Radiance SurfaceLe(const SurfaceInteraction& isect, const BSDF& bsdf, Vector3f wo,
+                       const SampledWavelengths& lambda) const {
+        if (isect.thermal) return isect.thermal->L<Radiance>(isect, bsdf, wo, lambda);
+        if (isect.lightIndex >= 0)
+            return lights[size_t(isect.lightIndex)].L<Radiance>(isect, bsdf, wo, lambda);
+        return {};
+    }
     VisibleSurface MakeVisibleSurface(const SurfaceInteraction& isect, const BSDF& bsdf,
                                       const SampledWavelengths& lambda) const;
 
@@ -146,6 +159,9 @@ class Scene {
     std::unique_ptr<LightSampler> lightSampler;
     PathIntegratorSettings integrator;
     bool disablePixelJitter = false;
+    // Camera "float polarizer" (kiln): a linear polariser in front of the film, its
+    // transmission axis at this angle (radians) from the image's horizontal towards its up.
+    std::optional<Float> cameraPolarizer;
     bool autoExposure = false;  // film "bool autoexposure" (kiln): see auto_exposure.h
     int shapeCount = 0;
     int thermalEmitterCount = 0;  // lights of shapes glowing because of their temperature

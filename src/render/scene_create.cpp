@@ -84,12 +84,26 @@ void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const SceneOverri
         crop.floats = {c.pMin.x, c.pMax.x, c.pMin.y, c.pMax.y};
         desc.film.parameters.Set(crop);
     }
+    if (overrides.stokes) {
+        ParsedParameter stokes;
+        stokes.type = "bool";
+        stokes.name = "stokes";
+        stokes.bools = {true};
+        desc.film.parameters.Set(stokes);
+    }
     scene.autoExposure = desc.film.parameters.GetOneBool("autoexposure", false);
     scene.film = RGBFilm::Create(desc.film.name, desc.film.parameters, shutterClose - shutterOpen,
                                  *scene.filter, desc.filmColorSpace, desc.film.loc, arena, diag);
     scene.camera =
         Camera::Create(desc.camera.name, desc.camera.parameters, desc.camera.cameraTransform,
                        scene.film->FullResolution(), desc.camera.loc, arena, diag);
+    if (desc.camera.parameters.Has("polarizer")) {
+        Float degrees = desc.camera.parameters.GetOneFloat("polarizer", 0);
+        if (!std::isfinite(degrees))
+            throw SceneError(desc.camera.parameters.Loc("polarizer"),
+                             "camera \"polarizer\" must be a finite angle in degrees", "polarizer");
+        scene.cameraPolarizer = Radians(degrees);
+    }
     std::optional<int> seed = overrides.seed ? overrides.seed : desc.seedOption;
     scene.sampler =
         Sampler::Create(desc.sampler.name, desc.sampler.parameters, scene.film->FullResolution(),
@@ -375,6 +389,7 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
     f.aovs = scene.film->UsesVisibleSurface() || overrides.genericAOVs;
     f.singleWavelength = scene.integrator.singleWavelength;
     f.fixedPixelCenter = scene.disablePixelJitter;
+    f.polarized = scene.film->WritesStokes() || scene.cameraPolarizer.has_value();
     f.lightSelection = scene.integrator.lightSelection;
     f.areaLights = !desc.areaLights.empty();
     f.environmentLight = !scene.infiniteLights.empty();

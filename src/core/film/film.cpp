@@ -98,7 +98,8 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
     o.pixelBounds = bounds;
     // The pixels rendered must fit in memory (checked before anything is allocated)
     const bool aovs = params.GetOneBool("writeaovs", type == "gbuffer");
-    const double bytes = double(bounds.Area()) * RGBFilm::BytesPerPixel(aovs);
+    const bool stokes = params.GetOneBool("stokes", false);
+    const double bytes = double(bounds.Area()) * RGBFilm::BytesPerPixel(aovs, stokes);
     if (bounds.Area() > std::numeric_limits<int32_t>::max() ||
         (PhysicalMemoryBytes() > 0 && bytes > PhysicalMemoryBytes()))
         throw SceneError(resolutionLoc,
@@ -126,6 +127,7 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
                 "\" (expected \"Standard\", \"Filmic\", \"ACES\", \"Glow\" or \"Raw\")",
             o.view);
     o.writeAOVs = aovs;
+    o.stokes = stokes;
     PixelSensor sensor = PixelSensor::Create(params, colorSpace, exposureTime, loc, diag);
     return arena.New<RGBFilm>(o, sensor, filter, colorSpace);
 }
@@ -138,6 +140,7 @@ RGBFilm::RGBFilm(const Options& options, const PixelSensor& sensor, const Filter
     size_t n = size_t(std::max<int64_t>(0, opts.pixelBounds.Area()));
     pixels.resize(n);
     if (opts.writeAOVs) aovs.resize(n);
+    if (opts.stokes) stokesPixels.resize(n);
 }
 
 Bounds2f RGBFilm::SampleBounds() const {
@@ -152,11 +155,11 @@ size_t RGBFilm::PixelIndex(Point2i p) const {
     return size_t(p.y - b.pMin.y) * size_t(b.pMax.x - b.pMin.x) + size_t(p.x - b.pMin.x);
 }
 
-void RGBFilm::AddSample(Point2i pPixel, const SampledSpectrum& L, const SampledWavelengths& lambda,
-                        const VisibleSurface* visibleSurface, Float weight) {
+void RGBFilm::AddSample(Point2i pPixel, const SampledSpectrum& L, const Stokes* S,
+                        const SampledWavelengths& lambda, const VisibleSurface* visibleSurface,
+                        Float weight) {
     // Reject NaN/Inf radiance (and weights): count them, remember the first pixel.
-    bool finite = std::isfinite(weight);
-    for (int i = 0; i < NSpectrumSamples; ++i) finite = finite && std::isfinite(L[i]);
+    bool finite = std::isfinite(weight) && L.IsFinite() && (!S || S->IsFinite());
     size_t idx = PixelIndex(pPixel);
     if (!finite) {
         nonFiniteCount.fetch_add(1, std::memory_order_relaxed);
@@ -166,11 +169,19 @@ void RGBFilm::AddSample(Point2i pPixel, const SampledSpectrum& L, const SampledW
     }
     // Sensor response, clamped to maxComponentValue preserving ratios (pbrt-v4).
     RGB rgb = sensor.ToSensorRGB(L, lambda);
-    Float m = std::max({rgb.r, rgb.g, rgb.b});
-    if (m > opts.maxComponentValue) rgb = rgb * (opts.maxComponentValue / m);
+    Float m = std::max({rgb.r, rgb.g, rgb.b}), scale = 1;
+    if (m > opts.maxComponentValue) scale = opts.maxComponentValue / m;
+    rgb = rgb * scale;
     Pixel& px = pixels[idx];
     for (int c = 0; c < 3; ++c) px.rgbSum[c] += double(weight) * rgb[c];
     px.weightSum += weight;
+    if (S && !stokesPixels.empty()) {
+        StokesPixel& sp = stokesPixels[idx];
+        for (int k = 1; k < 4; ++k) {
+            RGB s = sensor.ToSensorRGB((*S)[k], lambda) * scale;
+            for (int c = 0; c < 3; ++c) sp.rgbSum[k - 1][c] += double(weight) * s[c];
+        }
+    }
 
     if (!aovs.empty() && visibleSurface && visibleSurface->set) {
         // Albedo as the colour of the reflectance under the colour space's illuminant (an
@@ -195,6 +206,16 @@ RGB RGBFilm::GetPixelRGB(Point2i p) const {
     return Mul(outputRGBFromSensorRGB, rgb) * std::exp2(opts.exposureEV);
 }
 
+RGB RGBFilm::GetPixelStokes(Point2i p, int k) const {
+    if (k == 0) return GetPixelRGB(p);
+    const Pixel& px = pixels[PixelIndex(p)];
+    if (px.weightSum == 0 || stokesPixels.empty()) return RGB(0, 0, 0);
+    const double* sum = stokesPixels[PixelIndex(p)].rgbSum[k - 1];
+    RGB rgb(Float(sum[0] / px.weightSum), Float(sum[1] / px.weightSum),
+            Float(sum[2] / px.weightSum));
+    return Mul(outputRGBFromSensorRGB, rgb) * std::exp2(opts.exposureEV);
+}
+
 std::optional<Point2i> RGBFilm::FirstNonFinitePixel() const {
     int64_t i = firstNonFinite.load();
     if (i < 0) return std::nullopt;
@@ -208,12 +229,23 @@ Image RGBFilm::GetImage(ImageMetadata* metadata) const {
     std::vector<std::string> names = {"R", "G", "B"};
     if (!aovs.empty())
         names.insert(names.end(), {"albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z", "Z"});
+    const int stokesChannel = int(names.size());
+    if (!stokesPixels.empty())
+        for (int k = 0; k < 4; ++k)
+            for (const char* c : {"R", "G", "B"})
+                names.push_back("S" + std::to_string(k) + "." + c);
     Image image(PixelFormat::Float, res, names);
     for (int y = 0; y < res.y; ++y)
         for (int x = 0; x < res.x; ++x) {
             Point2i p(x + b.pMin.x, y + b.pMin.y);
             RGB rgb = GetPixelRGB(p);
             for (int c = 0; c < 3; ++c) image.SetChannel({x, y}, c, rgb[c]);
+            if (!stokesPixels.empty())
+                for (int k = 0; k < 4; ++k) {
+                    RGB s = k == 0 ? rgb : GetPixelStokes(p, k);
+                    for (int c = 0; c < 3; ++c)
+                        image.SetChannel({x, y}, stokesChannel + 3 * k + c, s[c]);
+                }
             if (aovs.empty()) continue;
             const AOVPixel& ap = aovs[PixelIndex(p)];
             double w = ap.weightSum != 0 ? 1 / ap.weightSum : 0;
@@ -263,6 +295,7 @@ void RGBFilm::WriteImage(const std::string& filename, ImageMetadata metadata,
 void RGBFilm::Clear() {
     std::fill(pixels.begin(), pixels.end(), Pixel());
     std::fill(aovs.begin(), aovs.end(), AOVPixel());
+    std::fill(stokesPixels.begin(), stokesPixels.end(), StokesPixel());
     nonFiniteCount = 0;
     firstNonFinite = -1;
 }

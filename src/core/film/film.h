@@ -25,6 +25,7 @@
 #include "core/parser/diagnostics.h"
 #include "core/parser/file_loc.h"
 #include "spectral/color.h"
+#include "spectral/polarization.h"
 #include "spectral/sampled_spectrum.h"
 
 namespace kiln {
@@ -68,7 +69,11 @@ class RGBFilm {
     // ("cie1931"), "float maxcomponentvalue" (infinity), "float diagonal" (35 mm).
     // kiln additions: "float exposure" (EV stops, default 0: pixel values times 2^exposure),
     // "string view" ("Standard" | "Filmic" | "ACES" | "Raw", for display formats), "bool writeaovs"
-    // (false; film type "gbuffer" sets it: the EXR gains albedo.{R,G,B}, N.{X,Y,Z} and Z layers).
+    // (false; film type "gbuffer" sets it: the EXR gains albedo.{R,G,B}, N.{X,Y,Z} and Z layers),
+    // "bool stokes" (false; the EXR gains S0.{R,G,B} ... S3.{R,G,B}, the Stokes components
+    // with reference axis the image's horizontal, S2 > 0 for light polarised along the
+    // diagonal from lower left to upper right; S0 is the RGB image; a scene with it renders
+    // polarised light).
     // type: "rgb" | "gbuffer"; others warn and use "rgb". exposureTime: camera shutter
     // interval, s. colorSpace: output colour space (nullptr: sRGB). Throws SceneError.
     static RGBFilm* Create(const std::string& type, const ParameterDictionary& params,
@@ -86,6 +91,7 @@ class RGBFilm {
         Float exposureEV = 0;
         std::string view = "Standard";
         bool writeAOVs = false;
+        bool stokes = false;
     };
     RGBFilm(const Options& options, const PixelSensor& sensor, const Filter& filter,
             const RGBColorSpace* colorSpace);
@@ -97,7 +103,9 @@ class RGBFilm {
     // float. Half floats end at kMaxHalf.
     static constexpr Float kMaxExposureEV = 64;
     static constexpr float kMaxHalf = 65504;
-    static size_t BytesPerPixel(bool aovs) { return sizeof(Pixel) + (aovs ? sizeof(AOVPixel) : 0); }
+    static size_t BytesPerPixel(bool aovs, bool stokes) {
+        return sizeof(Pixel) + (aovs ? sizeof(AOVPixel) : 0) + (stokes ? sizeof(StokesPixel) : 0);
+    }
 
     Point2i FullResolution() const { return opts.fullResolution; }
     Bounds2i PixelBounds() const { return opts.pixelBounds; }
@@ -114,6 +122,8 @@ class RGBFilm {
     // Whether AddSample uses its VisibleSurface (AOV layers); when false, callers may pass
     // nullptr and skip computing it (pbrt-v4's Film::UsesVisibleSurface).
     bool UsesVisibleSurface() const { return opts.writeAOVs; }
+    // Whether the film records the Stokes components (film "stokes").
+    bool WritesStokes() const { return opts.stokes; }
 
     SampledWavelengths SampleWavelengths(Float u) const {
         return SampledWavelengths::SampleVisible(u);
@@ -125,17 +135,29 @@ class RGBFilm {
     // is counted and dropped. visibleSurface (may be null) feeds the AOV layers.
     // Thread-safe as long as one pixel is only written by one thread at a time (tiles).
     void AddSample(Point2i pPixel, const SampledSpectrum& L, const SampledWavelengths& lambda,
-                   const VisibleSurface* visibleSurface, Float weight);
+                   const VisibleSurface* visibleSurface, Float weight) {
+        AddSample(pPixel, L, nullptr, lambda, visibleSurface, weight);
+    }
+    // A polarised sample: S in the film's frame (see "stokes"); S0 goes where L goes above,
+    // S1..S3 to the Stokes layers (if the film has them) with the same sensor response and
+    // the same maxComponentValue scale.
+    void AddSample(Point2i pPixel, const Stokes& S, const SampledWavelengths& lambda,
+                   const VisibleSurface* visibleSurface, Float weight) {
+        AddSample(pPixel, S[0], &S, lambda, visibleSurface, weight);
+    }
 
     // Pixel value in the output colour space with exposure applied (black if no weight).
     RGB GetPixelRGB(Point2i p) const;
+    // Stokes component k (0..3) of a pixel, like GetPixelRGB (k = 0 is GetPixelRGB; 1..3 are
+    // black without "stokes").
+    RGB GetPixelStokes(Point2i p, int k) const;
 
     int64_t NonFiniteSampleCount() const { return nonFiniteCount.load(); }
     std::optional<Point2i> FirstNonFinitePixel() const;
 
     // Linear image of the pixel bounds: channels R, G, B (+ albedo.R/G/B, N.X/Y/Z, Z with
-    // AOVs), PixelFormat::Float. Fills *metadata (if not null) with pixel bounds, full
-    // resolution and colour space.
+    // AOVs, + S0.R ... S3.B with "stokes"), PixelFormat::Float. Fills *metadata (if not null) with
+    // pixel bounds, full resolution and colour space.
     Image GetImage(ImageMetadata* metadata) const;
     // By extension: .exr (linear; half when savefp16, with the AOV layers), .pfm/.hdr (linear
     // float), any other OIIO format through ToDisplayImage with the "view" parameter (or
@@ -163,7 +185,13 @@ class RGBFilm {
         double depth = 0;              // weighted
         double weightSum = 0;          // of samples with a visible surface
     };
+    struct StokesPixel {
+        double rgbSum[3][3] = {};  // sensor RGB of S1, S2, S3, weighted
+    };
     size_t PixelIndex(Point2i p) const;
+    void AddSample(Point2i pPixel, const SampledSpectrum& L, const Stokes* S,
+                   const SampledWavelengths& lambda, const VisibleSurface* visibleSurface,
+                   Float weight);
 
     Options opts;
     PixelSensor sensor;
@@ -171,7 +199,8 @@ class RGBFilm {
     const RGBColorSpace* colorSpace;
     ColorMatrix outputRGBFromSensorRGB;
     std::vector<Pixel> pixels;
-    std::vector<AOVPixel> aovs;  // empty unless writeAOVs
+    std::vector<AOVPixel> aovs;             // empty unless writeAOVs
+    std::vector<StokesPixel> stokesPixels;  // empty unless stokes
     std::atomic<int64_t> nonFiniteCount{0};
     std::atomic<int64_t> firstNonFinite{-1};  // pixel index
 };
