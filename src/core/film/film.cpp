@@ -231,9 +231,8 @@ Image RGBFilm::GetImage(ImageMetadata* metadata) const {
         names.insert(names.end(), {"albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z", "Z"});
     const int stokesChannel = int(names.size());
     if (!stokesPixels.empty())
-        for (int k = 0; k < 4; ++k)
-            for (const char* c : {"R", "G", "B"})
-                names.push_back("S" + std::to_string(k) + "." + c);
+        names.insert(names.end(), {"S0.R", "S0.G", "S0.B", "S1.R", "S1.G", "S1.B", "S2.R", "S2.G",
+                                   "S2.B", "S3.R", "S3.G", "S3.B"});
     Image image(PixelFormat::Float, res, names);
     for (int y = 0; y < res.y; ++y)
         for (int x = 0; x < res.x; ++x) {
