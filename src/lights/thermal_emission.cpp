@@ -27,11 +27,11 @@ Radiance ThermalEmission::L(const SurfaceInteraction& si, const BSDF& bsdf, Vect
     if constexpr (std::is_same_v<Radiance, SampledSpectrum>) {
         return Le;
     } else {
-        SampledSpectrum a1 = albedo->LinearPolarization(si.material, bsdf, w);
-        if (!a1) return Stokes(Le);
-        // (1 - A, -a1) B with reference axis perpendicular to the plane of ns and w
+        ReflectedPolarization a = albedo->LinearPolarization(si.material, bsdf, w);
+        if (!a) return Stokes(Le);
+        // B (1 - A, -a1, -a2, 0) with reference axis perpendicular to the plane of ns and w
         Vector3f axis = bsdf.LocalToRender(PlaneAxis(Vector3f(0, 0, 1), bsdf.RenderToLocal(w)));
-        return RotateStokesBasis(Stokes(Le, -B * a1, {}, {}), w, axis, StokesBasis(w));
+        return RotateStokesBasis(Stokes(Le, -B * a.s1, -B * a.s2, {}), w, axis, StokesBasis(w));
     }
 }
 

@@ -174,8 +174,40 @@ ConductorEmissivity::ConductorEmissivity(const ConductorMaterial& m, EmissivityT
             }
             for (int j = 0; j < H; ++j) weights[size_t(cell) * H + j] = float(w[size_t(j)]);
         });
+        // Polarised rendering: the S1 and S2 weights on the same cells
+        if (t.polarized) {
+            polarizationWeights.resize(size_t(cosines.Size()) * na * 2 * H);
+            tbb::parallel_for(0, cosines.Size() * na, [&](int cell) {
+                double mu = std::max(1e-4, double(cosines.Node(cell / na)));
+                ConductorAlbedoMoments::PolarizationWeights p{};
+                if (na == 1) {
+                    p.cos2 = ConductorAlbedoMoments::ComputeLinearPolarization(alphaX, mu);
+                } else {
+                    // S2 is odd about both axes and steep beside them at grazing angles: the
+                    // table holds S2 / sin(2 phi), which interpolates well (at the axes, from
+                    // azimuths 1e-3 inside them)
+                    double phi = azimuths.Phi(cell % na), sinTheta = std::sqrt(1 - mu * mu);
+                    double ax = std::max(1e-4f, alphaX), ay = std::max(1e-4f, alphaY);
+                    double wo[3] = {sinTheta * std::cos(phi), sinTheta * std::sin(phi), mu};
+                    p = ConductorAlbedoMoments::ComputeLinearPolarization(ax, ay, wo);
+                    double phi2 = std::clamp(phi, 1e-3, Pi / 2 - 1e-3);
+                    if (phi2 != phi) {
+                        double wo2[3] = {sinTheta * std::cos(phi2), sinTheta * std::sin(phi2), mu};
+                        p.sin2 =
+                            ConductorAlbedoMoments::ComputeLinearPolarization(ax, ay, wo2).sin2;
+                    }
+                    for (double& w : p.sin2) w /= std::sin(2 * phi2);
+                }
+                float* out = &polarizationWeights[size_t(cell) * 2 * H];
+                for (int j = 0; j < H; ++j) {
+                    out[j] = float(p.cos2[size_t(j)]);
+                    out[H + j] = float(p.sin2[size_t(j)]);
+                }
+            });
+        }
     } else {
         moments = &t.ConductorMoments();
+        if (t.polarized) polarizationMoments = &t.ConductorPolarizationMoments();
     }
 
     // Fresnel factors F(mu_j, x) over x, factorised
@@ -336,17 +368,63 @@ SampledSpectrum ConductorEmissivity::Albedo(const ConductorBxDF& bxdf, Vector3f 
     return A;
 }
 
-SampledSpectrum ConductorEmissivity::LinearPolarization(const ConductorBxDF& bxdf,
-                                                        Vector3f wo) const {
-    SampledSpectrum a1;
-    if (!bxdf.Distribution().EffectivelySmooth()) return a1;
+ReflectedPolarization ConductorEmissivity::LinearPolarization(const ConductorBxDF& bxdf,
+                                                              Vector3f wo) const {
+    ReflectedPolarization r;
     Float cosTheta = std::min<Float>(1, AbsCosTheta(wo));
-    for (int i = 0; i < NSpectrumSamples; ++i) {
-        FresnelRsRp R =
-            FrComplexPolarized(cosTheta, std::complex<Float>(bxdf.Eta()[i], bxdf.K()[i]));
-        a1[i] = (R.Rs - R.Rp) / 2;
+    auto dF = [&](Float mu, int i) {
+        FresnelRsRp R = FrComplexPolarized(mu, std::complex<Float>(bxdf.Eta()[i], bxdf.K()[i]));
+        return (R.Rs - R.Rp) / 2;
+    };
+    const TrowbridgeReitzDistribution& d = bxdf.Distribution();
+    if (d.EffectivelySmooth()) {
+        for (int i = 0; i < NSpectrumSamples; ++i) r.s1[i] = dF(cosTheta, i);
+        return r;
     }
-    return a1;
+    // The weights at wo, interpolated over the table cells
+    float w1[H] = {}, w2[H] = {};
+    if (!polarizationWeights.empty()) {
+        int cell[8];
+        float cellWeight[8];
+        const int cells = Cells(d, wo, cell, cellWeight);
+        for (int k = 0; k < cells; ++k) {
+            const float* row = &polarizationWeights[size_t(cell[k]) * 2 * H];
+            for (int j = 0; j < H; ++j) {
+                w1[j] += cellWeight[k] * row[j];
+                w2[j] += cellWeight[k] * row[H + j];
+            }
+        }
+        // The table holds S2 / sin(2 phi) at azimuths folded into [0, pi/2]; S2 changes sign
+        // under the mirror images that fold the others onto them, so S2 = sin(2 phi) times it
+        float sin2Phi = 2 * CosPhi(wo) * SinPhi(wo);
+        for (float& w : w2) w *= sin2Phi;
+    } else if (polarizationMoments) {
+        // Textured roughness: the shared isotropic table, linear in the cosine, cubic in
+        // log alpha (at the root-mean-square alpha)
+        const TableAxis& alphas = tables->LogAlphas();
+        auto [ci, ct] = tables->Cosines().Locate(cosTheta);
+        float aw[4];
+        int first = CubicWeights(alphas, std::log(std::max(EquivalentAlpha(d), 1e-4f)), aw);
+        for (int c = 0; c < 2; ++c)
+            for (int a = 0; a < 4; ++a) {
+                float cw = (c ? ct : 1 - ct) * aw[a];
+                const float* row =
+                    &(*polarizationMoments)[(size_t(ci + c) * alphas.Size() + first + a) * H];
+                for (int j = 0; j < H; ++j) w1[j] += cw * row[j];
+            }
+    } else {
+        return r;
+    }
+    for (int j = 0; j < H; ++j) {
+        if (w1[j] == 0 && w2[j] == 0) continue;
+        Float mu = Float(ConductorAlbedoMoments::Node(j));
+        for (int i = 0; i < NSpectrumSamples; ++i) {
+            Float f = dF(mu, i);
+            r.s1[i] += w1[j] * f;
+            r.s2[i] += w2[j] * f;
+        }
+    }
+    return r;
 }
 
 }  // namespace kiln

@@ -35,6 +35,14 @@ namespace kiln {
 
 class ConductorMaterial;
 
+// The polarisation of what a BSDF reflects towards wo under uniform unpolarised illumination of
+// unit radiance: Stokes S1 and S2 with reference axis perpendicular to the plane of the normal
+// and wo (S0 is the albedo; S3 vanishes).
+struct ReflectedPolarization {
+    SampledSpectrum s1, s2;
+    explicit operator bool() const { return bool(s1) || bool(s2); }
+};
+
 class ConductorEmissivity {
   public:
     ConductorEmissivity(const ConductorMaterial& material, EmissivityTables& tables);
@@ -43,11 +51,15 @@ class ConductorEmissivity {
     SampledSpectrum Albedo(const ConductorBxDF& bxdf, Vector3f wo,
                            const SampledWavelengths& lambda) const;
 
-    // Linear polarisation of what bxdf reflects towards wo under uniform unpolarised
-    // illumination of unit radiance: S1 with reference axis perpendicular to the plane of the
-    // normal and wo (its S2 vanishes by mirror symmetry about that plane). Smooth conductors:
-    // (Rs - Rp) / 2. Rough ones: 0 for now (not yet tabulated; documented in emissivity.h).
-    SampledSpectrum LinearPolarization(const ConductorBxDF& bxdf, Vector3f wo) const;
+    // The polarisation of what bxdf reflects towards wo (local frame). Smooth conductors:
+    // S1 = (Rs - Rp) / 2, S2 = 0. Rough ones: sums over the Fresnel nodes of weights
+    // (ConductorAlbedoMoments::ComputeLinearPolarization) times (Rs - Rp)(mu_j) / 2, the
+    // Fresnel factors per sample; the weights come from a table over the cosine (and azimuth,
+    // for anisotropic roughness) built for the material, or for textured roughness from the
+    // shared cosine x log-alpha table of isotropic weights (S2 = 0; anisotropic textures use
+    // the root-mean-square alpha). Zero for rough conductors unless the tables were built for
+    // polarised rendering (EmissivityTables::polarized).
+    ReflectedPolarization LinearPolarization(const ConductorBxDF& bxdf, Vector3f wo) const;
 
     // False for textured anisotropic roughness (approximated).
     bool Exact() const { return exact; }
@@ -86,6 +98,11 @@ class ConductorEmissivity {
     // scene-wide [cos][log alpha][j] table
     std::vector<float> weights;
     const std::vector<float>* moments = nullptr;
+    // Polarised rendering: the weights of S1 and of S2 / sin(2 phi) per cell of `weights`,
+    // [cell][S1, S2 / sin(2 phi)][j] (uniform roughness), or the shared S1 weights
+    // [cos][log alpha][j] (textured roughness)
+    std::vector<float> polarizationWeights;
+    const std::vector<float>* polarizationMoments = nullptr;
     // Fresnel factorisation (Wavelength, Reflectance): nodes of x, V_r(x) as [x][r], and the
     // moment weights projected on U, G_r = sum_j W_j U_jr, per table cell as [cell][r]; rows
     // of `stride` floats (the rank rounded up to a multiple of four, zero-padded)

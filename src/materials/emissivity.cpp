@@ -105,24 +105,22 @@ SampledSpectrum MaterialAlbedo::Hemispherical(const Material* material, const BS
     return sum;
 }
 
-SampledSpectrum MaterialAlbedo::LinearPolarization(const Material* material, const BSDF& bsdf,
-                                                   Vector3f woRender) const {
+ReflectedPolarization MaterialAlbedo::LinearPolarization(const Material* material, const BSDF& bsdf,
+                                                         Vector3f woRender) const {
     if (!bsdf) return {};
     Vector3f wo = bsdf.RenderToLocal(woRender);
     return std::visit(
-        [&](const auto& k) -> SampledSpectrum {
+        [&](const auto& k) -> ReflectedPolarization {
             using K = std::decay_t<decltype(k)>;
             if constexpr (std::is_same_v<K, ConductorEmissivity>) {
                 const ConductorBxDF* c = bsdf.GetBxDF().Cast<ConductorBxDF>();
-                return c ? k.LinearPolarization(*c, wo) : SampledSpectrum(0.f);
+                if (c) return k.LinearPolarization(*c, wo);
             } else if constexpr (std::is_same_v<K, Mix>) {
                 for (const auto& [component, albedo] : k.components)
                     if (component == material)
                         return albedo->LinearPolarization(material, bsdf, woRender);
-                return SampledSpectrum(0.f);
-            } else {
-                return SampledSpectrum(0.f);
             }
+            return {};
         },
         kind);
 }

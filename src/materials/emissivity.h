@@ -21,12 +21,12 @@
 //                             scattering energy loss is not emitted either)
 //   mix:                      the component chosen at the point
 // Polarisation (Kirchhoff per polarisation state): in a closed isothermal cavity the light a
-// surface reflects towards wo, Stokes B (A, a1, 0, 0) with reference axis perpendicular to
+// surface reflects towards wo, Stokes B (A, a1, a2, 0) with reference axis perpendicular to
 // the plane of the shading normal and wo, plus what it emits must be unpolarised B, so it emits
-// B (1 - A, -a1, 0, 0): polarised parallel to that plane where its reflection is polarised
-// perpendicular to it. LinearPolarization gives a1: (Rs - Rp) / 2 for smooth conductors, 0 for
-// depolarising BSDFs (diffuse, coated) and, for now, rough conductors (not yet tabulated: their
-// emission is unpolarised, a known gap in the polarised equilibrium of rough metals).
+// B (1 - A, -a1, -a2, 0): polarised parallel to that plane where its reflection is polarised
+// perpendicular to it. LinearPolarization gives (a1, a2): for conductors see
+// conductor_emissivity.h; zero for depolarising BSDFs (diffuse, coated: their reflection is
+// unpolarised).
 //
 // Rough conductors use pbrt-v4's single-scattering microfacet model, whose albedo misses the
 // multiply scattered energy (for a perfect mirror metal 12 % at alpha 0.3, 69 % at alpha 1,
@@ -61,9 +61,10 @@ class MaterialAlbedo {
     // (render space). Per wavelength, in [0, 1]; 1 for an invalid BSDF.
     SampledSpectrum Evaluate(const Material* material, const BSDF& bsdf, Vector3f woRender,
                              const SampledWavelengths& lambda) const;
-    // a1 (above) per wavelength for bsdf seen from woRender; 0 for an invalid BSDF.
-    SampledSpectrum LinearPolarization(const Material* material, const BSDF& bsdf,
-                                       Vector3f woRender) const;
+    // The polarisation (above) of what bsdf reflects towards woRender, about the plane of the
+    // shading normal and woRender; 0 for an invalid BSDF.
+    ReflectedPolarization LinearPolarization(const Material* material, const BSDF& bsdf,
+                                             Vector3f woRender) const;
     // Cosine-weighted hemispherical average 2 integral A(mu) mu dmu at the point (for power
     // estimates), by 4-point Gauss-Legendre quadrature over mu.
     SampledSpectrum Hemispherical(const Material* material, const BSDF& bsdf,

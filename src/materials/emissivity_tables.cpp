@@ -44,4 +44,19 @@ const std::vector<float>& EmissivityTables::ConductorMoments() {
     return conductorMoments;
 }
 
+const std::vector<float>& EmissivityTables::ConductorPolarizationMoments() {
+    if (!conductorPolarizationMoments.empty()) return conductorPolarizationMoments;
+    const int nCos = cosines.Size(), nAlpha = logAlphas.Size(), H = ConductorAlbedoMoments::kNodes;
+    conductorPolarizationMoments.resize(size_t(nCos) * nAlpha * H);
+    tbb::parallel_for(0, nCos * nAlpha, [&](int cell) {
+        int ci = cell / nAlpha, ai = cell % nAlpha;
+        double mu = std::max(1e-4, double(cosines.Node(ci)));
+        ConductorAlbedoMoments::Weights w = ConductorAlbedoMoments::ComputeLinearPolarization(
+            std::exp(double(logAlphas.Node(ai))), mu);
+        for (int j = 0; j < H; ++j)
+            conductorPolarizationMoments[size_t(cell) * H + j] = float(w[size_t(j)]);
+    });
+    return conductorPolarizationMoments;
+}
+
 }  // namespace kiln

@@ -33,12 +33,19 @@ class EmissivityTables {
     // (when a hot conductor has textured roughness); not thread-safe: call during scene
     // creation only.
     const std::vector<float>& ConductorMoments();
+    // The same grid of ConductorAlbedoMoments::ComputeLinearPolarization weights, for polarised
+    // emission of rough conductors (built on first use, as ConductorMoments).
+    const std::vector<float>& ConductorPolarizationMoments();
+
+    // Whether the scene renders polarised light: materials then also build what polarised
+    // emission needs. Set before any material's emissivity is created.
+    bool polarized = false;
 
     static float CosineNode(int i, int n);
 
   private:
     TableAxis cosines, wavelengths, fineWavelengths, logAlphas;
-    std::vector<float> conductorMoments;
+    std::vector<float> conductorMoments, conductorPolarizationMoments;
 };
 
 }  // namespace kiln

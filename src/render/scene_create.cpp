@@ -389,7 +389,7 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
     f.aovs = scene.film->UsesVisibleSurface() || overrides.genericAOVs;
     f.singleWavelength = scene.integrator.singleWavelength;
     f.fixedPixelCenter = scene.disablePixelJitter;
-    f.polarized = scene.film->WritesStokes() || scene.cameraPolarizer.has_value();
+    f.polarized = scene.emissivityTables->polarized;  // decided in Scene::Create
     f.lightSelection = scene.integrator.lightSelection;
     f.areaLights = !desc.areaLights.empty();
     f.environmentLight = !scene.infiniteLights.empty();
@@ -411,6 +411,8 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
     NamedTextures& textures = CreateTextures(desc, overrides, *scene, diag);
     SceneMaterials materials = CreateMaterials(desc, textures, scene->arena, diag);
     scene->emissivityTables = std::make_unique<EmissivityTables>();
+    scene->emissivityTables->polarized =
+        scene->film->WritesStokes() || scene->cameraPolarizer.has_value();
     ThermalEmitters emitters(*scene->shader, *scene->emissivityTables, scene->arena, diag,
                              overrides.emission, scene->integrator.emitterPowerSampling);
     std::vector<SceneShapes> shapes;

@@ -141,8 +141,65 @@ const Case kCases[] = {
      "\"float amount\" 0.4"},
 };
 
+// Polarised transport: the cavity must also be unpolarised. Reflection from metals polarises
+// (perpendicular to the plane of reflection) and Kirchhoff emission polarises the other way
+// (materials/emissivity.h); only when the two cancel exactly are S1, S2 and S3 zero.
+class PolarizedEquilibrium : public ::testing::TestWithParam<std::tuple<Case, bool>> {};
+
+TEST_P(PolarizedEquilibrium, CavityIsUnpolarisedBlackbody) {
+    auto [c, meshes] = GetParam();
+    const double T = 1000, B = BlackbodyLuminance(T);
+    SceneOverrides overrides;
+    overrides.stokes = true;
+    testing::RenderedScene r = testing::RenderText(Cavity(c, meshes, T, 256), 0, overrides);
+    for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
+    ASSERT_TRUE(r.scene->features.polarized);
+    // Per pixel: S0, then S1 and S2 re-expressed about the image's radial direction from the
+    // centre (where the object's emission and reflection polarisations point: a mean over the
+    // image of S1 or S2 alone would cancel), and S3
+    RunningStats s[4];
+    Bounds2i b = r.scene->film->PixelBounds();
+    const RGBColorSpace* cs = r.scene->film->ColorSpace();
+    for (int y = b.pMin.y; y < b.pMax.y; ++y)
+        for (int x = b.pMin.x; x < b.pMax.x; ++x) {
+            double S[4];
+            for (int k = 0; k < 4; ++k)
+                S[k] = cs->ToXYZ(r.scene->film->GetPixelStokes({x, y}, k)).Y / B;
+            // Image up is -y in raster space
+            double phi = std::atan2(-(y + 0.5 - (b.pMin.y + b.pMax.y) / 2.0),
+                                    x + 0.5 - (b.pMin.x + b.pMax.x) / 2.0);
+            s[0].Add(S[0]);
+            s[1].Add(S[1] * std::cos(2 * phi) + S[2] * std::sin(2 * phi));
+            s[2].Add(-S[1] * std::sin(2 * phi) + S[2] * std::cos(2 * phi));
+            s[3].Add(S[3]);
+        }
+    std::printf(
+        "%-28s %-7s: S0 %.5f (se %.5f), radial %+.5f (%.5f), diagonal %+.5f (%.5f), S3 "
+        "%+.5f (%.5f)\n",
+        c.name, meshes ? "meshes" : "spheres", s[0].Mean(), s[0].StandardError(), s[1].Mean(),
+        s[1].StandardError(), s[2].Mean(), s[2].StandardError(), s[3].Mean(), s[3].StandardError());
+    EXPECT_NEAR(s[0].Mean(), 1, 4 * s[0].StandardError() + 1e-3);
+    for (int k = 1; k < 4; ++k) {
+        EXPECT_LT(4 * s[k].StandardError(), 0.005);  // the test can see 0.5 % polarisation
+        EXPECT_NEAR(s[k].Mean(), 0, 4 * s[k].StandardError() + 1e-3) << "component " << k;
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Cavities, Equilibrium,
                          ::testing::Combine(::testing::ValuesIn(kCases), ::testing::Bool()),
+                         [](const auto& info) {
+                             std::string n = std::get<0>(info.param).name;
+                             std::string id;
+                             for (char ch : n)
+                                 if (std::isalnum(static_cast<unsigned char>(ch))) id += ch;
+                             return id + (std::get<1>(info.param) ? "_Meshes" : "_Spheres");
+                         });
+
+INSTANTIATE_TEST_SUITE_P(Cavities, PolarizedEquilibrium,
+                         ::testing::Combine(::testing::Values(kCases[0], kCases[1], kCases[2],
+                                                              kCases[3], kCases[4], kCases[5],
+                                                              kCases[6], kCases[8]),
+                                            ::testing::Bool()),
                          [](const auto& info) {
                              std::string n = std::get<0>(info.param).name;
                              std::string id;

@@ -53,8 +53,12 @@ int ConductorAlbedoMoments::InterpolationWeights(double mu, double w[4]) {
     return first;
 }
 
-ConductorAlbedoMoments::Weights ConductorAlbedoMoments::Compute(double alpha, double cosThetaO) {
-    Weights w{};
+namespace {
+
+// The isotropic weights, with the factor cos(2 chi) when `polarization`.
+ConductorAlbedoMoments::Weights IsotropicWeights(double alpha, double cosThetaO,
+                                                 bool polarization) {
+    ConductorAlbedoMoments::Weights w{};
     double sinThetaO = std::sqrt(std::max(0.0, 1 - cosThetaO * cosThetaO));
     double lambdaO = SmithLambda(alpha, cosThetaO);
     for (const NormalQuadraturePoint& q :
@@ -63,16 +67,39 @@ ConductorAlbedoMoments::Weights ConductorAlbedoMoments::Compute(double alpha, do
         double wiz = 2 * mu * q.wm.z - cosThetaO;             // z of reflect(wo, wm)
         if (wiz <= 0) continue;
         double g = (1 + lambdaO) / (1 + lambdaO + SmithLambda(alpha, wiz));  // G2 / G1
+        if (polarization) {
+            // wo = (sin, 0, cos): the surface's s axis z x wo is +y; the facet's is wm x wo
+            double sx = q.wm.y * cosThetaO, sy = q.wm.z * sinThetaO - q.wm.x * cosThetaO,
+                   sz = -q.wm.y * sinThetaO;
+            double len2 = sx * sx + sy * sy + sz * sz;
+            double cos2 = len2 > 0 ? sy * sy / len2 : 1;  // cos^2 chi
+            g *= 2 * cos2 - 1;
+        }
         double lw[4];
-        int first = InterpolationWeights(mu, lw);
+        int first = ConductorAlbedoMoments::InterpolationWeights(mu, lw);
         for (int a = 0; a < 4; ++a) w[size_t(first + a)] += q.weight * g * lw[a];
     }
     return w;
 }
 
-ConductorAlbedoMoments::Weights ConductorAlbedoMoments::Compute(double alphaX, double alphaY,
-                                                                const double wo[3], int psiPanels,
-                                                                int xPanels) {
+}  // namespace
+
+ConductorAlbedoMoments::Weights ConductorAlbedoMoments::Compute(double alpha, double cosThetaO) {
+    return IsotropicWeights(alpha, cosThetaO, false);
+}
+
+ConductorAlbedoMoments::Weights ConductorAlbedoMoments::ComputeLinearPolarization(
+    double alpha, double cosThetaO) {
+    return IsotropicWeights(alpha, cosThetaO, true);
+}
+
+namespace {
+
+// The anisotropic quadrature: calls add(mu, weight, wm) for each visible normal wm (local
+// frame) that reflects wo above the horizon, weight the measure times G2 / G1.
+template <typename Add>
+void AnisotropicQuadrature(double alphaX, double alphaY, const double wo[3], int psiPanels,
+                           int xPanels, Add&& add) {
     constexpr double kPi = 3.14159265358979323846;
     // Smith's Lambda of a direction (local frame) under the anisotropic distribution
     auto lambda = [&](double x, double y, double z) {
@@ -103,7 +130,6 @@ ConductorAlbedoMoments::Weights ConductorAlbedoMoments::Compute(double alphaX, d
         psis.weight.insert(psis.weight.end(), arc.weight.begin(), arc.weight.end());
     }
     const QuadratureRule unitX = SmoothstepGaussLegendre(xPanels, 8, 0, 1);
-    Weights w{};
     for (size_t k = 0; k < psis.x.size(); ++k) {
         double cx = alphaX * std::cos(psis.x[k]), sy = alphaY * std::sin(psis.x[k]);
         double alpha = std::sqrt(cx * cx + sy * sy);  // roughness along phi_m
@@ -126,12 +152,61 @@ ConductorAlbedoMoments::Weights ConductorAlbedoMoments::Compute(double alphaX, d
             double measure = t * s / (2 * (1 + t * t)) * xMax * unitX.weight[i] * psis.weight[k];
             double visible = G1 * mu / cosThetaO;
             double g = (1 + lambdaO) / (1 + lambdaO + lambda(ix, iy, iz));  // G2 / G1
-            double lw[4];
-            int first = InterpolationWeights(mu, lw);
-            for (int c = 0; c < 4; ++c) w[size_t(first + c)] += measure * visible * g * lw[c];
+            const double wm[3] = {nx, ny, nz};
+            add(mu, measure * visible * g, wm);
         }
     }
+}
+
+// Adds weight to the four interpolation weights of mu in w.
+void AddAt(ConductorAlbedoMoments::Weights& w, double mu, double weight) {
+    double lw[4];
+    int first = ConductorAlbedoMoments::InterpolationWeights(mu, lw);
+    for (int c = 0; c < 4; ++c) w[size_t(first + c)] += weight * lw[c];
+}
+
+}  // namespace
+
+ConductorAlbedoMoments::Weights ConductorAlbedoMoments::Compute(double alphaX, double alphaY,
+                                                                const double wo[3], int psiPanels,
+                                                                int xPanels) {
+    Weights w{};
+    AnisotropicQuadrature(alphaX, alphaY, wo, psiPanels, xPanels,
+                          [&](double mu, double weight, const double*) { AddAt(w, mu, weight); });
     return w;
+}
+
+ConductorAlbedoMoments::PolarizationWeights ConductorAlbedoMoments::ComputeLinearPolarization(
+    double alphaX, double alphaY, const double wo[3], int psiPanels, int xPanels) {
+    PolarizationWeights p{};
+    // The surface's s axis z x wo; a facet's wm x wo, turned by theta about wo to it
+    double sx = -wo[1], sy = wo[0];
+    double sLen = std::sqrt(sx * sx + sy * sy);
+    if (sLen == 0) {
+        sx = 1;  // normal incidence: PlaneAxis's fixed axis (x); the result is 0 here anyway
+        sy = 0;
+    } else {
+        sx /= sLen;
+        sy /= sLen;
+    }
+    AnisotropicQuadrature(
+        alphaX, alphaY, wo, psiPanels, xPanels, [&](double mu, double weight, const double* m) {
+            double fx = m[1] * wo[2] - m[2] * wo[1], fy = m[2] * wo[0] - m[0] * wo[2],
+                   fz = m[0] * wo[1] - m[1] * wo[0];
+            double len = std::sqrt(fx * fx + fy * fy + fz * fz);
+            if (len == 0) {
+                AddAt(p.cos2, mu, weight);  // wm = wo: no polarisation (dF = 0) anyway
+                return;
+            }
+            // cos and sin of theta: f . s and (f x s) . wo, f the facet axis
+            double c = (fx * sx + fy * sy) / len;
+            double cx = fy * 0 - fz * sy, cy = fz * sx - fx * 0, cz = fx * sy - fy * sx;
+            double sn = (cx * wo[0] + cy * wo[1] + cz * wo[2]) / len;
+            // S1' = cos(2 theta) dF, S2' = -sin(2 theta) dF
+            AddAt(p.cos2, mu, weight * (c * c - sn * sn));
+            AddAt(p.sin2, mu, -weight * 2 * sn * c);
+        });
+    return p;
 }
 
 }  // namespace kiln

@@ -29,6 +29,14 @@ class ConductorAlbedoMoments {
     using Weights = std::array<double, kNodes>;
     // W_j for isotropic roughness alpha (> 0) seen from cos(theta_o) in (0, 1].
     static Weights Compute(double alpha, double cosThetaO);
+    // Weights for the linear polarisation of the reflected light instead (polarised Kirchhoff
+    // emission, materials/emissivity.h): under uniform unpolarised illumination a microfacet
+    // reflects Stokes (F, dF, 0, 0) with dF = (Rs - Rp) / 2 in its own plane of incidence, whose
+    // s axis is turned by chi about wo from the surface's; S1 with the surface's axis is
+    // dF cos(2 chi), and S2 integrates to zero for isotropic roughness. So
+    //   a1(wo) = sum_j W'_j dF(mu_j),
+    // W'_j the weights above with the factor cos(2 chi) in the integrand.
+    static Weights ComputeLinearPolarization(double alpha, double cosThetaO);
     // W_j for anisotropic roughness (alphaX, alphaY > 0) seen from the unit direction wo (local
     // frame, wo.z > 0). Normals are parameterised by psi, with tan(phi_m) = (alphaY / alphaX)
     // tan(psi) (uniform in psi for the distribution's azimuthal marginal, so its narrow peaks
@@ -42,6 +50,14 @@ class ConductorAlbedoMoments {
     // points cluster at the ends.
     static Weights Compute(double alphaX, double alphaY, const double wo[3], int psiPanels = 3,
                            int xPanels = 4);
+    // Anisotropic roughness: the weights of S1 (factor cos(2 chi)) and S2 (factor -sin(2 chi))
+    // of the reflected light about the plane of the normal and wo, where S2 does not vanish.
+    struct PolarizationWeights {
+        Weights cos2, sin2;
+    };
+    static PolarizationWeights ComputeLinearPolarization(double alphaX, double alphaY,
+                                                         const double wo[3], int psiPanels = 3,
+                                                         int xPanels = 4);
     // Sum over the nodes of W_j F(mu_j), F given as a function of mu.
     template <typename F>
     static double Apply(const Weights& w, F&& fresnel) {
