@@ -193,6 +193,19 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
             remap()};
         return make(arena.New<CoatedConductorMaterial>(std::move(p)));
     }
+    if (type == "polarizer" || type == "retarder") {
+        Float angle = params.GetOneFloat("angle", 0);
+        Float retardance = type == "retarder" ? params.GetOneFloat("retardance", 90) : 0;
+        if (!std::isfinite(angle) || !std::isfinite(retardance))
+            throw SceneError(params.Has("angle") && !std::isfinite(angle)
+                                 ? params.Loc("angle")
+                                 : params.Loc("retardance"),
+                             "\"" + type + "\" angles must be finite (degrees)", type);
+        return make(arena.New<PolarizingFilterMaterial>(
+            type == "polarizer" ? PolarizingFilterBxDF::Kind::LinearPolarizer
+                                : PolarizingFilterBxDF::Kind::Retarder,
+            Radians(angle), Radians(retardance)));
+    }
     if (type == "measured" || type == "hair" || type == "subsurface" ||
         type == "diffusetransmission") {
         diag.Warn(loc, "\"" + type + "\" material is not supported; using diffuse 0.5");

@@ -22,6 +22,7 @@ class CoatedDiffuseMaterial;
 class CoatedConductorMaterial;
 class MixMaterial;
 class InterfaceMaterial;
+class PolarizingFilterMaterial;
 class TextureParameterDictionary;
 struct ThermalProperties;
 
@@ -31,7 +32,8 @@ class Material {
     using Kind =
         std::variant<const DiffuseMaterial*, const ConductorMaterial*, const DielectricMaterial*,
                      const ThinDielectricMaterial*, const CoatedDiffuseMaterial*,
-                     const CoatedConductorMaterial*, const MixMaterial*, const InterfaceMaterial*>;
+                     const CoatedConductorMaterial*, const MixMaterial*, const InterfaceMaterial*,
+                     const PolarizingFilterMaterial*>;
 
     template <typename T>
     requires std::is_constructible_v<Kind, const T*> Material(const T* m) : v(m) {}
@@ -70,7 +72,9 @@ class Material {
     // Creates a material of pbrt-v4 type `type` ("diffuse", "conductor", "dielectric",
     // with kiln's "temperature" and "emission" (thermal_properties.h) read into it
     // "thindielectric", "coateddiffuse", "coatedconductor", "mix", "interface"; "" and "none"
-    // give interface).
+    // give interface), and kiln's polarising filters "polarizer" ("float angle", degrees) and
+    // "retarder" ("float angle", "float retardance" in degrees, default 90: a quarter-wave
+    // plate), see bxdfs/polarizing_filter_bxdf.h.
     // Other pbrt-v4 types are replaced by diffuse with a warning at loc; unknown types throw
     // SceneError. namedMaterials resolves the components of "mix".
     static Material Create(const std::string& type, const TextureParameterDictionary& params,

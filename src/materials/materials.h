@@ -204,6 +204,21 @@ class MixMaterial : public MaterialBase {
 // No scattering: marks the boundary of a participating medium.
 class InterfaceMaterial : public MaterialBase {};
 
+// PolarizingFilterMaterial Definition
+// kiln's "polarizer" and "retarder" sheets (bxdfs/polarizing_filter_bxdf.h); angle and
+// retardance in radians. A scene with one renders polarised light (render/radiance.h).
+class PolarizingFilterMaterial : public MaterialBase {
+  public:
+    PolarizingFilterMaterial(PolarizingFilterBxDF::Kind kind, Float angle, Float retardance)
+        : bxdf(kind, angle, retardance) {}
+    PolarizingFilterBxDF GetBxDF(const MaterialEvalContext&, const SampledWavelengths&) const {
+        return bxdf;
+    }
+
+  private:
+    PolarizingFilterBxDF bxdf;
+};
+
 // ForEachTexture
 template <typename F>
 void ForEachTexture(const Material& material, F&& f) {

@@ -94,8 +94,9 @@ struct SceneFeatures {
     LightSelection lightSelection = LightSelection::BVH;
     bool areaLights = false, environmentLight = false;
     bool dispersion = false;  // wavelength-dependent IOR (terminates secondaries)
-    // Polarised transport (radiance.h): when the film records Stokes layers or the camera
-    // carries a polariser; otherwise the unpolarised variant runs
+    // Polarised transport (radiance.h): when the film records Stokes layers, the camera
+    // carries a polariser or a material is a polarising filter; otherwise the unpolarised
+    // variant runs
     bool polarized = false;
     std::string ToString() const;
 };

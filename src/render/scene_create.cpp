@@ -1,6 +1,7 @@
 // Scene creation in named steps (pbrt-v4's scene.cpp: CreateMaterials, CreateLights,
 // CreateAggregate): camera and film, textures, materials, shapes with their heat, lights (with
 // a shape-to-lights map, lights identified by index), aggregate, light sampler, features.
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -402,6 +403,16 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
     return f;
 }
 
+// Polarised transport (render/radiance.h) when the film records Stokes layers, the camera
+// carries a polariser or a material is a polarising filter.
+bool NeedsPolarization(const Scene& scene, const SceneMaterials& materials) {
+    if (scene.film->WritesStokes() || scene.cameraPolarizer) return true;
+    auto filter = [](const Material* m) { return m->Is<PolarizingFilterMaterial>(); };
+    for (const auto& [name, m] : materials.named)
+        if (filter(m)) return true;
+    return std::any_of(materials.anonymous.begin(), materials.anonymous.end(), filter);
+}
+
 }  // namespace
 
 std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverrides& overrides,
@@ -411,8 +422,7 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
     NamedTextures& textures = CreateTextures(desc, overrides, *scene, diag);
     SceneMaterials materials = CreateMaterials(desc, textures, scene->arena, diag);
     scene->emissivityTables = std::make_unique<EmissivityTables>();
-    scene->emissivityTables->polarized =
-        scene->film->WritesStokes() || scene->cameraPolarizer.has_value();
+    scene->emissivityTables->polarized = NeedsPolarization(*scene, materials);
     ThermalEmitters emitters(*scene->shader, *scene->emissivityTables, scene->arena, diag,
                              overrides.emission, scene->integrator.emitterPowerSampling);
     std::vector<SceneShapes> shapes;

@@ -21,6 +21,7 @@
 #include "materials/bxdfs/dielectric_bxdf.h"
 #include "materials/bxdfs/diffuse_bxdf.h"
 #include "materials/bxdfs/layered_bxdf.h"
+#include "materials/bxdfs/polarizing_filter_bxdf.h"
 #include "materials/bxdfs/thin_dielectric_bxdf.h"
 #include "spectral/polarization.h"
 
@@ -29,7 +30,7 @@ namespace kiln {
 class BxDF {
   public:
     using Variant = std::variant<DiffuseBxDF, ConductorBxDF, DielectricBxDF, ThinDielectricBxDF,
-                                 CoatedDiffuseBxDF, CoatedConductorBxDF>;
+                                 CoatedDiffuseBxDF, CoatedConductorBxDF, PolarizingFilterBxDF>;
 
     BxDF() = default;  // a black DiffuseBxDF
     template <typename T>
