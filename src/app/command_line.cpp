@@ -13,6 +13,7 @@
 #include "app/image_diff.h"
 #include "app/progress.h"
 #include "core/film/film.h"
+#include "core/image/polarization_view.h"
 #include "core/parser/parser.h"
 #include "render/auto_exposure.h"
 #include "render/renderer.h"
@@ -107,6 +108,9 @@ std::string UsageText() {
            "                        ACES, Glow (24 stops of log luminance) or Raw\n"
            "  --stokes              render polarised light; the EXR gains Stokes layers\n"
            "                        S0.R ... S3.B (as Film \"bool stokes\" true)\n"
+           "  --polarisation        --stokes, and pictures of the degree and angle of\n"
+           "                        polarisation beside each output: OUT-dop.png,\n"
+           "                        OUT-aolp.png (core/image/polarization_view.h)\n"
            "  --verbose             print what kiln chose for the scene (code paths, tables)\n"
            "  --generic LIST        run generic code paths instead of the chosen ones, to\n"
            "                        measure what the choices save: footprints (texture\n"
@@ -169,6 +173,8 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
                 throw std::invalid_argument("--light-sampler expects bvh, power, uniform or area");
         } else if (a == "--stokes") {
             o.stokes = true;
+        } else if (a == "--polarisation" || a == "--polarization") {
+            o.stokes = o.polarisation = true;
         } else if (a == "--generic") {
             std::string list = value();
             size_t start = 0;
@@ -340,6 +346,21 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
             status = 1;
         }
     }
+    // --polarisation: pictures of the degree and angle of polarisation beside each output
+    if (options.polarisation)
+        for (const std::string& out : outputs) {
+            std::string stem = out.substr(
+                0, out.size() - FileExtension(out).size() - (FileExtension(out).empty() ? 0 : 1));
+            try {
+                PolarizationPictures p =
+                    PolarizationViews(scene->film->GetImage(nullptr), *scene->film->ColorSpace());
+                p.degree.Write(stem + "-dop.png", metadata);
+                p.angle.Write(stem + "-aolp.png", metadata);
+            } catch (const std::exception& e) {
+                std::cerr << "kiln: error: " << e.what() << "\n";
+                status = 1;
+            }
+        }
     diag.ReportRepeats();
     if (!options.quiet) {
         double mpaths = stats.seconds > 0 ? stats.cameraPaths / stats.seconds * 1e-6 : 0;

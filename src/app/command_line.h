@@ -28,6 +28,7 @@ struct CommandLineOptions {
     bool genericFootprints = false, genericAOVs = false;
     std::optional<int> wavelengths;  // 1 | 4
     bool stokes = false;             // --stokes: polarised rendering with Stokes layers
+    bool polarisation = false;       // --polarisation: also degree/angle pictures
     bool help = false, version = false;
 };
 

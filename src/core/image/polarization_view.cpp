@@ -1,0 +1,102 @@
+#include "core/image/polarization_view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "core/image/color_encoding.h"
+#include "spectral/color.h"
+
+namespace kiln {
+
+namespace {
+
+// Stores display-encoded value v (clamped to [0, 1]) in an sRGB 8-bit image.
+void SetDisplay(Image& image, Point2i p, int c, Float v) {
+    image.SetChannel(p, c, SRGBToLinear(std::isfinite(v) ? Clamp(v, 0.f, 1.f) : 0.f));
+}
+
+// Fully saturated colour of hue h in [0, 1) at value v (HSV with S = 1).
+RGB Hue(Float h, Float v) {
+    Float x = 6 * (h - std::floor(h));
+    int sector = std::min(5, int(x));
+    Float f = x - sector;
+    switch (sector) {
+        case 0:
+            return RGB(v, v * f, 0);
+        case 1:
+            return RGB(v * (1 - f), v, 0);
+        case 2:
+            return RGB(0, v, v * f);
+        case 3:
+            return RGB(0, v * (1 - f), v);
+        case 4:
+            return RGB(v * f, 0, v);
+        default:
+            return RGB(v, 0, v * (1 - f));
+    }
+}
+
+}  // namespace
+
+PolarizationPictures PolarizationViews(const Image& stokes, const RGBColorSpace& colorSpace,
+                                       Float darkFraction) {
+    int channel[4][3];
+    const char* names[4][3] = {{"S0.R", "S0.G", "S0.B"},
+                               {"S1.R", "S1.G", "S1.B"},
+                               {"S2.R", "S2.G", "S2.B"},
+                               {"S3.R", "S3.G", "S3.B"}};
+    for (int k = 0; k < 4; ++k)
+        for (int c = 0; c < 3; ++c) {
+            channel[k][c] = stokes.ChannelIndex(names[k][c]);
+            if (channel[k][c] < 0)
+                throw std::runtime_error(
+                    "the image has no Stokes layers (render with Film \"bool stokes\" true or "
+                    "kiln --stokes)");
+        }
+    Point2i res = stokes.Resolution();
+    // Luminance Stokes vectors
+    std::vector<Float> S(size_t(res.x) * res.y * 4);
+    for (int y = 0; y < res.y; ++y)
+        for (int x = 0; x < res.x; ++x)
+            for (int k = 0; k < 4; ++k) {
+                RGB rgb(stokes.GetChannel({x, y}, channel[k][0]),
+                        stokes.GetChannel({x, y}, channel[k][1]),
+                        stokes.GetChannel({x, y}, channel[k][2]));
+                S[(size_t(y) * res.x + x) * 4 + k] = colorSpace.ToXYZ(rgb).Y;
+            }
+    std::vector<Float> intensities;
+    for (size_t i = 0; i < S.size(); i += 4)
+        if (std::isfinite(S[i])) intensities.push_back(S[i]);
+    Float bright = 0;
+    if (!intensities.empty()) {
+        size_t at = std::min(intensities.size() - 1, size_t(0.99 * intensities.size()));
+        std::nth_element(intensities.begin(), intensities.begin() + at, intensities.end());
+        bright = intensities[at];
+    }
+    const Float dark = darkFraction * bright;
+
+    PolarizationPictures out{Image(PixelFormat::U256, res, {"R", "G", "B"}, ColorEncoding::SRGB()),
+                             Image(PixelFormat::U256, res, {"R", "G", "B"}, ColorEncoding::SRGB())};
+    for (int y = 0; y < res.y; ++y)
+        for (int x = 0; x < res.x; ++x) {
+            const Float* s = &S[(size_t(y) * res.x + x) * 4];
+            RGB degree(0, 0, 0), angle(0, 0, 0);
+            if (s[0] > dark && s[0] > 0) {
+                Float linear = std::sqrt(s[1] * s[1] + s[2] * s[2]) / s[0];
+                Float circular = std::abs(s[3]) / s[0];
+                degree = RGB(linear, s[3] > 0 ? circular : 0, s[3] < 0 ? circular : 0);
+                Float aolp = 0.5f * std::atan2(s[2], s[1]);  // (-pi/2, pi/2]
+                if (aolp < 0) aolp += Pi;
+                angle = Hue(aolp / Pi, std::min<Float>(1, linear));
+            }
+            for (int c = 0; c < 3; ++c) {
+                SetDisplay(out.degree, {x, y}, c, degree[c]);
+                SetDisplay(out.angle, {x, y}, c, angle[c]);
+            }
+        }
+    return out;
+}
+
+}  // namespace kiln
