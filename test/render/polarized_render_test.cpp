@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <complex>
+#include <functional>
 #include <sstream>
 
 #include "core/base/statistics.h"
@@ -86,19 +87,25 @@ TEST(PolarizedRender, CameraPolarizerFollowsMalusLaw) {
     EXPECT_NEAR(MeanY(*testing::RenderText(Sheets({}, 33)).scene) / open, 0.5f, 1e-3f);
 }
 
-TEST(PolarizedRender, ThermalEmissionIsPolarisedAsFresnelSaysAndOrthogonalToReflection) {
-    // A hot polished gold disk (normal +z) seen at angles theta from its normal
-    const char* scene =
+namespace {
+
+// A hot polished disk (normal +z) of the given material seen at angles theta from its normal:
+// its emission against B (1 - (Rs + Rp) / 2, -(Rs - Rp) / 2) about the plane of n and w, and
+// against the polarisation of its reflection.
+void CheckEmissionPolarisation(const std::string& material,
+                               const std::function<std::complex<Float>(Float)>& eta) {
+    std::string scene =
         "Film \"rgb\" \"integer xresolution\" 4 \"integer yresolution\" 4 \"bool stokes\" true\n"
         "LookAt 0 0 5  0 0 0  0 1 0\nCamera \"perspective\"\nWorldBegin\n"
-        "Material \"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\" "
-        "\"float roughness\" 0 \"float temperature\" 1200\n"
+        "Material " +
+        material +
+        " \"float roughness\" 0 \"float temperature\" 1200\n"
         "Shape \"disk\" \"float radius\" 10\n";
     Diagnostics diag(nullptr);
     std::unique_ptr<Scene> s = testing::BuildScene(scene, diag);
     ASSERT_TRUE(s->features.polarized);
     const Normal3f n(0, 0, 1);
-    for (Float degrees : {0.f, 20.f, 45.f, 70.f, 85.f})
+    for (Float degrees : {0.f, 20.f, 45.f, 56.3f, 70.f, 85.f})
         for (Float l : {450.f, 550.f, 650.f}) {
             Float theta = Radians(degrees);
             Vector3f w(std::sin(theta) * 0.6f, std::sin(theta) * 0.8f, std::cos(theta));
@@ -110,13 +117,9 @@ TEST(PolarizedRender, ThermalEmissionIsPolarisedAsFresnelSaysAndOrthogonalToRefl
             SampledWavelengths lambda = SampledWavelengths::FromWavelength(l), lb = lambda;
             BSDF bsdf = s->GetBSDF(hit->intr, lb);
             Stokes Le = s->SurfaceLe<Stokes>(hit->intr, bsdf, w, lambda);
-            // Closed form: B (1 - (Rs + Rp) / 2, -(Rs - Rp) / 2) about the plane of n and w
-            std::complex<Float> eta((*GetNamedSpectrum("metal-Au-eta"))(l),
-                                    (*GetNamedSpectrum("metal-Au-k"))(l));
-            FresnelRsRp R = FrComplexPolarized(std::cos(theta), eta);
+            FresnelRsRp R = FrComplexPolarized(std::cos(theta), eta(l));
             Float B = planck_radiance(l, 1200);
-            Vector3f s1Axis = PlaneAxis(Vector3f(n), w);
-            Stokes local = RotateStokesBasis(Le, w, StokesBasis(w), s1Axis);
+            Stokes local = RotateStokesBasis(Le, w, StokesBasis(w), PlaneAxis(Vector3f(n), w));
             EXPECT_NEAR(local[0][0], B * (1 - (R.Rs + R.Rp) / 2), 1e-4f * B);
             EXPECT_NEAR(local[1][0], -B * (R.Rs - R.Rp) / 2, 1e-4f * B);
             EXPECT_NEAR(local[2][0], 0, 1e-5f * B);
@@ -127,12 +130,27 @@ TEST(PolarizedRender, ThermalEmissionIsPolarisedAsFresnelSaysAndOrthogonalToRefl
             // Reflection of unpolarised light towards w is polarised at 90 degrees to it
             Stokes reflected =
                 bsdf.Sample_f<MuellerMatrix>(w, 0, {0, 0})->f * Stokes(SampledSpectrum(1.f));
-            Float emitted = AngleOfLinearPolarization(Le)[0];
-            Float refl = AngleOfLinearPolarization(reflected)[0];
-            Float difference = std::remainder(emitted - refl, Pi);
+            Float difference = std::remainder(
+                AngleOfLinearPolarization(Le)[0] - AngleOfLinearPolarization(reflected)[0], Pi);
             EXPECT_NEAR(std::abs(difference), Pi / 2, 1e-3f) << degrees << " " << l;
             EXPECT_GT(DegreeOfPolarization(reflected)[0], 0.005f);
         }
+}
+
+}  // namespace
+
+TEST(PolarizedRender, ThermalEmissionIsPolarisedAsFresnelSaysAndOrthogonalToReflection) {
+    CheckEmissionPolarisation(
+        "\"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\"",
+        [](Float l) {
+            return std::complex<Float>((*GetNamedSpectrum("metal-Au-eta"))(l),
+                                       (*GetNamedSpectrum("metal-Au-k"))(l));
+        });
+    // An opaque dielectric (black glass: Fresnel reflection of n = 1.5, the rest absorbed):
+    // totally polarised reflection at Brewster's angle (56.3 degrees), weakly polarised glow
+    CheckEmissionPolarisation(
+        "\"conductor\" \"spectrum eta\" [360 1.5 830 1.5] \"spectrum k\" [360 0 830 0]",
+        [](Float) { return std::complex<Float>(1.5f, 0); });
 }
 
 TEST(PolarizedRender, GlowingGoldDiscPassesMoreThroughTheVerticalFilter) {
