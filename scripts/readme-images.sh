@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Renders the small images shown in README.md ("Glowing objects") into docs/images/.
-# Usage: scripts/readme-images.sh [spp] [all|thermal]   (default 64 all)
+# Usage: scripts/readme-images.sh [spp] [all|thermal|polarization]   (default 64 all)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 kiln="${KILN_BUILD_DIR:-$root/build}/kiln"
@@ -14,7 +14,8 @@ render() {  # scene output.png [extra kiln args]
     shift 2
     "$kiln" "$scene" --spp "$spp" --quiet -o "$png" "$@"
 }
-if [ "${2:-all}" = all ]; then
+mode="${2:-all}"
+if [ "$mode" = all ]; then
 for material in silver gold; do
     for model in additive kirchhoff; do
         render "$root/scenes/wilkie2011/$material-$model-ambient.pbrt" "$tmp/$material-$model.png"
@@ -26,6 +27,33 @@ done
 render "$root/scenes/coins/coins.pbrt" "$tmp/coins.png"
 oiiotool "$tmp/coins.png" --resize 66.67% -o "$out/coins.png"
 fi
+# Polarisation (scenes/polarization/, Wilkie & Weidlich 2011 Figs. 8-10)
+if [ "$mode" = all ] || [ "$mode" = polarization ]; then
+pol="$root/scenes/polarization"
+for o in horizontal vertical; do
+    render "$pol/fig8-gold-disc-$o.pbrt" "$tmp/fig8-$o.png"
+done
+oiiotool "$tmp/fig8-horizontal.png" "$tmp/fig8-vertical.png" --mosaic 2x1 --resize 50% \
+    -o "$out/fig8-gold-disc.png"
+for m in black-quartz silver; do
+    for a in "" -ambient; do
+        render "$pol/fig9-$m$a.pbrt" "$tmp/fig9-$m$a.exr" --polarisation
+    done
+done
+oiiotool "$tmp/fig9-black-quartz-ambient-dop.png" "$tmp/fig9-silver-ambient-dop.png" \
+    "$tmp/fig9-black-quartz-dop.png" "$tmp/fig9-silver-dop.png" --mosaic 2x2 --resize 50% \
+    -o "$out/fig9-degree-of-polarisation.png"
+oiiotool "$tmp/fig9-black-quartz-aolp.png" "$tmp/fig9-silver-aolp.png" --mosaic 2x1 \
+    --resize 50% -o "$out/fig9-angle-of-polarisation.png"
+render "$pol/fig10-black-glass.pbrt" "$tmp/fig10-without.exr" -o "$tmp/fig10-without.png"
+render "$pol/fig10-black-glass.pbrt" "$tmp/fig10-with.exr" -o "$tmp/fig10-with.png" --stokes
+# The difference of the linear images, 8 times brighter
+oiiotool "$tmp/fig10-without.exr" "$tmp/fig10-with.exr" --ch R,G,B --sub --abs --mulc 8 \
+    --colorconvert linear sRGB -o "$tmp/fig10-diff.png"
+oiiotool "$tmp/fig10-without.png" "$tmp/fig10-with.png" "$tmp/fig10-diff.png" --mosaic 3x1 \
+    --resize 50% -o "$out/fig10-black-glass.png"
+fi
+[ "$mode" = polarization ] && exit 0
 # Temperature fields (scenes/thermal/): gradient, per-vertex lava, heat map, cooling blade
 for scene in heated-bar lava heat-map; do
     render "$root/scenes/thermal/$scene.pbrt" "$tmp/$scene.png"
