@@ -1,6 +1,6 @@
 // libFuzzer target: whole scenes from arbitrary text, created (materials, textures, lights,
 // emissivity tables, aggregate) and rendered at one sample per pixel over a few pixels. Every
-// input must end in a SceneError or in an image with only finite pixels.
+// input must end in a SceneError or in an image with only finite pixels (Stokes layers too).
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -27,9 +27,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         kiln::Bounds2i b = scene->film->PixelBounds();
         for (int y = b.pMin.y; y < b.pMax.y; ++y)
             for (int x = b.pMin.x; x < b.pMax.x; ++x) {
-                kiln::RGB rgb = scene->film->GetPixelRGB({x, y});
-                if (!std::isfinite(rgb.r) || !std::isfinite(rgb.g) || !std::isfinite(rgb.b))
-                    __builtin_trap();  // a non-finite pixel is a bug to find, not to clamp
+                for (int k = 0; k < 4; ++k) {  // RGB (k = 0) and Stokes layers, if any
+                    kiln::RGB rgb = scene->film->GetPixelStokes({x, y}, k);
+                    if (!std::isfinite(rgb.r) || !std::isfinite(rgb.g) || !std::isfinite(rgb.b))
+                        __builtin_trap();  // a non-finite pixel is a bug to find, not to clamp
+                }
             }
     } catch (const kiln::SceneError&) {
     }
