@@ -43,7 +43,7 @@ done
 oiiotool "$tmp/fig9-black-quartz-ambient-dop.png" "$tmp/fig9-silver-ambient-dop.png" \
     "$tmp/fig9-black-quartz-dop.png" "$tmp/fig9-silver-dop.png" --mosaic 2x2 --resize 50% \
     -o "$out/fig9-degree-of-polarisation.png"
-oiiotool "$tmp/fig9-black-quartz-aolp.png" "$tmp/fig9-silver-aolp.png" --mosaic 2x1 \
+oiiotool "$tmp/fig9-black-quartz-aop.png" "$tmp/fig9-silver-aop.png" --mosaic 2x1 \
     --resize 50% -o "$out/fig9-angle-of-polarisation.png"
 render "$pol/fig10-black-glass.pbrt" "$tmp/fig10-without.exr" -o "$tmp/fig10-without.png"
 render "$pol/fig10-black-glass.pbrt" "$tmp/fig10-with.exr" -o "$tmp/fig10-with.png" --stokes

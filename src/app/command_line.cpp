@@ -108,9 +108,10 @@ std::string UsageText() {
            "                        ACES, Glow (24 stops of log luminance) or Raw\n"
            "  --stokes              render polarised light; the EXR gains Stokes layers\n"
            "                        S0.R ... S3.B (as Film \"bool stokes\" true)\n"
-           "  --polarisation        --stokes, and pictures of the degree and angle of\n"
-           "                        polarisation beside each output: OUT-dop.png,\n"
-           "                        OUT-aolp.png (core/image/polarization_view.h)\n"
+           "  --polarisation        --stokes, and pictures of the polarisation beside each\n"
+           "                        output: OUT-dolp.png, OUT-aolp.png (degree and angle of\n"
+           "                        linear polarisation) and Wilkie & Weidlich 2010's\n"
+           "                        OUT-dop.png, -aop.png, -type.png, -chirality.png\n"
            "  --verbose             print what kiln chose for the scene (code paths, tables)\n"
            "  --generic LIST        run generic code paths instead of the chosen ones, to\n"
            "                        measure what the choices save: footprints (texture\n"
@@ -352,10 +353,9 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
             std::string stem = out.substr(
                 0, out.size() - FileExtension(out).size() - (FileExtension(out).empty() ? 0 : 1));
             try {
-                PolarizationPictures p =
-                    PolarizationViews(scene->film->GetImage(nullptr), *scene->film->ColorSpace());
-                p.degree.Write(stem + "-dop.png", metadata);
-                p.angle.Write(stem + "-aolp.png", metadata);
+                for (const auto& [name, picture] :
+                     PolarizationViews(scene->film->GetImage(nullptr), *scene->film->ColorSpace()))
+                    picture.Write(stem + "-" + name + ".png", metadata);
             } catch (const std::exception& e) {
                 std::cerr << "kiln: error: " << e.what() << "\n";
                 status = 1;

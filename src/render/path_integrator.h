@@ -153,6 +153,8 @@ class PathIntegrator {
         if (!ls || ls->pdf == 0 || (!ls->deferredL && !ls->L)) return {};
 
         Vector3f wo = intr.wo, wi = ls->wi;
+        Float cosTheta = AbsDot(wi, intr.shading.n);
+        if (cosTheta == 0) return {};
         Throughput f = bsdf.f<Throughput>(wo, wi);
         if (!f) return {};
         if (scene.aggregate->IntersectP(intr.SpawnRayTo(ls->pLight), 1 - ShadowEpsilon)) return {};
@@ -160,7 +162,6 @@ class PathIntegrator {
         if (!Li) return {};
 
         Float lightPdf = sampled->p * ls->pdf;
-        Float cosTheta = AbsDot(wi, intr.shading.n);
         if (IsDeltaLight(light.Type())) return Radiance::Apply(f, Li) * (cosTheta / lightPdf);
         Float bsdfPdf = bsdf.PDF(wo, wi);
         Float w = settings.strategy == LightStrategy::MIS ? PowerHeuristic(1, lightPdf, 1, bsdfPdf)

@@ -3,9 +3,10 @@
 // seeds against one unpolarised render of K x more samples per pixel, compared per pixel by
 // noise_comparison.h, over the central part of the image. (Polarisation changes S0 only through
 // reflections of polarised light, which these scenes have little of: smooth metals that
-// reflect each other's polarised glow.) Scenes that ask for polarisation themselves (Stokes
-// output, a polariser: scenes/polarization/) have no unpolarised render to compare with and are
-// skipped here; test/render/polarized_render_test.cpp covers them.
+// reflect each other's polarised glow.) Scenes with Stokes output are compared with their
+// unpolarised render without it; scenes with a polariser (scenes/polarization/fig8-*) have no
+// unpolarised counterpart and are skipped here (test/render/polarized_render_test.cpp covers
+// them).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,13 +27,22 @@ constexpr int kSeeds = 8, kSpp = 4, kReferenceSpp = 128;
 // A window of 10 % x 10 % of the scene, with the "independent" sampler (renders with different
 // seeds must be independent for the across-seed variance to measure the error, as in
 // regression_test.cpp).
-// The render, or nothing if the scene selects polarised transport by itself and stokes is false.
+// The render (without Stokes output unless stokes), or nothing if the scene selects polarised
+// transport by itself (a polariser) and stokes is false.
 std::optional<Image> RenderWindow(const std::string& file, const Bounds2f& window, bool stokes,
                                   int spp, int seed) {
     Diagnostics diag(nullptr);
     SceneBuilder builder(diag);
     ParseFile(builder, file, diag);
     builder.Description().sampler.name = "independent";
+    if (!stokes) {
+        // The unpolarised render of a scene that asks for Stokes output
+        ParsedParameter off;
+        off.type = "bool";
+        off.name = "stokes";
+        off.bools = {false};
+        builder.Description().film.parameters.Set(off);
+    }
     SceneOverrides o;
     o.samplesPerPixel = spp;
     o.seed = seed;

@@ -153,6 +153,35 @@ TEST(PolarizedRender, ThermalEmissionIsPolarisedAsFresnelSaysAndOrthogonalToRefl
         [](Float) { return std::complex<Float>(1.5f, 0); });
 }
 
+TEST(PolarizedRender, AdditiveAndDiffuseEmissionAreUnpolarised) {
+    for (const char* model : {"additive", "diffuse", "kirchhoff"}) {
+        std::string scene = std::string(
+                                "Film \"rgb\" \"integer xresolution\" 4 \"integer yresolution\" 4 "
+                                "\"bool stokes\" true\n"
+                                "LookAt 0 0 5  0 0 0  0 1 0\nCamera \"perspective\"\nWorldBegin\n"
+                                "Material \"conductor\" \"spectrum eta\" \"metal-Au-eta\" "
+                                "\"spectrum k\" \"metal-Au-k\" \"float temperature\" 1200 "
+                                "\"string emission\" \"") +
+                            model + "\"\nShape \"disk\" \"float radius\" 10\n";
+        Diagnostics diag(nullptr);
+        std::unique_ptr<Scene> s = testing::BuildScene(scene, diag);
+        Vector3f w = Normalize(Vector3f(0.5f, 0.3f, 0.4f));
+        Point3f from =
+            s->camera->GetCameraTransform().RenderFromWorld()(Point3f(0, 0, 0) + 3.f * w);
+        std::optional<ShapeIntersection> hit = s->aggregate->Intersect(Ray(from, -w), 10);
+        ASSERT_TRUE(hit);
+        SampledWavelengths lambda = SampledWavelengths::FromWavelength(600), lb = lambda;
+        BSDF bsdf = s->GetBSDF(hit->intr, lb);
+        Stokes Le = s->SurfaceLe<Stokes>(hit->intr, bsdf, w, lambda);
+        EXPECT_GT(Le[0][0], 0) << model;
+        Float dop = DegreeOfPolarization(Le)[0];
+        if (std::string(model) == "kirchhoff")
+            EXPECT_GT(dop, 0.05f);  // what the others would show if they were polarised
+        else
+            EXPECT_EQ(dop, 0) << model;
+    }
+}
+
 TEST(PolarizedRender, GlowingGoldDiscPassesMoreThroughTheVerticalFilter) {
     // Wilkie & Weidlich 2011, Fig. 8: a polished gold disc at 1200 K tilted about the image's
     // horizontal axis, so that the planes of emission towards the camera are vertical and the

@@ -40,8 +40,9 @@ RGB Hue(Float h, Float v) {
 
 }  // namespace
 
-PolarizationPictures PolarizationViews(const Image& stokes, const RGBColorSpace& colorSpace,
-                                       Float darkFraction) {
+std::vector<std::pair<std::string, Image>> PolarizationViews(const Image& stokes,
+                                                             const RGBColorSpace& colorSpace,
+                                                             Float darkFraction) {
     int channel[4][3];
     const char* names[4][3] = {{"S0.R", "S0.G", "S0.B"},
                                {"S1.R", "S1.G", "S1.B"},
@@ -77,24 +78,37 @@ PolarizationPictures PolarizationViews(const Image& stokes, const RGBColorSpace&
     }
     const Float dark = darkFraction * bright;
 
-    PolarizationPictures out{Image(PixelFormat::U256, res, {"R", "G", "B"}, ColorEncoding::SRGB()),
-                             Image(PixelFormat::U256, res, {"R", "G", "B"}, ColorEncoding::SRGB())};
+    std::vector<std::pair<std::string, Image>> out;
+    for (const char* name : {"dolp", "aolp", "dop", "aop", "type", "chirality"})
+        out.emplace_back(name,
+                         Image(PixelFormat::U256, res, {"R", "G", "B"}, ColorEncoding::SRGB()));
+    const RGB cyan(22 / 255.f, 247 / 255.f, 247 / 255.f),
+        yellow(252 / 255.f, 251 / 255.f, 10 / 255.f);
     for (int y = 0; y < res.y; ++y)
         for (int x = 0; x < res.x; ++x) {
-            const Float* s = &S[(size_t(y) * res.x + x) * 4];
-            RGB degree(0, 0, 0), angle(0, 0, 0);
-            if (s[0] > dark && s[0] > 0) {
-                Float linear = std::sqrt(s[1] * s[1] + s[2] * s[2]) / s[0];
-                Float circular = std::abs(s[3]) / s[0];
-                degree = RGB(linear, s[3] > 0 ? circular : 0, s[3] < 0 ? circular : 0);
-                Float aolp = 0.5f * std::atan2(s[2], s[1]);  // (-pi/2, pi/2]
+            const Float* v = &S[(size_t(y) * res.x + x) * 4];
+            RGB colour[6] = {};
+            if (v[0] > dark && v[0] > 0) {
+                Float s1 = v[1] / v[0], s2 = v[2] / v[0], s3 = v[3] / v[0];
+                Float dolp = std::min<Float>(1, std::sqrt(s1 * s1 + s2 * s2));
+                Float docp = std::min<Float>(1, std::abs(s3));
+                Float dop = std::min<Float>(1, std::sqrt(s1 * s1 + s2 * s2 + s3 * s3));
+                Float aolp = 0.5f * std::atan2(s2, s1);  // (-pi/2, pi/2]
                 if (aolp < 0) aolp += Pi;
-                angle = Hue(aolp / Pi, std::min<Float>(1, linear));
+                colour[0] = RGB(dolp, dolp, dolp);
+                colour[1] = Hue(aolp / Pi, dolp);
+                colour[2] = RGB(dop, 0, 0);
+                colour[3] =
+                    RGB(std::max<Float>(-s1, 0) + std::max<Float>(s2, 0),
+                        std::max<Float>(s1, 0) + std::max<Float>(s2, 0), std::max<Float>(-s2, 0));
+                colour[4] = cyan * dolp + yellow * docp;
+                colour[5] =
+                    RGB(std::max<Float>(s3, 0), std::max<Float>(s3, 0), std::max<Float>(-s3, 0)) *
+                    docp;
             }
-            for (int c = 0; c < 3; ++c) {
-                SetDisplay(out.degree, {x, y}, c, degree[c]);
-                SetDisplay(out.angle, {x, y}, c, angle[c]);
-            }
+            for (int i = 0; i < 6; ++i)
+                for (int c = 0; c < 3; ++c)
+                    SetDisplay(out[size_t(i)].second, {x, y}, c, colour[i][c]);
         }
     return out;
 }
