@@ -15,12 +15,15 @@ fig10-black-glass.pbrt: glowing gold spheres standing on a black glass plane (Fr
   reflection of glass, n = 1.5, nothing transmitted), rendered with and without polarised
   transport (kiln --stokes) at one fixed exposure: the reflections differ (Fig. 10).
 """
-import math
+import importlib.util
 import os
 
-TEMPERATURES = [1050 + 50 * i for i in range(12)]
-CLOCK = [11 - i if 11 - i > 0 else 12 for i in range(12)]
-RING_RADIUS, SPHERE_RADIUS = 4.2, 0.9
+# The ring of spheres of the paper's test scene, as scenes/wilkie2011/generate.py places it
+_spec = importlib.util.spec_from_file_location(
+    "wilkie2011", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "wilkie2011",
+                               "generate.py"))
+wilkie2011 = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(wilkie2011)
 
 SILVER = '"conductor" "spectrum eta" "metal-Ag-eta" "spectrum k" "metal-Ag-k"'
 GOLD = '"conductor" "spectrum eta" "metal-Au-eta" "spectrum k" "metal-Au-k"'
@@ -28,19 +31,13 @@ BLACK_QUARTZ = '"conductor" "spectrum eta" "glass-SiO2" "spectrum k" [360 0 830 
 BLACK_GLASS = '"conductor" "spectrum eta" [360 1.5 830 1.5] "spectrum k" [360 0 830 0]'
 
 
-def sphere_position(clock):
-    # As scenes/wilkie2011/generate.py: clockwise in the image runs towards -x.
-    angle = math.radians(30 * (clock % 12))
-    return -RING_RADIUS * math.sin(angle), SPHERE_RADIUS, -RING_RADIUS * math.cos(angle)
-
-
 def ring(material):
     out = [f"Material {material}\n"]
-    for t, clock in zip(TEMPERATURES, CLOCK):
-        x, y, z = sphere_position(clock)
+    for t, clock in zip(wilkie2011.TEMPERATURES, wilkie2011.CLOCK):
+        x, y, z = wilkie2011.sphere_position(clock)
         out.append(f"""AttributeBegin  # {t} K at {clock} o'clock
   Translate {x:.4f} {y:.4f} {z:.4f}
-  Shape "sphere" "float radius" {SPHERE_RADIUS} "float temperature" {t}
+  Shape "sphere" "float radius" {wilkie2011.SPHERE_RADIUS} "float temperature" {t}
 AttributeEnd
 """)
     return "".join(out)

@@ -30,32 +30,29 @@ EmissivityTables::EmissivityTables() {
 
 EmissivityTables::~EmissivityTables() = default;
 
-const std::vector<float>& EmissivityTables::ConductorMoments() {
-    if (!conductorMoments.empty()) return conductorMoments;
+void EmissivityTables::FillConductorGrid(std::vector<float>& table,
+                                         ConductorAlbedoMoments::Weights (*compute)(double,
+                                                                                    double)) const {
     const int nCos = cosines.Size(), nAlpha = logAlphas.Size(), H = ConductorAlbedoMoments::kNodes;
-    conductorMoments.resize(size_t(nCos) * nAlpha * H);
+    table.resize(size_t(nCos) * nAlpha * H);
     tbb::parallel_for(0, nCos * nAlpha, [&](int cell) {
         int ci = cell / nAlpha, ai = cell % nAlpha;
         double mu = std::max(1e-4, double(cosines.Node(ci)));
-        ConductorAlbedoMoments::Weights w =
-            ConductorAlbedoMoments::Compute(std::exp(double(logAlphas.Node(ai))), mu);
-        for (int j = 0; j < H; ++j) conductorMoments[size_t(cell) * H + j] = float(w[size_t(j)]);
+        ConductorAlbedoMoments::Weights w = compute(std::exp(double(logAlphas.Node(ai))), mu);
+        for (int j = 0; j < H; ++j) table[size_t(cell) * H + j] = float(w[size_t(j)]);
     });
+}
+
+const std::vector<float>& EmissivityTables::ConductorMoments() {
+    if (conductorMoments.empty())
+        FillConductorGrid(conductorMoments, &ConductorAlbedoMoments::Compute);
     return conductorMoments;
 }
 
 const std::vector<float>& EmissivityTables::ConductorPolarizationMoments() {
-    if (!conductorPolarizationMoments.empty()) return conductorPolarizationMoments;
-    const int nCos = cosines.Size(), nAlpha = logAlphas.Size(), H = ConductorAlbedoMoments::kNodes;
-    conductorPolarizationMoments.resize(size_t(nCos) * nAlpha * H);
-    tbb::parallel_for(0, nCos * nAlpha, [&](int cell) {
-        int ci = cell / nAlpha, ai = cell % nAlpha;
-        double mu = std::max(1e-4, double(cosines.Node(ci)));
-        ConductorAlbedoMoments::Weights w = ConductorAlbedoMoments::ComputeLinearPolarization(
-            std::exp(double(logAlphas.Node(ai))), mu);
-        for (int j = 0; j < H; ++j)
-            conductorPolarizationMoments[size_t(cell) * H + j] = float(w[size_t(j)]);
-    });
+    if (conductorPolarizationMoments.empty())
+        FillConductorGrid(conductorPolarizationMoments,
+                          &ConductorAlbedoMoments::ComputeLinearPolarization);
     return conductorPolarizationMoments;
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/base/table_axis.h"
+#include "materials/bxdfs/conductor_albedo.h"
 
 namespace kiln {
 
@@ -44,6 +45,10 @@ class EmissivityTables {
     static float CosineNode(int i, int n);
 
   private:
+    // Fills table with compute(alpha, cos theta) on the cosine x log-alpha grid.
+    void FillConductorGrid(std::vector<float>& table,
+                           ConductorAlbedoMoments::Weights (*compute)(double, double)) const;
+
     TableAxis cosines, wavelengths, fineWavelengths, logAlphas;
     std::vector<float> conductorMoments, conductorPolarizationMoments;
 };

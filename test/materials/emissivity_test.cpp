@@ -9,9 +9,9 @@
 #include <cmath>
 #include <complex>
 
-#include "../textures/param_helpers.h"
 #include "core/base/rng.h"
 #include "core/base/statistics.h"
+#include "material_test_util.h"
 #include "materials/bxdfs/conductor_albedo.h"
 #include "materials/bxdfs/fresnel.h"
 #include "materials/materials.h"
@@ -23,21 +23,10 @@ namespace {
 
 using namespace kiln::test;
 
-struct Fixture {
-    ObjectArena arena;
-    Diagnostics diag{nullptr};
-    NamedTextures named;
-    std::map<std::string, Material> namedMaterials;
-    EmissivityTables tables;
-
+struct Fixture : MaterialFixture {
     Fixture() {
         // A float texture varying over uv from 0 to 1 ("ramp"), for roughness and amounts
-        ParameterDictionary d(
-            {Float1("v00", 0), Float1("v10", 1), Float1("v01", 0.2f), Float1("v11", 0.7f)},
-            nullptr);
-        TextureParameterDictionary tp(&d, &named);
-        named.floatTextures.insert_or_assign(
-            "ramp", CreateFloatTexture("bilerp", Transform(), tp, TestLoc(), arena, diag));
+        AddBilerpFloat("ramp", 0, 1, 0.2f, 0.7f);
         ParameterDictionary c(
             {Floats("rgb", "v00", {0.05f, 0.1f, 0.2f}), Floats("rgb", "v10", {0.9f, 0.8f, 0.7f}),
              Floats("rgb", "v01", {0.5f, 0.5f, 0.5f}), Floats("rgb", "v11", {0.95f, 0.95f, 0.95f})},
@@ -47,27 +36,7 @@ struct Fixture {
             "colours", CreateSpectrumTexture("bilerp", Transform(), tc, SpectrumType::Albedo,
                                              TestLoc(), arena, diag));
     }
-    const Material* Make(const std::string& type, ParsedParameterVector params) {
-        ParameterDictionary d(std::move(params), nullptr);
-        TextureParameterDictionary tp(&d, &named);
-        return arena.New<Material>(
-            Material::Create(type, tp, namedMaterials, TestLoc(), arena, diag));
-    }
 };
-
-ParsedParameter Texture(const std::string& name, const std::string& texture) {
-    return Strings("texture", name, {texture});
-}
-
-MaterialEvalContext Context(Point2f uv, Vector3f wo) {
-    MaterialEvalContext ctx;
-    ctx.p = Point3f(uv.x, uv.y, 0);
-    ctx.n = ctx.ns = Normal3f(0, 0, 1);
-    ctx.dpdus = Vector3f(1, 0, 0);
-    ctx.uv = uv;
-    ctx.wo = wo;
-    return ctx;
-}
 
 // Largest deviation of the table albedo from the BSDF's sampled albedo beyond 4 standard
 // errors, over points, directions and wavelengths.

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <complex>
 
-#include "../textures/param_helpers.h"
 #include "core/base/rng.h"
 #include "core/base/statistics.h"
+#include "material_test_util.h"
 #include "materials/bxdfs/fresnel.h"
 #include "materials/bxdfs/fresnel_mueller.h"
 #include "materials/emissivity.h"
@@ -22,43 +22,15 @@ namespace {
 
 using namespace kiln::test;
 
-struct Fixture {
-    ObjectArena arena;
-    Diagnostics diag{nullptr};
-    NamedTextures named;
-    std::map<std::string, Material> namedMaterials;
-    EmissivityTables tables;
-
+struct Fixture : MaterialFixture {
     Fixture() {
         tables.polarized = true;
-        // A float texture varying over uv from 0.001 to 0.5 ("ramp"), for roughness
-        ParameterDictionary d(
-            {Float1("v00", 0.001f), Float1("v10", 0.5f), Float1("v01", 0.1f), Float1("v11", 0.3f)},
-            nullptr);
-        TextureParameterDictionary tp(&d, &named);
-        named.floatTextures.insert_or_assign(
-            "ramp", CreateFloatTexture("bilerp", Transform(), tp, TestLoc(), arena, diag));
-    }
-    const Material* Make(const std::string& type, ParsedParameterVector params) {
-        ParameterDictionary d(std::move(params), nullptr);
-        TextureParameterDictionary tp(&d, &named);
-        return arena.New<Material>(
-            Material::Create(type, tp, namedMaterials, TestLoc(), arena, diag));
+        AddBilerpFloat("ramp", 0.001f, 0.5f, 0.1f, 0.3f);  // roughness over uv
     }
 };
 
-ParsedParameter Texture(const std::string& name, const std::string& texture) {
-    return Strings("texture", name, {texture});
-}
-
 MaterialEvalContext Context(Vector3f wo, Point2f uv = Point2f(0.5f, 0.5f)) {
-    MaterialEvalContext ctx;
-    ctx.p = Point3f(uv.x, uv.y, 0);
-    ctx.n = ctx.ns = Normal3f(0, 0, 1);
-    ctx.dpdus = Vector3f(1, 0, 0);
-    ctx.uv = uv;
-    ctx.wo = wo;
-    return ctx;
+    return test::Context(uv, wo);
 }
 
 ParsedParameterVector Gold(Float roughness) {

@@ -185,28 +185,24 @@ TEST_P(PolarizedEquilibrium, CavityIsUnpolarisedBlackbody) {
     }
 }
 
+// Test names: the case's letters and digits, and the geometry.
+std::string CaseName(const ::testing::TestParamInfo<std::tuple<Case, bool>>& info) {
+    std::string id;
+    for (char ch : std::string(std::get<0>(info.param).name))
+        if (std::isalnum(static_cast<unsigned char>(ch))) id += ch;
+    return id + (std::get<1>(info.param) ? "_Meshes" : "_Spheres");
+}
+
 INSTANTIATE_TEST_SUITE_P(Cavities, Equilibrium,
                          ::testing::Combine(::testing::ValuesIn(kCases), ::testing::Bool()),
-                         [](const auto& info) {
-                             std::string n = std::get<0>(info.param).name;
-                             std::string id;
-                             for (char ch : n)
-                                 if (std::isalnum(static_cast<unsigned char>(ch))) id += ch;
-                             return id + (std::get<1>(info.param) ? "_Meshes" : "_Spheres");
-                         });
+                         CaseName);
 
 INSTANTIATE_TEST_SUITE_P(Cavities, PolarizedEquilibrium,
                          ::testing::Combine(::testing::Values(kCases[0], kCases[1], kCases[2],
                                                               kCases[3], kCases[4], kCases[5],
                                                               kCases[6], kCases[8]),
                                             ::testing::Bool()),
-                         [](const auto& info) {
-                             std::string n = std::get<0>(info.param).name;
-                             std::string id;
-                             for (char ch : n)
-                                 if (std::isalnum(static_cast<unsigned char>(ch))) id += ch;
-                             return id + (std::get<1>(info.param) ? "_Meshes" : "_Spheres");
-                         });
+                         CaseName);
 
 }  // namespace
 }  // namespace kiln
