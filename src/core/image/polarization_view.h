@@ -8,7 +8,7 @@
 //   degree of circular polarisation  DoCP = |s3|,
 //   angle of linear polarisation     AoLP = atan2(s2, s1) / 2, from the image's horizontal,
 //                                     counter-clockwise in the image, in [0, pi).
-// (each clamped to [0, 1]). The pictures, display-encoded sRGB, 8 bits:
+// (the degrees clamped to [0, 1]). The pictures, display-encoded sRGB, 8 bits:
 //   dolp:      DoLP as grey (black unpolarised, white fully linearly polarised);
 //   aolp:      AoLP as hue (0 degrees red, 60 green, 120 blue, back to red at 180), brightness
 //              DoLP;
