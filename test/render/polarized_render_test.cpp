@@ -25,10 +25,21 @@ constexpr const char* kQuad =
     " "
     "-3 3 0] \"point2 uv\" [0 0 1 0 1 1 0 1]\n";
 
-// An orthographic view along +z of a uniform light, through polariser sheets at the given
-// angles (degrees); the camera's polariser if cameraAngle is given.
-// Behind the first sheet, Russian roulette makes the estimate noisy: spp samples per pixel.
-std::string Sheets(std::vector<Float> angles, std::optional<Float> cameraAngle = {}, int spp = 1) {
+// Sheet materials: a polariser, a retarder (angles and retardance in degrees).
+std::string Polarizer(Float angle) {
+    return "\"polarizer\" \"float angle\" " + std::to_string(angle);
+}
+std::string Retarder(Float angle, Float retardance) {
+    return "\"retarder\" \"float angle\" " + std::to_string(angle) + " \"float retardance\" " +
+           std::to_string(retardance);
+}
+
+// An orthographic view along +z of a uniform light through sheets of the given materials, the
+// first nearest the camera (light crosses them in reverse order); the camera's polariser if
+// cameraAngle is given. Behind the first sheet, Russian roulette makes the estimate noisy:
+// spp samples per pixel.
+std::string Sheets(std::vector<std::string> materials, std::optional<Float> cameraAngle = {},
+                   int spp = 1) {
     std::ostringstream s;
     s << "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\n"
       << "Sampler \"zsobol\" \"integer pixelsamples\" " << spp << "\n"
@@ -37,9 +48,8 @@ std::string Sheets(std::vector<Float> angles, std::optional<Float> cameraAngle =
     if (cameraAngle) s << " \"float polarizer\" " << *cameraAngle;
     s << "\nWorldBegin\n";
     Float z = -2;
-    for (Float a : angles) {
-        s << "AttributeBegin Translate 0 0 " << z << " Material \"polarizer\" \"float angle\" " << a
-          << "\n"
+    for (const std::string& m : materials) {
+        s << "AttributeBegin Translate 0 0 " << z << " Material " << m << "\n"
           << kQuad << "AttributeEnd\n";
         z += 0.5f;
     }
@@ -64,7 +74,8 @@ TEST(PolarizedRender, MalusLawThroughTwoPolarizerSheets) {
     const Float open = MeanY(*testing::RenderText(Sheets({})).scene);
     ASSERT_GT(open, 0.1f);
     for (Float b : {0.f, 30.f, 45.f, 60.f, 90.f, 135.f}) {
-        testing::RenderedScene r = testing::RenderText(Sheets({20, 20 + b}, {}, 256));
+        testing::RenderedScene r =
+            testing::RenderText(Sheets({Polarizer(20), Polarizer(20 + b)}, {}, 256));
         EXPECT_TRUE(r.scene->features.polarized);
         Float expected = 0.5f * Sqr(std::cos(Radians(b)));
         RunningStats y = PixelStats(*r.scene);
@@ -72,14 +83,33 @@ TEST(PolarizedRender, MalusLawThroughTwoPolarizerSheets) {
         EXPECT_LT(4 * y.StandardError() / open, 0.03);  // sees a 3 % error
     }
     // A third sheet at 45 degrees between crossed ones lets light through again
-    RunningStats y = PixelStats(*testing::RenderText(Sheets({0, 45, 90}, {}, 256)).scene);
+    RunningStats y = PixelStats(
+        *testing::RenderText(Sheets({Polarizer(0), Polarizer(45), Polarizer(90)}, {}, 256)).scene);
     EXPECT_NEAR(y.Mean() / open, 0.125f, 4 * y.StandardError() / open + 1e-4);
+}
+
+TEST(PolarizedRender, RetarderSheets) {
+    const Float open = MeanY(*testing::RenderText(Sheets({})).scene);
+    for (Float analyser : {0.f, 45.f, 90.f, 135.f}) {
+        // Light polarised at 0 degrees through a quarter-wave plate at 45 degrees: circular,
+        // so an analyser at any angle passes half of it
+        RunningStats q = PixelStats(
+            *testing::RenderText(Sheets({Retarder(45, 90), Polarizer(0)}, analyser, 256)).scene);
+        EXPECT_NEAR(q.Mean() / open, 0.25, 4 * q.StandardError() / open + 1e-4) << analyser;
+        // Through a half-wave plate at 22.5 degrees: linear at 45 degrees
+        RunningStats h = PixelStats(
+            *testing::RenderText(Sheets({Retarder(22.5f, 180), Polarizer(0)}, analyser, 256))
+                 .scene);
+        Float expected = 0.5f * Sqr(std::cos(Radians(analyser - 45)));
+        EXPECT_NEAR(h.Mean() / open, expected, 4 * h.StandardError() / open + 1e-4) << analyser;
+        EXPECT_LT(4 * h.StandardError() / open, 0.03);
+    }
 }
 
 TEST(PolarizedRender, CameraPolarizerFollowsMalusLaw) {
     const Float open = MeanY(*testing::RenderText(Sheets({})).scene);
     for (Float b : {0.f, 30.f, 90.f, 120.f}) {
-        testing::RenderedScene r = testing::RenderText(Sheets({10}, 10 + b));
+        testing::RenderedScene r = testing::RenderText(Sheets({Polarizer(10)}, 10 + b));
         Float expected = 0.5f * Sqr(std::cos(Radians(b)));
         EXPECT_NEAR(MeanY(*r.scene) / open, expected, 1e-3f) << b;
     }
