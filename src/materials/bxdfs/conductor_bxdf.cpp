@@ -5,17 +5,22 @@
 
 namespace kiln {
 
-SampledSpectrum ConductorBxDF::f(Vector3f wo, Vector3f wi, TransportMode) const {
-    if (!SameHemisphere(wo, wi)) return {};
-    if (mfDistrib.EffectivelySmooth()) return {};
+std::optional<MicrofacetTerm> ConductorBxDF::Term(Vector3f wo, Vector3f wi) const {
+    if (!SameHemisphere(wo, wi) || mfDistrib.EffectivelySmooth()) return {};
     // Torrance-Sparrow: D F G / (4 cos_o cos_i).
     Float cosTheta_o = AbsCosTheta(wo), cosTheta_i = AbsCosTheta(wi);
     if (cosTheta_i == 0 || cosTheta_o == 0) return {};
     Vector3f wm = wi + wo;
     if (LengthSquared(wm) == 0) return {};
     wm = Normalize(wm);
-    SampledSpectrum F = FrComplex(AbsDot(wo, wm), eta, k);
-    return mfDistrib.D(wm) * F * mfDistrib.G(wo, wi) / (4 * cosTheta_i * cosTheta_o);
+    return MicrofacetTerm{wm,
+                          mfDistrib.D(wm) * mfDistrib.G(wo, wi) / (4 * cosTheta_i * cosTheta_o)};
+}
+
+SampledSpectrum ConductorBxDF::f(Vector3f wo, Vector3f wi, TransportMode) const {
+    std::optional<MicrofacetTerm> t = Term(wo, wi);
+    if (!t) return {};
+    return FrComplex(AbsDot(wo, t->wm), eta, k) * t->scale;
 }
 
 std::optional<BSDFSample> ConductorBxDF::Sample_f(Vector3f wo, Float, Point2f u, TransportMode,
@@ -52,16 +57,11 @@ Float ConductorBxDF::PDF(Vector3f wo, Vector3f wi, TransportMode,
 
 // Polarised transport
 MuellerMatrix ConductorBxDF::MuellerF(Vector3f wo, Vector3f wi, TransportMode) const {
-    if (!SameHemisphere(wo, wi) || mfDistrib.EffectivelySmooth()) return {};
-    Float cosTheta_o = AbsCosTheta(wo), cosTheta_i = AbsCosTheta(wi);
-    if (cosTheta_i == 0 || cosTheta_o == 0) return {};
-    Vector3f wm = wi + wo;
-    if (LengthSquared(wm) == 0) return {};
-    wm = Normalize(wm);
+    std::optional<MicrofacetTerm> t = Term(wo, wi);
+    if (!t) return {};
     // The Fresnel matrix of the microfacet, in its own plane of incidence
-    MuellerMatrix F = FresnelReflectionMueller(AbsDot(wo, wm), eta, k);
-    return MicrofacetToSurfaceFrame(F, wo, wi, wm) *
-           (mfDistrib.D(wm) * mfDistrib.G(wo, wi) / (4 * cosTheta_i * cosTheta_o));
+    MuellerMatrix F = FresnelReflectionMueller(AbsDot(wo, t->wm), eta, k);
+    return MicrofacetToSurfaceFrame(F, wo, wi, t->wm) * t->scale;
 }
 
 MuellerMatrix ConductorBxDF::MuellerSample(Vector3f wo, const BSDFSample& bs,

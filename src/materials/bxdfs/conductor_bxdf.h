@@ -40,6 +40,9 @@ class ConductorBxDF {
     const SampledSpectrum& K() const { return k; }
 
   private:
+    // Rough reflection from wo to wi: wm and D G / (4 cos_i cos_o); nullopt where f is zero.
+    std::optional<MicrofacetTerm> Term(Vector3f wo, Vector3f wi) const;
+
     TrowbridgeReitzDistribution mfDistrib;
     SampledSpectrum eta, k;
 };

@@ -87,21 +87,29 @@ bool HalfVector(Vector3f wo, Vector3f wi, Float eta, Vector3f* wm, Float* etap, 
 
 }  // namespace
 
-SampledSpectrum DielectricBxDF::f(Vector3f wo, Vector3f wi, TransportMode mode) const {
-    if (eta == 1 || mfDistrib.EffectivelySmooth()) return SampledSpectrum(0.f);
+std::optional<MicrofacetTerm> DielectricBxDF::Term(Vector3f wo, Vector3f wi,
+                                                   TransportMode mode) const {
+    if (eta == 1 || mfDistrib.EffectivelySmooth()) return {};
     Vector3f wm;
     Float etap;
     bool reflect;
     if (!HalfVector(wo, wi, eta, &wm, &etap, &reflect)) return {};
-    Float F = FrDielectric(Dot(wo, wm), eta);
     if (reflect)
-        return SampledSpectrum(mfDistrib.D(wm) * mfDistrib.G(wo, wi) * F /
-                               std::abs(4 * CosTheta(wi) * CosTheta(wo)));
+        return MicrofacetTerm{
+            wm, mfDistrib.D(wm) * mfDistrib.G(wo, wi) / std::abs(4 * CosTheta(wi) * CosTheta(wo)),
+            true};
     Float denom = Sqr(Dot(wi, wm) + Dot(wo, wm) / etap) * CosTheta(wi) * CosTheta(wo);
-    Float ft = mfDistrib.D(wm) * (1 - F) * mfDistrib.G(wo, wi) *
-               std::abs(Dot(wi, wm) * Dot(wo, wm) / denom);
-    if (mode == TransportMode::Radiance) ft /= Sqr(etap);
-    return SampledSpectrum(ft);
+    Float scale =
+        mfDistrib.D(wm) * mfDistrib.G(wo, wi) * std::abs(Dot(wi, wm) * Dot(wo, wm) / denom);
+    if (mode == TransportMode::Radiance) scale /= Sqr(etap);
+    return MicrofacetTerm{wm, scale, false};
+}
+
+SampledSpectrum DielectricBxDF::f(Vector3f wo, Vector3f wi, TransportMode mode) const {
+    std::optional<MicrofacetTerm> t = Term(wo, wi, mode);
+    if (!t) return {};
+    Float F = FrDielectric(Dot(wo, t->wm), eta);
+    return SampledSpectrum((t->reflect ? F : 1 - F) * t->scale);
 }
 
 Float DielectricBxDF::PDF(Vector3f wo, Vector3f wi, TransportMode,
@@ -122,22 +130,12 @@ Float DielectricBxDF::PDF(Vector3f wo, Vector3f wi, TransportMode,
 
 // Polarised transport
 MuellerMatrix DielectricBxDF::MuellerF(Vector3f wo, Vector3f wi, TransportMode mode) const {
-    if (eta == 1 || mfDistrib.EffectivelySmooth()) return {};
-    Vector3f wm;
-    Float etap;
-    bool reflect;
-    if (!HalfVector(wo, wi, eta, &wm, &etap, &reflect)) return {};
-    if (reflect) {
-        MuellerMatrix F = FresnelReflectionMueller(Dot(wo, wm), eta);
-        return MicrofacetToSurfaceFrame(F, wo, wi, wm) *
-               (mfDistrib.D(wm) * mfDistrib.G(wo, wi) / std::abs(4 * CosTheta(wi) * CosTheta(wo)));
-    }
-    Float denom = Sqr(Dot(wi, wm) + Dot(wo, wm) / etap) * CosTheta(wi) * CosTheta(wo);
-    Float scale =
-        mfDistrib.D(wm) * mfDistrib.G(wo, wi) * std::abs(Dot(wi, wm) * Dot(wo, wm) / denom);
-    if (mode == TransportMode::Radiance) scale /= Sqr(etap);
-    MuellerMatrix T = FresnelTransmissionMueller(Dot(wo, wm), eta);
-    return MicrofacetToSurfaceFrame(T, wo, wi, wm) * scale;
+    std::optional<MicrofacetTerm> t = Term(wo, wi, mode);
+    if (!t) return {};
+    Float cosTheta = Dot(wo, t->wm);
+    MuellerMatrix F = t->reflect ? FresnelReflectionMueller(cosTheta, eta)
+                                 : FresnelTransmissionMueller(cosTheta, eta);
+    return MicrofacetToSurfaceFrame(F, wo, wi, t->wm) * t->scale;
 }
 
 MuellerMatrix DielectricBxDF::MuellerSample(Vector3f wo, const BSDFSample& bs,

@@ -40,6 +40,10 @@ class DielectricBxDF {
     const TrowbridgeReitzDistribution& Distribution() const { return mfDistrib; }
 
   private:
+    // Rough reflection or refraction from wo to wi: the generalised half vector and f without
+    // its Fresnel factor (with the 1/eta'^2 of Radiance mode); nullopt where f is zero.
+    std::optional<MicrofacetTerm> Term(Vector3f wo, Vector3f wi, TransportMode mode) const;
+
     Float eta = 1;
     TrowbridgeReitzDistribution mfDistrib;
 };

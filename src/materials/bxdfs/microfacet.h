@@ -12,6 +12,15 @@
 
 namespace kiln {
 
+// A rough BxDF's value between two directions without its Fresnel factor: the microfacet normal
+// wm and the rest of f (D, G, Jacobians, sr^-1), for the unpolarised (scalar Fresnel) and
+// polarised (Fresnel Mueller matrix) values to share.
+struct MicrofacetTerm {
+    Vector3f wm;
+    Float scale;
+    bool reflect = true;  // reflection (else refraction)
+};
+
 class TrowbridgeReitzDistribution {
   public:
     TrowbridgeReitzDistribution() = default;
