@@ -31,6 +31,13 @@ find_package(OpenEXR REQUIRED)
 find_package(OpenColorIO REQUIRED HINTS /usr/share/cmake)
 kiln_drop_missing_includes(OpenColorIO::OpenColorIO)
 find_package(TBB REQUIRED)
+# OpenVDB (libopenvdb-dev; its headers also need libboost-dev) ships only a find module, which
+# demands Boost libraries kiln does not use: kiln links the library directly.
+find_library(KILN_OPENVDB_LIBRARY openvdb REQUIRED)
+find_path(KILN_OPENVDB_INCLUDE_DIR openvdb/openvdb.h REQUIRED)
+add_library(kiln_openvdb INTERFACE)
+target_include_directories(kiln_openvdb SYSTEM INTERFACE ${KILN_OPENVDB_INCLUDE_DIR})
+target_link_libraries(kiln_openvdb INTERFACE ${KILN_OPENVDB_LIBRARY} TBB::tbb)
 find_package(Threads REQUIRED)
 find_package(ZLIB REQUIRED)
 find_package(GTest)

@@ -8,7 +8,7 @@ build="${KILN_BUILD_DIR:-$root/build}"
 
 packages=(build-essential cmake pkg-config libembree-dev libopenimageio-dev openimageio-tools
           libopenexr-dev libopencolorio-dev libtbb-dev zlib1g-dev libgtest-dev libbenchmark-dev
-          libfmt-dev clang-format)
+          libfmt-dev libopenvdb-dev libboost-dev clang-format)
 source "$root/scripts/packages.sh"
 kiln_install_missing "${packages[@]}"
 

@@ -1,0 +1,155 @@
+#include "media/grid_medium.h"
+
+#include <cmath>
+
+#include "materials/thermal_properties.h"
+#include "media/vdb_file.h"
+
+namespace kiln {
+
+// GridMedium
+GridMedium::GridMedium(const Bounds3f& bounds, const Transform& renderFromMedium,
+                       const MediumCoefficients& c, SampledGrid<Float> density,
+                       MediumEmission emission)
+    : bounds(bounds),
+      renderFromMedium(renderFromMedium),
+      sigma_a(c.sigma_a),
+      sigma_s(c.sigma_s),
+      scale(c.scale),
+      g(c.g),
+      density(std::move(density)),
+      emission(std::move(emission)),
+      majorants(bounds, 16) {
+    majorants.Fill(
+        [&](const Bounds3f& b) { return this->density.MaxValue(b, [](Float d) { return d; }); });
+}
+
+Point3f GridMedium::UnitPoint(Point3f p) const {
+    Vector3f d = bounds.Diagonal();
+    return Point3f((p.x - bounds.pMin.x) / d.x, (p.y - bounds.pMin.y) / d.y,
+                   (p.z - bounds.pMin.z) / d.z);
+}
+
+MediumProperties GridMedium::SamplePoint(Point3f p, const SampledWavelengths& lambda) const {
+    Point3f pUnit = UnitPoint(renderFromMedium.ApplyInverse(p));
+    // The medium ends at its box (the interpolation would reach half a voxel beyond)
+    if (!InsideUnitCube(pUnit)) return {};
+    Float d = scale * density.Lookup(pUnit);
+    MediumProperties mp{sigma_a.Sample(lambda) * d, sigma_s.Sample(lambda) * d, g, {}};
+    emission.Apply(mp, p, pUnit, lambda);
+    return mp;
+}
+
+MajorantIterator GridMedium::SampleRay(const Ray& ray, Float tMax,
+                                       const SampledWavelengths& lambda) const {
+    Point3f o = renderFromMedium.ApplyInverse(ray.o);
+    Vector3f d = renderFromMedium.ApplyInverse(ray.d);
+    std::optional<std::pair<Float, Float>> t = ClipRayToBounds(bounds, o, d, tMax);
+    if (!t) return {};
+    SampledSpectrum sigma_t = (sigma_a.Sample(lambda) + sigma_s.Sample(lambda)) * scale;
+    return MajorantIterator(o, d, t->first, t->second, &majorants, sigma_t);
+}
+
+// Creation
+MediumEmission ReadGridEmission(const TextureParameterDictionary& params,
+                                SampledGrid<Float> temperature, int nx, int ny, int nz,
+                                std::optional<EmissionModel> modelOverride, ObjectArena& arena) {
+    std::optional<Spectrum> Le = ReadMediumLe(params);
+    if (Le && !temperature.Empty())
+        throw SceneError(params.Loc("Le"), "both \"Le\" and \"temperature\" values were provided",
+                         "Le");
+    // "Lescale": one value, or one per voxel
+    std::vector<Float> LeScaleValues = params.GetFloatArray("Lescale");
+    SampledGrid<Float> LeScale;
+    Float LeScaleConstant = 1;
+    size_t n = size_t(nx) * size_t(ny) * size_t(nz);
+    if (LeScaleValues.size() == 1) {
+        LeScaleConstant = LeScaleValues[0];
+    } else if (!LeScaleValues.empty()) {
+        if (LeScaleValues.size() != n)
+            throw SceneError(
+                params.Loc("Lescale"),
+                "expected one \"Lescale\" value or one per voxel (" + std::to_string(n) + ")",
+                std::to_string(LeScaleValues.size()));
+        LeScale = SampledGrid<Float>(std::move(LeScaleValues), nx, ny, nz);
+    }
+    Float offset =
+        params.GetOneFloat("temperatureoffset", params.GetOneFloat("temperaturecutoff", 0));
+    Float tScale = params.GetOneFloat("temperaturescale", 1);
+    if (!temperature.Empty()) {
+        if (params.Has("emission")) {
+            // kiln: kelvin, thermal emission in absolute units
+            ThermalProperties t = ReadThermalProperties(params, true, arena);
+            EmissionModel model =
+                modelOverride ? *modelOverride : t.model.value_or(EmissionModel::Kirchhoff);
+            return MediumEmission::Thermal(std::move(temperature), offset, tScale, model);
+        }
+        if (LeScale.Empty()) LeScale = SampledGrid<Float>({LeScaleConstant}, 1, 1, 1);
+        return MediumEmission::NormalizedBlackbody(std::move(temperature), offset, tScale,
+                                                   std::move(LeScale));
+    }
+    if (std::optional<MediumEmission> thermal =
+            ReadMediumThermalEmission(params, modelOverride, arena)) {
+        if (Le)
+            throw SceneError(params.Loc("temperature"),
+                             "a medium glows either by \"Le\" or by its \"temperature\", not both",
+                             "temperature");
+        return *thermal;
+    }
+    if (Le) return MediumEmission::Radiance(NormalizedLe(*Le, LeScaleConstant), std::move(LeScale));
+    return {};
+}
+
+GridMedium* GridMedium::Create(const TextureParameterDictionary& params,
+                               const Transform& renderFromMedium,
+                               std::optional<EmissionModel> modelOverride, const FileLoc& loc,
+                               ObjectArena& arena, Diagnostics& diag) {
+    std::vector<Float> density = params.GetFloatArray("density");
+    if (density.empty())
+        throw SceneError(loc, "no \"density\" values provided for grid medium", "uniformgrid");
+    std::array<int, 3> res = ReadGridResolution(params, density.size(), "density", loc);
+    int nx = res[0], ny = res[1], nz = res[2];
+    for (Float d : density)
+        if (!(d >= 0) || !std::isfinite(d))
+            throw SceneError(params.Loc("density"), "grid densities must be finite and >= 0",
+                             std::to_string(d));
+    SampledGrid<Float> temperature;
+    if (params.TypeOf("temperature") == "float") {
+        std::vector<Float> t = params.GetFloatArray("temperature");
+        // A grid of temperatures (pbrt-v4's, or kiln's with "emission"), else kiln's one value
+        if (t.size() > 1 || !params.Has("emission")) {
+            if (t.size() != density.size())
+                throw SceneError(params.Loc("temperature"),
+                                 "different number of samples (" + std::to_string(density.size()) +
+                                     " vs " + std::to_string(t.size()) +
+                                     ") provided for \"density\" and \"temperature\"",
+                                 "temperature");
+            temperature = SampledGrid<Float>(std::move(t), nx, ny, nz);
+        }
+    }
+    MediumCoefficients c = ReadMediumCoefficients(params, loc, diag);
+    MediumEmission emission =
+        ReadGridEmission(params, std::move(temperature), nx, ny, nz, modelOverride, arena);
+    return arena.New<GridMedium>(ReadGridBounds(params, loc), renderFromMedium, c,
+                                 SampledGrid<Float>(std::move(density), nx, ny, nz),
+                                 std::move(emission));
+}
+
+GridMedium* GridMedium::CreateFromVDB(const TextureParameterDictionary& params,
+                                      const Transform& renderFromMedium,
+                                      std::optional<EmissionModel> modelOverride,
+                                      const FileLoc& loc, ObjectArena& arena, Diagnostics& diag) {
+    std::string filename = params.GetOneFilename("filename", "");
+    if (filename.empty()) throw SceneError(loc, "a volume medium needs a \"filename\"", "filename");
+    VDBVolume v = ReadVDBVolume(filename, params.GetOneString("gridname", "density"),
+                                params.GetOneString("temperaturename", "temperature"),
+                                params.Loc("filename"));
+    MediumCoefficients c = ReadMediumCoefficients(params, loc, diag);
+    int nx = v.density.XSize(), ny = v.density.YSize(), nz = v.density.ZSize();
+    MediumEmission emission =
+        ReadGridEmission(params, std::move(v.temperature), nx, ny, nz, modelOverride, arena);
+    return arena.New<GridMedium>(v.indexBounds, renderFromMedium * v.mediumFromIndex, c,
+                                 std::move(v.density), std::move(emission));
+}
+
+}  // namespace kiln

@@ -1,0 +1,61 @@
+// "uniformgrid" (pbrt-v4's GridMedium): coefficients times a density on a grid over the box
+// [p0, p1] of the medium's space; also what an OpenVDB volume becomes ("nanovdb" with a .vdb
+// file, kiln's "vdb"; vdb_file.h), the box then being the grid's voxels. Majorants per voxel
+// of a 16^3 grid.
+#pragma once
+
+#include "core/base/object_arena.h"
+#include "core/base/transform.h"
+#include "core/parser/diagnostics.h"
+#include "media/majorant_grid.h"
+#include "media/medium_emission.h"
+#include "media/medium_parameters.h"
+#include "media/sampled_grid.h"
+
+namespace kiln {
+
+class GridMedium {
+  public:
+    // renderFromMedium maps the medium's space (where bounds is) to render space.
+    GridMedium(const Bounds3f& bounds, const Transform& renderFromMedium,
+               const MediumCoefficients& c, SampledGrid<Float> density, MediumEmission emission);
+    // "density" (nx * ny * nz values, x fastest), "nx", "ny", "nz", "p0", "p1", the shared
+    // coefficients, "Le" with "Lescale" (one value or one per voxel), "temperature" (one per
+    // voxel: pbrt-v4's peak-normalised blackbody times "Lescale"; with kiln's "emission",
+    // kelvin) with "temperatureoffset" (or "temperaturecutoff") and "temperaturescale"; or,
+    // with "emission", kiln's one-value or textured "temperature".
+    static GridMedium* Create(const TextureParameterDictionary& params,
+                              const Transform& renderFromMedium,
+                              std::optional<EmissionModel> modelOverride, const FileLoc& loc,
+                              ObjectArena& arena, Diagnostics& diag);
+    // "nanovdb" / "vdb": the "density" grid (or "gridname") of an OpenVDB file, temperatures
+    // from its "temperature" grid (or "temperaturename") if present.
+    static GridMedium* CreateFromVDB(const TextureParameterDictionary& params,
+                                     const Transform& renderFromMedium,
+                                     std::optional<EmissionModel> modelOverride, const FileLoc& loc,
+                                     ObjectArena& arena, Diagnostics& diag);
+
+    bool IsEmissive() const { return emission.IsEmissive(); }
+    MediumEmission& Emission() { return emission; }
+    MediumProperties SamplePoint(Point3f p, const SampledWavelengths& lambda) const;
+    MajorantIterator SampleRay(const Ray& ray, Float tMax, const SampledWavelengths& lambda) const;
+
+  private:
+    Point3f UnitPoint(Point3f pMedium) const;
+
+    Bounds3f bounds;
+    Transform renderFromMedium;
+    Spectrum sigma_a, sigma_s;
+    Float scale, g;
+    SampledGrid<Float> density;
+    MediumEmission emission;
+    MajorantGrid majorants;
+};
+
+// How a grid medium glows from its parameters (shared by "uniformgrid" and OpenVDB files):
+// temperature: one value per voxel of the density grid, or empty.
+MediumEmission ReadGridEmission(const TextureParameterDictionary& params,
+                                SampledGrid<Float> temperature, int nx, int ny, int nz,
+                                std::optional<EmissionModel> modelOverride, ObjectArena& arena);
+
+}  // namespace kiln

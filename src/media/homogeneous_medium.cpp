@@ -1,0 +1,27 @@
+#include "media/homogeneous_medium.h"
+
+#include "spectral/cie.h"
+
+namespace kiln {
+
+HomogeneousMedium* HomogeneousMedium::Create(const TextureParameterDictionary& params,
+                                             std::optional<EmissionModel> modelOverride,
+                                             const FileLoc& loc, ObjectArena& arena,
+                                             Diagnostics& diag) {
+    MediumCoefficients c = ReadMediumCoefficients(params, loc, diag);
+    MediumEmission emission;
+    std::optional<MediumEmission> thermal = ReadMediumThermalEmission(params, modelOverride, arena);
+    std::optional<Spectrum> Le = ReadMediumLe(params);
+    Float LeScale = params.GetOneFloat("Lescale", 1);
+    if (thermal && Le)
+        throw SceneError(params.Loc("temperature"),
+                         "a medium glows either by \"Le\" or by its \"temperature\", not both",
+                         "temperature");
+    if (thermal)
+        emission = *thermal;
+    else if (Le)
+        emission = MediumEmission::Radiance(NormalizedLe(*Le, LeScale));
+    return arena.New<HomogeneousMedium>(c, std::move(emission));
+}
+
+}  // namespace kiln

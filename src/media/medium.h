@@ -1,0 +1,114 @@
+// Medium: the closed set of participating media behind one small value type (pbrt-v4's
+// Medium, with std::variant of pointers in place of its TaggedPointer), and SampleT_maj, the
+// distance sampling every volumetric estimator is built on. Media live in the scene's
+// ObjectArena and are identified by their index in Scene::media (MediumInterface).
+//
+// Units: coefficients per unit length of render space (pbrt-v4: a medium's transform does not
+// scale them), emission in W m^-2 sr^-1 nm^-1 per unit length.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "core/base/rng.h"
+#include "core/base/sampling.h"
+#include "core/base/transform.h"
+#include "core/parser/diagnostics.h"
+#include "media/cloud_medium.h"
+#include "media/grid_medium.h"
+#include "media/homogeneous_medium.h"
+#include "media/rgb_grid_medium.h"
+
+namespace kiln {
+
+class Medium {
+  public:
+    using Kind = std::variant<HomogeneousMedium*, GridMedium*, RGBGridMedium*, CloudMedium*>;
+    template <typename T>
+    requires std::is_constructible_v<Kind, T*> Medium(T* medium) : kind(medium) {}
+
+    // type: "homogeneous", "uniformgrid", "rgbgrid", "cloud", "nanovdb" (an OpenVDB .vdb file;
+    // .nvdb files are refused with a message) or kiln's "vdb". modelOverride: the command
+    // line's --emission for thermal media. SceneError for invalid parameters or a singular
+    // transform.
+    static Medium Create(const std::string& type, const TextureParameterDictionary& params,
+                         const Transform& renderFromMedium,
+                         std::optional<EmissionModel> modelOverride, const FileLoc& loc,
+                         ObjectArena& arena, Diagnostics& diag);
+
+    bool IsEmissive() const {
+        return std::visit([](auto m) { return m->IsEmissive(); }, kind);
+    }
+    // Thermal emission inside a body of refractive index eta (medium_emission.h).
+    void SetRefractiveIndex(const Spectrum& eta) {
+        std::visit([&](auto m) { m->Emission().SetRefractiveIndex(eta); }, kind);
+    }
+    bool IsThermal() const {
+        return std::visit([](auto m) { return m->Emission().IsThermal(); }, kind);
+    }
+    MediumProperties SamplePoint(Point3f p, const SampledWavelengths& lambda) const {
+        return std::visit([&](auto m) { return m->SamplePoint(p, lambda); }, kind);
+    }
+    // The majorant segments of ray (render space, unit direction) over [0, tMax].
+    MajorantIterator SampleRay(const Ray& ray, Float tMax, const SampledWavelengths& lambda) const {
+        return std::visit([&](auto m) { return m->SampleRay(ray, tMax, lambda); }, kind);
+    }
+
+    // Delta-tracking distance sampling along ray up to tMax (pbrt-v4's SampleT_maj): draws
+    // tentative collisions with density sigma_maj[0] exp(-sigma_maj[0] t) per majorant
+    // segment, and calls callback(p, MediumProperties, sigma_maj, T_maj) at each, T_maj being
+    // the majorant transmittance since the previous one; the callback returns whether to go
+    // on. Returns the majorant transmittance from the last collision to tMax (1 if stopped).
+    // u: the first uniform sample; rng supplies the rest.
+    template <typename F>
+    SampledSpectrum SampleT_maj(Ray ray, Float tMax, Float u, RNG& rng,
+                                const SampledWavelengths& lambda, F callback) const {
+        // Unit direction, tMax in its units
+        Float len = Length(ray.d);
+        tMax *= len;
+        ray.d = ray.d / len;
+        return std::visit(
+            [&](auto m) {
+                MajorantIterator iter = m->SampleRay(ray, tMax, lambda);
+                SampledSpectrum T_maj(1.f);
+                while (std::optional<RayMajorantSegment> seg = iter.Next()) {
+                    if (seg->sigma_maj[0] == 0) {
+                        // No collisions here: only the transmittance of the other wavelengths
+                        T_maj *= FastExpTransmittance(seg->tMax - seg->tMin, seg->sigma_maj);
+                        continue;
+                    }
+                    Float tMin = seg->tMin;
+                    while (true) {
+                        Float t = tMin + SampleExponential(u, seg->sigma_maj[0]);
+                        u = rng.UniformFloat();
+                        if (t >= seg->tMax) {
+                            T_maj *= FastExpTransmittance(seg->tMax - tMin, seg->sigma_maj);
+                            break;
+                        }
+                        T_maj *= FastExpTransmittance(t - tMin, seg->sigma_maj);
+                        Point3f p = ray(t);
+                        if (!callback(p, m->SamplePoint(p, lambda), seg->sigma_maj, T_maj))
+                            return SampledSpectrum(1.f);
+                        T_maj = SampledSpectrum(1.f);
+                        tMin = t;
+                    }
+                }
+                return T_maj;
+            },
+            kind);
+    }
+
+  private:
+    // exp(-dt sigma) per wavelength; an infinite segment with sigma 0 transmits everything.
+    static SampledSpectrum FastExpTransmittance(Float dt, const SampledSpectrum& sigma) {
+        SampledSpectrum T;
+        for (int i = 0; i < NSpectrumSamples; ++i)
+            T[i] = sigma[i] == 0 ? 1 : std::exp(-dt * sigma[i]);
+        return T;
+    }
+
+    Kind kind;
+};
+
+}  // namespace kiln

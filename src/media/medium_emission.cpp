@@ -1,0 +1,100 @@
+#include "media/medium_emission.h"
+
+#include "spectral/planck.h"
+#include "textures/texture_eval_context.h"
+
+namespace kiln {
+
+MediumEmission MediumEmission::Radiance(Spectrum Le, SampledGrid<Float> LeScale) {
+    MediumEmission e;
+    e.kind = Kind::Radiance;
+    e.Le = Le;
+    e.LeScale = std::move(LeScale);
+    return e;
+}
+
+MediumEmission MediumEmission::NormalizedBlackbody(SampledGrid<Float> temperature, Float offset,
+                                                   Float scale, SampledGrid<Float> LeScale) {
+    MediumEmission e;
+    e.kind = Kind::NormalizedBlackbody;
+    e.temperatureGrid = std::move(temperature);
+    e.temperatureOffset = offset;
+    e.temperatureScale = scale;
+    e.LeScale = std::move(LeScale);
+    return e;
+}
+
+MediumEmission MediumEmission::Thermal(FloatTexture temperature, EmissionModel model) {
+    MediumEmission e;
+    e.kind = model == EmissionModel::None ? Kind::None : Kind::Thermal;
+    e.temperatureTexture = temperature;
+    e.model = model;
+    return e;
+}
+
+MediumEmission MediumEmission::Thermal(SampledGrid<Float> temperature, Float offset, Float scale,
+                                       EmissionModel model) {
+    MediumEmission e;
+    e.kind = model == EmissionModel::None ? Kind::None : Kind::Thermal;
+    e.temperatureGrid = std::move(temperature);
+    e.temperatureOffset = offset;
+    e.temperatureScale = scale;
+    e.model = model;
+    return e;
+}
+
+void MediumEmission::Apply(MediumProperties& mp, Point3f pRender, Point3f pUnit,
+                           const SampledWavelengths& lambda) const {
+    switch (kind) {
+        case Kind::None:
+            return;
+        case Kind::Radiance: {
+            Float scale = LeScale.Empty() ? 1 : LeScale.Lookup(pUnit);
+            if (scale > 0) mp.emission = mp.sigma_a * (scale * Le->Sample(lambda));
+            return;
+        }
+        case Kind::NormalizedBlackbody: {
+            Float scale = LeScale.Empty() ? 1 : LeScale.Lookup(pUnit);
+            Float T = (temperatureGrid.Lookup(pUnit) - temperatureOffset) * temperatureScale;
+            if (scale <= 0 || !(T > 100)) return;
+            SampledSpectrum B;
+            for (int i = 0; i < NSpectrumSamples; ++i)
+                B[i] = Float(planck_radiance_normalized(lambda[i], T));
+            mp.emission = mp.sigma_a * (scale * B);
+            return;
+        }
+        case Kind::Thermal:
+            break;
+    }
+    Float T;
+    if (temperatureTexture) {
+        TextureEvalContext ctx;
+        ctx.p = pRender;
+        T = temperatureTexture->Evaluate(ctx);
+    } else {
+        T = (temperatureGrid.Lookup(pUnit) - temperatureOffset) * temperatureScale;
+    }
+    if (!(T > 0)) return;  // 0 K, and NaN from a hostile texture, emit nothing
+    SampledSpectrum B = planck_radiance(lambda, T);
+    if (eta) {
+        SampledSpectrum n = eta->Sample(lambda);
+        B *= n * n;
+    }
+    switch (model) {
+        case EmissionModel::Kirchhoff:
+            mp.emission = mp.sigma_a * B;
+            break;
+        case EmissionModel::Additive:
+            mp.emission = (mp.sigma_a + mp.sigma_s) * B;
+            break;
+        case EmissionModel::Diffuse:
+            mp.sigma_a += mp.sigma_s;
+            mp.sigma_s = SampledSpectrum(0.f);
+            mp.emission = mp.sigma_a * B;
+            break;
+        case EmissionModel::None:
+            break;
+    }
+}
+
+}  // namespace kiln

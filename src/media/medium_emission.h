@@ -1,0 +1,65 @@
+// How a medium glows.
+//
+// pbrt-v4's emission: "spectrum Le" times "Lescale" (per voxel in a "uniformgrid"), normalised
+// by its luminance as lights are; or, for grid media, a "temperature" grid giving pbrt-v4's
+// peak-normalised blackbody times "Lescale". Either is emitted per unit absorption: sigma_a Le.
+//
+// kiln's thermal emission (Kirchhoff inside matter): a medium at temperature T (kelvin: "float
+// temperature", any float texture evaluated at render-space points, or a temperature grid with
+// "string emission" given) inside a body of refractive index n emits, per unit length,
+//   "kirchhoff" (default)  sigma_a n^2 B(lambda, T)          (absolute units, planck.h)
+//   "additive"             (sigma_a + sigma_s) n^2 B(lambda, T): B added on all extinction
+//   "diffuse"              a blackbody medium: scattering becomes absorption, sigma_t n^2 B
+//   "none"                 nothing.
+// n^2 B is the equilibrium radiance inside matter of index n: with it a hot body behind a
+// dielectric boundary radiates (1 - R) B through it and a closed cavity stays at B(T). n is
+// that of the dielectric bounding the medium (set by the scene), 1 otherwise.
+#pragma once
+
+#include <optional>
+
+#include "materials/emission_model.h"
+#include "media/medium_properties.h"
+#include "media/sampled_grid.h"
+#include "spectral/spectrum.h"
+#include "textures/texture.h"
+
+namespace kiln {
+
+class MediumEmission {
+  public:
+    MediumEmission() = default;  // emits nothing
+    // pbrt-v4: Le (already divided by its luminance and times a constant Lescale), scaled per
+    // point by LeScale when given.
+    static MediumEmission Radiance(Spectrum Le, SampledGrid<Float> LeScale = {});
+    // pbrt-v4's temperature grid: LeScale(p) times the peak-normalised blackbody at
+    // (T(p) - offset) * scale, nothing below 100 K.
+    static MediumEmission NormalizedBlackbody(SampledGrid<Float> temperature, Float offset,
+                                              Float scale, SampledGrid<Float> LeScale);
+    // kiln: thermal emission at a temperature from a texture (render-space points) or a grid
+    // ((T - offset) * scale at points of the unit cube).
+    static MediumEmission Thermal(FloatTexture temperature, EmissionModel model);
+    static MediumEmission Thermal(SampledGrid<Float> temperature, Float offset, Float scale,
+                                  EmissionModel model);
+
+    bool IsEmissive() const { return kind != Kind::None; }
+    bool IsThermal() const { return kind == Kind::Thermal; }
+    // The refractive index of the body the medium fills (thermal emission only).
+    void SetRefractiveIndex(Spectrum eta) { this->eta = eta; }
+    // Sets mp.emission (and for the "diffuse" model moves scattering to absorption) at the
+    // render-space point pRender, pUnit in the unit cube of the medium's grid.
+    void Apply(MediumProperties& mp, Point3f pRender, Point3f pUnit,
+               const SampledWavelengths& lambda) const;
+
+  private:
+    enum class Kind { None, Radiance, NormalizedBlackbody, Thermal };
+    Kind kind = Kind::None;
+    std::optional<Spectrum> Le;
+    std::optional<FloatTexture> temperatureTexture;
+    SampledGrid<Float> temperatureGrid, LeScale;
+    Float temperatureOffset = 0, temperatureScale = 1;
+    EmissionModel model = EmissionModel::Kirchhoff;
+    std::optional<Spectrum> eta;
+};
+
+}  // namespace kiln

@@ -1,0 +1,54 @@
+// Parameters every pbrt-v4 medium shares: sigma_a, sigma_s (or a measured "preset"), "scale"
+// and the Henyey-Greenstein "g"; and kiln's heat ("temperature", "emission").
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+
+#include "core/base/object_arena.h"
+#include "materials/emission_model.h"
+#include "media/medium_emission.h"
+#include "spectral/spectrum.h"
+#include "textures/texture_parameter_dictionary.h"
+
+namespace kiln {
+
+struct MediumCoefficients {
+    // Per unit length of render space; "scale" multiplies both.
+    Spectrum sigma_a = ConstantSpectrum(1), sigma_s = ConstantSpectrum(1);
+    Float scale = 1;
+    Float g = 0;
+};
+
+// The measured scattering coefficients of a named material, mm^-1 (sigma_a, sigma_s); nullopt
+// if unknown. Sources in medium_parameters.cpp.
+std::optional<std::pair<Spectrum, Spectrum>> MediumPreset(const std::string& name);
+
+// "preset" (a warning if unknown, as pbrt-v4), else "spectrum sigma_a" / "sigma_s" (default 1),
+// "float scale" (default 1), "float g" in (-1, 1) (default 0).
+MediumCoefficients ReadMediumCoefficients(const TextureParameterDictionary& params,
+                                          const FileLoc& loc, Diagnostics& diag);
+
+// "float g" in (-1, 1), default 0.
+Float ReadHGAsymmetry(const TextureParameterDictionary& params);
+// "float scale", finite and >= 0, default 1.
+Float ReadCoefficientScale(const TextureParameterDictionary& params, const FileLoc& loc);
+// A grid medium's box [p0, p1] (default the unit cube), positive on every axis.
+Bounds3f ReadGridBounds(const TextureParameterDictionary& params, const FileLoc& loc);
+// "nx", "ny", "nz" (default 1), which n values given for what must fill.
+std::array<int, 3> ReadGridResolution(const TextureParameterDictionary& params, size_t n,
+                                      const std::string& what, const FileLoc& loc);
+
+// pbrt-v4's "spectrum Le" (an illuminant), nullopt when absent or zero.
+std::optional<Spectrum> ReadMediumLe(const TextureParameterDictionary& params);
+// Le divided by its luminance (as lights are, lights/light.h), times scale.
+Spectrum NormalizedLe(const Spectrum& Le, Float scale);
+
+// kiln's thermal emission of a medium with a constant or textured "temperature"; none when
+// the medium has no such parameter. modelOverride: the command line's --emission.
+std::optional<MediumEmission> ReadMediumThermalEmission(const TextureParameterDictionary& params,
+                                                        std::optional<EmissionModel> modelOverride,
+                                                        ObjectArena& arena);
+
+}  // namespace kiln

@@ -1,0 +1,32 @@
+// Sparse volumes from OpenVDB files (.vdb, through Debian's libopenvdb): the float grids a
+// medium reads, resampled onto a dense SampledGrid over the density grid's active voxels.
+// NanoVDB files (.nvdb, pbrt-v4's "nanovdb" medium) cannot be read: no Debian 12 package
+// provides NanoVDB, and ReadVDBVolume says so.
+#pragma once
+
+#include <string>
+
+#include "core/base/transform.h"
+#include "core/parser/file_loc.h"
+#include "media/sampled_grid.h"
+
+namespace kiln {
+
+struct VDBVolume {
+    SampledGrid<Float> density;
+    SampledGrid<Float> temperature;  // empty if the file has no such grid
+    // The box of the density grid's active voxels in index space (voxel centres at integer
+    // coordinates, so the box reaches half a voxel beyond them), and the grid's index-to-world
+    // transform: world is the medium's space.
+    Bounds3f indexBounds;
+    Transform mediumFromIndex;
+};
+
+// Reads densityName (required: SceneError at loc if missing, not a float grid, or the file is
+// unreadable) and temperatureName (optional) from filename. Volumes of more than maxVoxels
+// dense voxels are refused.
+VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityName,
+                        const std::string& temperatureName, const FileLoc& loc,
+                        size_t maxVoxels = size_t(1) << 30);
+
+}  // namespace kiln
