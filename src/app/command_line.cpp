@@ -116,7 +116,8 @@ std::string UsageText() {
            "  --generic LIST        run generic code paths instead of the chosen ones, to\n"
            "                        measure what the choices save: footprints (texture\n"
            "                        footprints at every hit), aovs (AOV work per camera\n"
-           "                        ray), all\n"
+           "                        ray), volpath (the volumetric integrator without\n"
+           "                        media), all\n"
            "  --quiet               no progress output\n"
            "  --help, --version\n"
            "   or: kiln diff A B [--metric M] [--threshold X] [--out DIFF] (kiln diff --help)\n";
@@ -184,8 +185,10 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
                 std::string item = list.substr(start, comma - start);
                 if (item == "footprints" || item == "all") o.genericFootprints = true;
                 if (item == "aovs" || item == "all") o.genericAOVs = true;
-                if (item != "footprints" && item != "aovs" && item != "all")
-                    throw std::invalid_argument("--generic expects footprints, aovs or all");
+                if (item == "volpath" || item == "all") o.genericVolumes = true;
+                if (item != "footprints" && item != "aovs" && item != "volpath" && item != "all")
+                    throw std::invalid_argument(
+                        "--generic expects footprints, aovs, volpath or all");
                 if (comma == std::string::npos) break;
                 start = comma + 1;
             }
@@ -256,6 +259,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
         SceneOverrides overrides{options.spp, options.seed, options.crop, std::nullopt};
         overrides.genericFootprints = options.genericFootprints;
         overrides.genericAOVs = options.genericAOVs;
+        overrides.genericVolumes = options.genericVolumes;
         overrides.stokes = options.stokes;
         if (options.emission) overrides.emission = ParseEmissionModel(*options.emission);
         if (frame) {

@@ -25,7 +25,7 @@ struct CommandLineOptions {
     std::optional<std::string> strategy;         // mis | light | bsdf
     std::optional<std::string> emitterSampling;  // power | shape
     // --generic footprints,aovs: run those generic code paths (measuring specialisation)
-    bool genericFootprints = false, genericAOVs = false;
+    bool genericFootprints = false, genericAOVs = false, genericVolumes = false;
     std::optional<int> wavelengths;  // 1 | 4
     bool stokes = false;             // --stokes: polarised rendering with Stokes layers
     bool polarisation = false;       // --polarisation: also degree/angle pictures

@@ -38,6 +38,11 @@ bool Material::UsesFootprint() const {
     return std::visit([](const auto* m) { return m->usesFootprint; }, v);
 }
 
+std::optional<Spectrum> Material::InteriorEta() const {
+    if (const DielectricMaterial* d = GetIf<DielectricMaterial>()) return d->Eta();
+    return std::nullopt;
+}
+
 // Material creation
 namespace {
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -10,6 +11,7 @@
 #include "core/parser/diagnostics.h"
 #include "materials/bxdfs/bsdf.h"
 #include "spectral/sampled_spectrum.h"
+#include "spectral/spectrum.h"
 #include "textures/texture_eval_context.h"
 
 namespace kiln {
@@ -54,6 +56,11 @@ class Material {
     // Whether the BSDF depends on the screen-space footprint (a texture filters with it):
     // shading computes footprints only then (decided at creation).
     bool UsesFootprint() const;
+
+    // The refractive index of the body whose surface this is: a dielectric's eta; nullopt for
+    // every other material (thin dielectrics enclose nothing; conductors and coatings are
+    // opaque; a mix has no single one).
+    std::optional<Spectrum> InteriorEta() const;
 
     bool IsInterface() const { return Is<InterfaceMaterial>(); }
     bool IsMix() const { return Is<MixMaterial>(); }

@@ -16,9 +16,10 @@
 
 namespace kiln {
 
-template <typename Radiance>
+template <typename RadianceType>
 class PathIntegrator {
   public:
+    using Radiance = RadianceType;
     using Spectrum = typename Radiance::Spectrum;
     using Throughput = typename Radiance::Throughput;
 

@@ -28,6 +28,8 @@ struct UnpolarizedRadiance {
     static Spectrum Unpolarized(const SampledSpectrum& L) { return L; }
     // Throughput applied to radiance.
     static Spectrum Apply(const Throughput& beta, const Spectrum& L) { return beta * L; }
+    // What scattering that forgets polarisation (a phase function) does: intensity times a.
+    static Throughput Depolarizing(const SampledSpectrum& a) { return a; }
     // The intensity (first Stokes component).
     static const SampledSpectrum& Intensity(const Spectrum& L) { return L; }
     // Magnitude used for Russian roulette: the throughput of intensity.
@@ -42,6 +44,10 @@ struct PolarizedRadiance {
     static Throughput One() { return MuellerMatrix::Identity(); }
     static Spectrum Unpolarized(const SampledSpectrum& L) { return Stokes(L); }
     static Spectrum Apply(const Throughput& beta, const Spectrum& L) { return beta * L; }
+    // Henyey-Greenstein media have no polarisation model: their scattering depolarises.
+    static Throughput Depolarizing(const SampledSpectrum& a) {
+        return MuellerMatrix::Depolarizer(a);
+    }
     static const SampledSpectrum& Intensity(const Spectrum& L) { return L.Intensity(); }
     // M00: what the throughput does to unpolarised light.
     static Float RouletteWeight(const Throughput& beta) {

@@ -12,6 +12,7 @@
 
 #include "core/camera/camera_sample.h"
 #include "render/path_integrator.h"
+#include "render/volpath_integrator.h"
 
 namespace kiln {
 
@@ -47,9 +48,10 @@ Stokes ToFilmFrame(const Scene& scene, Stokes S, Vector3f d) {
 }
 
 // One pixel sample: camera ray, radiance along it, film update.
-template <typename Radiance, bool AOVs, bool SingleWavelength, bool FixedPixelCenter>
-void RenderPixelSample(const Scene& scene, const PathIntegrator<Radiance>& integrator,
-                       kiln::Sampler& sampler, Point2i pPixel, int sampleIndex) {
+template <typename Integrator, bool AOVs, bool SingleWavelength, bool FixedPixelCenter>
+void RenderPixelSample(const Scene& scene, const Integrator& integrator, kiln::Sampler& sampler,
+                       Point2i pPixel, int sampleIndex) {
+    using Radiance = typename Integrator::Radiance;
     sampler.StartPixelSample(pPixel, sampleIndex);
     // Wavelengths first, then the camera sample (pbrt-v4's order)
     Float lu = sampler.Get1D();
@@ -73,22 +75,21 @@ void RenderPixelSample(const Scene& scene, const PathIntegrator<Radiance>& integ
     scene.film->AddSample(pPixel, L, lambda, pVisible, cs.filterWeight);
 }
 
-template <typename Radiance>
-using PixelSampleFunction = void (*)(const Scene&, const PathIntegrator<Radiance>&, kiln::Sampler&,
-                                     Point2i, int);
+template <typename Integrator>
+using PixelSampleFunction = void (*)(const Scene&, const Integrator&, kiln::Sampler&, Point2i, int);
 
 // The instantiation for the scene's features, chosen once per render.
-template <typename Radiance>
-PixelSampleFunction<Radiance> PixelSampleFor(PixelFeatures f) {
-    static constexpr PixelSampleFunction<Radiance> table[8] = {
-        RenderPixelSample<Radiance, false, false, false>,
-        RenderPixelSample<Radiance, false, false, true>,
-        RenderPixelSample<Radiance, false, true, false>,
-        RenderPixelSample<Radiance, false, true, true>,
-        RenderPixelSample<Radiance, true, false, false>,
-        RenderPixelSample<Radiance, true, false, true>,
-        RenderPixelSample<Radiance, true, true, false>,
-        RenderPixelSample<Radiance, true, true, true>};
+template <typename Integrator>
+PixelSampleFunction<Integrator> PixelSampleFor(PixelFeatures f) {
+    static constexpr PixelSampleFunction<Integrator> table[8] = {
+        RenderPixelSample<Integrator, false, false, false>,
+        RenderPixelSample<Integrator, false, false, true>,
+        RenderPixelSample<Integrator, false, true, false>,
+        RenderPixelSample<Integrator, false, true, true>,
+        RenderPixelSample<Integrator, true, false, false>,
+        RenderPixelSample<Integrator, true, false, true>,
+        RenderPixelSample<Integrator, true, true, false>,
+        RenderPixelSample<Integrator, true, true, true>};
     return table[(f.aovs ? 4 : 0) + (f.singleWavelength ? 2 : 0) + (f.fixedPixelCenter ? 1 : 0)];
 }
 
@@ -96,7 +97,7 @@ PixelSampleFunction<Radiance> PixelSampleFor(PixelFeatures f) {
 
 namespace {
 
-template <typename Radiance>
+template <typename Integrator>
 RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
     RenderStats stats;
     Bounds2i pixelBounds = scene.film->PixelBounds();
@@ -111,10 +112,10 @@ RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
         threadLimit = std::make_unique<tbb::global_control>(
             tbb::global_control::max_allowed_parallelism, size_t(settings.threads));
 
-    PathIntegrator<Radiance> integrator(scene, scene.integrator);
+    Integrator integrator(scene, scene.integrator);
     const SceneFeatures& f = scene.features;
-    const PixelSampleFunction<Radiance> renderPixelSample =
-        PixelSampleFor<Radiance>({f.aovs, f.singleWavelength, f.fixedPixelCenter});
+    const PixelSampleFunction<Integrator> renderPixelSample =
+        PixelSampleFor<Integrator>({f.aovs, f.singleWavelength, f.fixedPixelCenter});
     tbb::enumerable_thread_specific<kiln::Sampler> samplers([&] { return scene.sampler->Clone(); });
 
     std::ostringstream title;
@@ -161,9 +162,15 @@ RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
 }  // namespace
 
 RenderStats Render(Scene& scene, const RenderSettings& settings) {
-    // The radiance variant the scene needs, chosen once (radiance.h)
-    if (scene.features.polarized) return RenderVariant<PolarizedRadiance>(scene, settings);
-    return RenderVariant<UnpolarizedRadiance>(scene, settings);
+    // The radiance variant (radiance.h) and integrator the scene needs, chosen once
+    if (scene.features.volumetric) {
+        if (scene.features.polarized)
+            return RenderVariant<VolPathIntegrator<PolarizedRadiance>>(scene, settings);
+        return RenderVariant<VolPathIntegrator<UnpolarizedRadiance>>(scene, settings);
+    }
+    if (scene.features.polarized)
+        return RenderVariant<PathIntegrator<PolarizedRadiance>>(scene, settings);
+    return RenderVariant<PathIntegrator<UnpolarizedRadiance>>(scene, settings);
 }
 
 }  // namespace kiln

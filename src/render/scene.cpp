@@ -17,7 +17,7 @@ std::string SceneFeatures::ToString() const {
         "thermal emission %s (%d lights, %d emissivity tables in %.2f s%s); texture footprints "
         "at %d of %d materials; pixel loop: AOVs %s, %d wavelength%s, %s pixel positions; "
         "light sampler %s; area lights %s, environment light %s, dispersion %s; "
-        "polarisation %s%s%s",
+        "polarisation %s; media %d (%d emissive, %d thermal), integrator %s%s%s%s",
         onOff(thermalEmission), thermalLights, emissivityTables, emissivitySeconds,
         varyingTemperatures ? ", varying temperatures" : "", footprintMaterials, materials,
         onOff(aovs), singleWavelength ? 1 : NSpectrumSamples, singleWavelength ? "" : "s",
@@ -27,7 +27,9 @@ std::string SceneFeatures::ToString() const {
         : lightSelection == LightSelection::Uniform ? "uniform"
                                                     : "area",
         onOff(areaLights), onOff(environmentLight), onOff(dispersion),
-        polarized ? "on (Stokes vectors, Mueller matrices)" : "off",
+        polarized ? "on (Stokes vectors, Mueller matrices)" : "off", media, emissiveMedia,
+        thermalMedia, volumetric ? "volpath" : "path",
+        genericVolumes ? "; generic volpath (--generic)" : "",
         genericFootprints ? "; generic footprints (--generic)" : "",
         genericAOVs ? "; generic AOVs (--generic)" : "");
     return buf;

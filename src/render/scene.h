@@ -27,6 +27,7 @@
 #include "materials/emissivity_tables.h"
 #include "materials/material.h"
 #include "materials/surface_shader.h"
+#include "media/medium.h"
 #include "render/scene_description.h"
 
 namespace kiln {
@@ -46,6 +47,8 @@ struct SceneOverrides {
     // measure what the choices save: texture footprints at every hit, AOV work for every
     // camera ray.
     bool genericFootprints = false, genericAOVs = false;
+    // Volumetric path tracing even when the scene has no media (kiln --generic volpath)
+    bool genericVolumes = false;
     // kiln --stokes: the film records Stokes layers (Film "bool stokes" true).
     bool stokes = false;
 };
@@ -60,6 +63,8 @@ enum class LightStrategy { MIS, LightOnly, BSDFOnly };
 enum class LightSelection { BVH, Power, Uniform, Area };
 
 struct PathIntegratorSettings {
+    // pbrt-v4's "volpath" (default; participating media) rather than "path" (media ignored)
+    bool volumetric = true;
     int maxDepth = 5;         // pbrt-v4 "maxdepth"
     bool regularize = false;  // pbrt-v4 "regularize"
     LightStrategy strategy = LightStrategy::MIS;
@@ -94,6 +99,10 @@ struct SceneFeatures {
     LightSelection lightSelection = LightSelection::BVH;
     bool areaLights = false, environmentLight = false;
     bool dispersion = false;  // wavelength-dependent IOR (terminates secondaries)
+    // Participating media: the integrator "volpath" runs VolPathIntegrator when the scene has
+    // media (or --generic volpath), PathIntegrator otherwise (media cost nothing when absent)
+    int media = 0, emissiveMedia = 0, thermalMedia = 0;
+    bool volumetric = false, genericVolumes = false;
     // Polarised transport (radiance.h): when the film records Stokes layers, the camera
     // carries a polariser or a material is a polarising filter; otherwise the unpolarised
     // variant runs
@@ -158,6 +167,9 @@ class Scene {
     std::vector<Light> lights;        // identified by index (SurfaceInteraction::lightIndex)
     std::vector<int> infiniteLights;  // indices into lights
     std::unique_ptr<LightSampler> lightSampler;
+    // Participating media, identified by index (MediumInterface); the camera's (-1: none)
+    std::vector<Medium> media;
+    int cameraMedium = -1;
     PathIntegratorSettings integrator;
     bool disablePixelJitter = false;
     // Camera "float polarizer" (kiln): a linear polariser in front of the film, its

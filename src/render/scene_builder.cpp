@@ -198,6 +198,7 @@ void SceneBuilder::Camera(const std::string& name, ParsedParameterVector params,
     scene.camera.parameters = Dict(std::move(params));
     scene.camera.loc = loc;
     scene.camera.cameraTransform = CameraTransform(worldFromCamera.t[0]);
+    scene.camera.medium = gs.currentOutsideMedium;
     scene.cameraGiven = true;
     renderFromWorld = scene.camera.cameraTransform.RenderFromWorld();
 }
@@ -208,13 +209,19 @@ void SceneBuilder::Sampler(const std::string& name, ParsedParameterVector params
     scene.sampler = SceneEntity(name, Dict(std::move(params)), loc);
 }
 
-void SceneBuilder::MakeNamedMedium(const std::string& name, ParsedParameterVector,
+void SceneBuilder::MakeNamedMedium(const std::string& name, ParsedParameterVector params,
                                    const FileLoc& loc) {
-    diag.Warn(loc, "participating media are not supported; medium '" + name + "' ignored");
+    if (!mediumNames.insert(name).second)
+        throw SceneError(loc, "redefinition of named medium '" + name + "'", name);
+    scene.media.emplace_back(
+        name, TransformedSceneEntity("", Dict(std::move(params), gs.mediumAttributes), loc,
+                                     RenderFromObject()));
 }
 
-void SceneBuilder::MediumInterface(const std::string&, const std::string&, const FileLoc& loc) {
-    diag.Warn(loc, "participating media are not supported; MediumInterface ignored");
+void SceneBuilder::MediumInterface(const std::string& insideName, const std::string& outsideName,
+                                   const FileLoc&) {
+    gs.currentInsideMedium = insideName;
+    gs.currentOutsideMedium = outsideName;
 }
 
 void SceneBuilder::WorldBegin(const FileLoc& loc) {
@@ -254,10 +261,9 @@ void SceneBuilder::Attribute(const std::string& target, ParsedParameterVector pa
         attributes = &gs.materialAttributes;
     else if (target == "texture")
         attributes = &gs.textureAttributes;
-    else if (target == "medium") {
-        diag.Warn(loc, "participating media are not supported; Attribute \"medium\" ignored");
-        return;
-    } else
+    else if (target == "medium")
+        attributes = &gs.mediumAttributes;
+    else
         throw SceneError(loc, "unknown Attribute target '" + target + "'", target);
     for (ParsedParameter& p : params) {
         p.mayBeUnused = true;
@@ -284,6 +290,8 @@ void SceneBuilder::Shape(const std::string& name, ParsedParameterVector params,
     shape.reverseOrientation = gs.reverseOrientation;
     shape.materialIndex = gs.currentMaterialIndex;
     shape.materialName = gs.currentMaterialName;
+    shape.insideMedium = gs.currentInsideMedium;
+    shape.outsideMedium = gs.currentOutsideMedium;
     if (!gs.areaLightName.empty()) {
         if (activeInstance) {
             diag.Warn(loc,

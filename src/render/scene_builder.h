@@ -100,7 +100,8 @@ class SceneBuilder : public ParserTarget {
         ParsedParameterVector areaLightParams;
         FileLoc areaLightLoc;
         ParsedParameterVector shapeAttributes, lightAttributes, materialAttributes,
-            textureAttributes;
+            textureAttributes, mediumAttributes;
+        std::string currentInsideMedium, currentOutsideMedium;  // MediumInterface
     };
 
     template <typename F>
@@ -126,7 +127,7 @@ class SceneBuilder : public ParserTarget {
     bool warnedAnimated = false;
     Float transformStartTime = 0, transformEndTime = 1;
     InstanceDefinitionSceneEntity* activeInstance = nullptr;
-    std::set<std::string> floatTextureNames, spectrumTextureNames, namedMaterialNames;
+    std::set<std::string> floatTextureNames, spectrumTextureNames, namedMaterialNames, mediumNames;
 };
 
 }  // namespace kiln

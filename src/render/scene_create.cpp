@@ -8,6 +8,7 @@
 #include "core/geometry/triangle.h"
 #include "render/scene.h"
 #include "render/scene_emitters.h"
+#include "render/scene_media.h"
 #include "spectral/color.h"
 #include "textures/basic_textures.h"
 #include "textures/texture_parameter_dictionary.h"
@@ -17,16 +18,11 @@ namespace kiln {
 namespace {
 
 // Camera, film, filter, sampler and the integrator's settings
-PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, bool given, Diagnostics& diag) {
+PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, Diagnostics& diag) {
     PathIntegratorSettings s;
-    if (e.name == "volpath") {
-        if (given)
-            diag.Warn(e.loc,
-                      "participating media are not supported: integrator \"volpath\" "
-                      "renders as \"path\"");
-    } else if (e.name != "path") {
-        diag.Warn(e.loc, "integrator \"" + e.name + "\" is not supported; using \"path\"");
-    }
+    if (e.name != "path" && e.name != "volpath")
+        diag.Warn(e.loc, "integrator \"" + e.name + "\" is not supported; using \"volpath\"");
+    s.volumetric = e.name != "path";
     s.maxDepth = e.parameters.GetOneInt("maxdepth", 5);
     if (s.maxDepth < 0) throw SceneError(e.parameters.Loc("maxdepth"), "maxdepth must be >= 0");
     s.regularize = e.parameters.GetOneBool("regularize", false);
@@ -109,8 +105,7 @@ void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const SceneOverri
     scene.sampler =
         Sampler::Create(desc.sampler.name, desc.sampler.parameters, scene.film->FullResolution(),
                         desc.sampler.loc, diag, overrides.samplesPerPixel, seed);
-    scene.integrator =
-        CreateIntegratorSettings(desc.integrator, desc.integrator.loc.line > 0, diag);
+    scene.integrator = CreateIntegratorSettings(desc.integrator, diag);
     scene.disablePixelJitter = desc.disablePixelJitter;
     if (desc.accelerator.name != "bvh" && desc.accelerator.name != "kdtree")
         diag.Warn(desc.accelerator.loc,
@@ -237,16 +232,18 @@ SceneMaterials CreateMaterials(SceneDescription& desc, const NamedTextures& text
     return materials;
 }
 
-// Shapes of one directive with their material and heat
+// Shapes of one directive with their material, heat and media
 struct SceneShapes {
     std::vector<Shape> shapes;
     ShapeHeat heat;
+    MediumInterface media;
 };
 
 SceneShapes CreateShapes(ShapeSceneEntity& s, const NamedTextures& textures,
-                         const SceneMaterials& materials, ThermalEmitters& emitters,
-                         ObjectArena& arena, Diagnostics& diag) {
+                         const SceneMaterials& materials, const MediumIndices& media,
+                         ThermalEmitters& emitters, ObjectArena& arena, Diagnostics& diag) {
     SceneShapes result;
+    result.media = ShapeMedia(s, media);
     TextureParameterDictionary params(&s.parameters, &textures);
     ThermalProperties own = ReadThermalProperties(params, s.name == "trianglemesh", arena);
     const kiln::Transform* renderFromObject = arena.New<kiln::Transform>(s.renderFromObject);
@@ -305,12 +302,12 @@ void PreprocessLights(Scene& scene) {
 void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<SceneShapes>& shapes,
                      const std::vector<std::vector<int>>& shapeLights,
                      const NamedTextures& textures, const SceneMaterials& materials,
-                     ThermalEmitters& emitters, Diagnostics& diag) {
+                     const MediumIndices& media, ThermalEmitters& emitters, Diagnostics& diag) {
     scene.aggregate = std::make_unique<kiln::Accelerator>();
     for (size_t i = 0; i < desc.shapes.size(); ++i) {
         if (shapes[i].shapes.empty()) continue;
         scene.aggregate->Add(shapes[i].shapes, shapes[i].heat.material, shapeLights[i],
-                             shapes[i].heat.emission);
+                             shapes[i].heat.emission, shapes[i].media);
         scene.shapeCount += int(shapes[i].shapes.size());
     }
     std::map<std::string, int> definitionIds;
@@ -321,10 +318,11 @@ void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<Sce
             int id = scene.aggregate->NewInstanceDefinition();
             for (ShapeSceneEntity& s : def.shapes) {
                 SceneShapes defShapes =
-                    CreateShapes(s, textures, materials, emitters, scene.arena, diag);
+                    CreateShapes(s, textures, materials, media, emitters, scene.arena, diag);
                 if (!defShapes.shapes.empty())
                     scene.aggregate->AddToInstanceDefinition(
-                        id, defShapes.shapes, defShapes.heat.material, defShapes.heat.emission);
+                        id, defShapes.shapes, defShapes.heat.material, defShapes.heat.emission,
+                        defShapes.media);
             }
             it = definitionIds.emplace(inst.name, id).first;
         }
@@ -392,6 +390,13 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
     f.fixedPixelCenter = scene.disablePixelJitter;
     f.polarized = scene.emissivityTables->polarized;  // decided in Scene::Create
     f.lightSelection = scene.integrator.lightSelection;
+    f.media = int(scene.media.size());
+    for (const Medium& m : scene.media) {
+        f.emissiveMedia += m.IsEmissive();
+        f.thermalMedia += m.IsThermal();
+    }
+    f.genericVolumes = overrides.genericVolumes;
+    f.volumetric = scene.integrator.volumetric && (f.media > 0 || overrides.genericVolumes);
     f.areaLights = !desc.areaLights.empty();
     f.environmentLight = !scene.infiniteLights.empty();
     auto dispersive = [](const ParameterDictionary& p) {
@@ -421,19 +426,28 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverride
     CreateCameraAndFilm(*scene, desc, overrides, diag);
     NamedTextures& textures = CreateTextures(desc, overrides, *scene, diag);
     SceneMaterials materials = CreateMaterials(desc, textures, scene->arena, diag);
+    MediumIndices media = CreateMedia(
+        desc, textures, [&](const ShapeSceneEntity& s) { return materials.Of(s); },
+        overrides.emission, scene->media, scene->arena, diag);
+    scene->cameraMedium = MediumIndex(desc.camera.medium, media, desc.camera.loc);
     scene->emissivityTables = std::make_unique<EmissivityTables>();
     scene->emissivityTables->polarized = NeedsPolarization(*scene, materials);
     ThermalEmitters emitters(*scene->shader, *scene->emissivityTables, scene->arena, diag,
                              overrides.emission, scene->integrator.emitterPowerSampling);
     std::vector<SceneShapes> shapes;
     for (ShapeSceneEntity& s : desc.shapes)
-        shapes.push_back(CreateShapes(s, textures, materials, emitters, scene->arena, diag));
+        shapes.push_back(CreateShapes(s, textures, materials, media, emitters, scene->arena, diag));
     std::vector<std::vector<int>> shapeLights = CreateLights(*scene, desc, shapes, emitters, diag);
-    CreateAggregate(*scene, desc, shapes, shapeLights, textures, materials, emitters, diag);
+    CreateAggregate(*scene, desc, shapes, shapeLights, textures, materials, media, emitters, diag);
     PreprocessLights(*scene);
     CreateLightSampler(*scene);
     scene->features = DecideFeatures(*scene, desc, shapes, materials, emitters, overrides);
-    if (scene->lights.empty() && !scene->features.thermalEmission)
+    if (!scene->integrator.volumetric && !scene->media.empty())
+        diag.Warn(desc.integrator.loc,
+                  "integrator \"path\" ignores participating media (as pbrt-v4); use "
+                  "\"volpath\"");
+    if (scene->lights.empty() && !scene->features.thermalEmission &&
+        !(scene->features.volumetric && scene->features.emissiveMedia > 0))
         diag.Warn(FileLoc(), "the scene has no lights; the image will be black");
     return scene;
 }

@@ -40,17 +40,20 @@ struct TransformedSceneEntity : SceneEntity {
 
 struct CameraSceneEntity : SceneEntity {
     CameraTransform cameraTransform;
+    std::string medium;  // the medium the camera is in ("": none)
 };
 
 // A Shape directive with the graphics state it was written in. The material is either an
 // anonymous one (materialIndex into SceneDescription::materials) or a named one
 // (materialName); areaLightIndex indexes SceneDescription::areaLights (-1: none).
+// insideMedium and outsideMedium name the media of the MediumInterface in effect ("": none).
 struct ShapeSceneEntity : SceneEntity {
     Transform renderFromObject;
     bool reverseOrientation = false;
     int materialIndex = -1;
     std::string materialName;
     int areaLightIndex = -1;
+    std::string insideMedium, outsideMedium;
 };
 
 struct TextureSceneEntity : TransformedSceneEntity {
@@ -81,6 +84,8 @@ struct SceneDescription {
     std::vector<std::pair<std::string, SceneEntity>> namedMaterials;  // in file order
     std::vector<SceneEntity> materials;                               // anonymous
     std::vector<std::pair<std::string, TextureSceneEntity>> floatTextures, spectrumTextures;
+    // MakeNamedMedium, in file order: name and the medium (its type in "string type")
+    std::vector<std::pair<std::string, TransformedSceneEntity>> media;
     std::vector<TransformedSceneEntity> lights;
     std::vector<TransformedSceneEntity> areaLights;  // one per shape that has one
     std::vector<ShapeSceneEntity> shapes;

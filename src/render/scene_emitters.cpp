@@ -62,6 +62,13 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
                   "temperature is ignored");
         return heat;
     }
+    if (model == EmissionModel::Kirchhoff && material->InteriorEta()) {
+        // A dielectric surface absorbs nothing: the body glows from its interior medium
+        diag.Warn(entity.loc,
+                  "a hot dielectric surface absorbs nothing and so emits nothing; the body "
+                  "glows from a hot interior medium (MediumInterface, medium \"temperature\")");
+        return heat;
+    }
 #if KILN_THERMAL_EMISSION
     // Approach A: a black surface that only emits
     if (model == EmissionModel::Diffuse) heat.material = Black();

@@ -127,13 +127,34 @@ TEST(SceneBuilderTest, MalformedStructureIsAnErrorWithItsLocation) {
               std::string::npos);
 }
 
-TEST(SceneBuilderTest, MediaAreReportedAsUnsupported) {
+TEST(SceneBuilderTest, MediaAndMediumInterfacesAreRecorded) {
     Diagnostics diag(nullptr);
-    Describe(
-        "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\nWorldBegin\n"
-        "MediumInterface \"fog\" \"\"\n",
+    SceneDescription d = Describe(
+        "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+        "MediumInterface \"\" \"fog\"\nCamera \"perspective\"\nWorldBegin\n"
+        "AttributeBegin MediumInterface \"glass\" \"fog\" Shape \"sphere\" AttributeEnd\n"
+        "Shape \"sphere\"\nMediumInterface \"fog\"\nShape \"sphere\"\n",
         &diag);
-    EXPECT_EQ(diag.WarningCount(), 2);
+    EXPECT_EQ(diag.WarningCount(), 0);
+    ASSERT_EQ(d.media.size(), 1u);
+    EXPECT_EQ(d.media[0].first, "fog");
+    EXPECT_EQ(d.media[0].second.parameters.GetOneString("type", ""), "homogeneous");
+    EXPECT_EQ(d.camera.medium, "fog");  // the outside medium when the camera is declared
+    ASSERT_EQ(d.shapes.size(), 3u);
+    EXPECT_EQ(d.shapes[0].insideMedium, "glass");
+    EXPECT_EQ(d.shapes[0].outsideMedium, "fog");
+    EXPECT_EQ(d.shapes[1].insideMedium, "");  // restored by AttributeEnd
+    EXPECT_EQ(d.shapes[1].outsideMedium, "fog");
+    EXPECT_EQ(d.shapes[2].insideMedium, "fog");  // one name: both sides
+    EXPECT_EQ(d.shapes[2].outsideMedium, "fog");
+}
+
+TEST(SceneBuilderTest, RedefiningAMediumIsAnError) {
+    Diagnostics diag(nullptr);
+    EXPECT_THROW(Describe("MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+                          "MakeNamedMedium \"fog\" \"string type\" \"cloud\"\n",
+                          &diag),
+                 SceneError);
 }
 
 }  // namespace

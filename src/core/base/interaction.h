@@ -14,6 +14,16 @@ class TriangleMesh;
 // Shadow rays stop this fraction short of their target so they do not hit the target itself.
 inline constexpr Float ShadowEpsilon = 0.0001f;
 
+// The participating media on the two sides of a surface, by index into the scene's media (-1:
+// none): inside is the side the geometric normal points away from. A surface with the same
+// medium on both sides is no boundary; rays crossing it keep the medium they are in.
+struct MediumInterface {
+    int inside = -1, outside = -1;
+    MediumInterface() = default;
+    MediumInterface(int inside, int outside) : inside(inside), outside(outside) {}
+    bool IsTransition() const { return inside != outside; }
+};
+
 struct Interaction {
     Point3f p;       // render-space position
     Normal3f n;      // geometric normal (zero for points not on a surface)
@@ -65,6 +75,8 @@ struct SurfaceInteraction : Interaction {
     const TriangleMesh* mesh = nullptr;
     int triIndex = 0;
     std::array<Float, 3> b = {0, 0, 0};
+    // The media the surface separates (a transition), or none
+    MediumInterface mediumInterface;
 
     SurfaceInteraction() = default;
     // pbrt-v4 convention: n = normalize(cross(dpdu, dpdv)), flipped when flipNormal is true
@@ -80,6 +92,12 @@ struct SurfaceInteraction : Interaction {
         shading.n = n;
         shading.dpdu = dpdu, shading.dpdv = dpdv;
         shading.dndu = dndu, shading.dndv = dndv;
+    }
+    // The medium a ray leaving the surface in direction w travels in, when the ray arriving at
+    // it was in medium current.
+    int MediumAfter(Vector3f w, int current) const {
+        if (!mediumInterface.IsTransition()) return current;
+        return Dot(w, n) > 0 ? mediumInterface.outside : mediumInterface.inside;
     }
     // Sets the shading frame; the geometric normal is flipped to the shading normal's side
     // when orientationIsAuthoritative, otherwise the shading normal follows the geometric one.

@@ -25,6 +25,7 @@ struct GeomRecord {
     const Material* material = nullptr;
     std::vector<int> lights;  // primID -> index of the light in the scene's list; empty: none
     const ThermalEmission* thermal = nullptr;
+    MediumInterface media;
     Transform renderFromInstance;  // Instance
 };
 
@@ -109,13 +110,14 @@ struct Accelerator::Impl {
         s.records.push_back(std::move(rec));
     }
     void AddShapes(SceneBVH& s, std::span<const Shape> shapes, const Material* material,
-                   std::span<const int> areaLights, const ThermalEmission* thermal);
+                   std::span<const int> areaLights, const ThermalEmission* thermal,
+                   MediumInterface media);
 };
 
 // Adding shapes
 void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
                                   const Material* material, std::span<const int> areaLights,
-                                  const ThermalEmission* thermal) {
+                                  const ThermalEmission* thermal, MediumInterface media) {
     primitives += shapes.size();
     bool haveLights = !areaLights.empty();
     // Triangles grouped by mesh (first-seen order), everything else as one user geometry.
@@ -140,6 +142,7 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
         rec->mesh = mesh;
         rec->material = material;
         rec->thermal = thermal;
+        rec->media = media;
         // All of the mesh's triangles in order (the usual case): Embree shares the mesh's
         // index buffer and no per-triangle index is kept
         bool identity = int(idx.size()) == mesh->nTriangles;
@@ -178,6 +181,7 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
         rec->kind = GeomRecord::Kind::User;
         rec->material = material;
         rec->thermal = thermal;
+        rec->media = media;
         for (size_t i : others) {
             rec->shapes.push_back(shapes[i]);
             if (haveLights) rec->lights.push_back(areaLights[i]);
@@ -216,10 +220,11 @@ Accelerator::~Accelerator() {
 }
 
 void Accelerator::Add(std::span<const Shape> shapes, const Material* material,
-                      std::span<const int> lightIndices, const ThermalEmission* thermal) {
+                      std::span<const int> lightIndices, const ThermalEmission* thermal,
+                      MediumInterface media) {
     if (!lightIndices.empty() && lightIndices.size() != shapes.size())
         throw std::invalid_argument("Accelerator::Add: need one light per shape or none");
-    impl->AddShapes(impl->top, shapes, material, lightIndices, thermal);
+    impl->AddShapes(impl->top, shapes, material, lightIndices, thermal, media);
 }
 
 int Accelerator::NewInstanceDefinition() {
@@ -228,9 +233,9 @@ int Accelerator::NewInstanceDefinition() {
 }
 
 void Accelerator::AddToInstanceDefinition(int definition, std::span<const Shape> shapes,
-                                          const Material* material,
-                                          const ThermalEmission* thermal) {
-    impl->AddShapes(impl->definitions.at(definition), shapes, material, {}, thermal);
+                                          const Material* material, const ThermalEmission* thermal,
+                                          MediumInterface media) {
+    impl->AddShapes(impl->definitions.at(definition), shapes, material, {}, thermal, media);
 }
 
 void Accelerator::AddInstance(int definition, const Transform& renderFromInstance) {
@@ -327,6 +332,7 @@ std::optional<ShapeIntersection> Accelerator::Intersect(const Ray& ray, Float tM
     si.intr.material = rec->material;
     si.intr.lightIndex = rec->lights.empty() ? -1 : rec->lights[prim];
     si.intr.thermal = rec->thermal;
+    si.intr.mediumInterface = rec->media;
     return si;
 }
 

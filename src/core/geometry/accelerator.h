@@ -40,16 +40,19 @@ class Accelerator {
     Accelerator& operator=(const Accelerator&) = delete;
 
     // The shapes of one Shape directive with their material (nullptr = interface), the indices
-    // of their lights in the scene's light list (empty, or one per shape in the same order) and
-    // their thermal emission (nullptr when cold). Shapes, materials and emission must outlive
-    // the accelerator; hits report them in SurfaceInteraction.
+    // of their lights in the scene's light list (empty, or one per shape in the same order),
+    // their thermal emission (nullptr when cold) and the media they separate. Shapes,
+    // materials and emission must outlive the accelerator; hits report them in
+    // SurfaceInteraction.
     void Add(std::span<const Shape> shapes, const Material* material,
-             std::span<const int> lightIndices, const ThermalEmission* thermal);
+             std::span<const int> lightIndices, const ThermalEmission* thermal,
+             MediumInterface media = {});
     // Object instancing: a definition's shapes are given in the definition's own space (they
     // can glow, but are no lights).
     int NewInstanceDefinition();
     void AddToInstanceDefinition(int definition, std::span<const Shape> shapes,
-                                 const Material* material, const ThermalEmission* thermal);
+                                 const Material* material, const ThermalEmission* thermal,
+                                 MediumInterface media = {});
     void AddInstance(int definition, const Transform& renderFromInstance);
     // Builds the BVHs; call once after everything has been added.
     void Commit();

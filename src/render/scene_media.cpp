@@ -1,0 +1,52 @@
+#include "render/scene_media.h"
+
+namespace kiln {
+
+MediumIndices CreateMedia(SceneDescription& desc, const NamedTextures& textures,
+                          const std::function<const Material*(const ShapeSceneEntity&)>& materialOf,
+                          std::optional<EmissionModel> modelOverride, std::vector<Medium>& media,
+                          ObjectArena& arena, Diagnostics& diag) {
+    MediumIndices indices;
+    for (auto& [name, e] : desc.media) {
+        std::string type = e.parameters.GetOneString("type", "");
+        if (type.empty())
+            throw SceneError(
+                e.loc, "MakeNamedMedium \"" + name + "\" needs a \"string type\" parameter", name);
+        TextureParameterDictionary params(&e.parameters, &textures);
+        indices[name] = int(media.size());
+        media.push_back(
+            Medium::Create(type, params, e.renderFromObject, modelOverride, e.loc, arena, diag));
+        e.parameters.ReportUnused(diag);
+    }
+    // Refractive indices of the bodies the media fill
+    std::vector<const ShapeSceneEntity*> boundedBy(media.size(), nullptr);
+    auto visit = [&](const ShapeSceneEntity& s) {
+        auto it = indices.find(s.insideMedium);
+        if (it == indices.end() || s.insideMedium == s.outsideMedium) return;
+        std::optional<Spectrum> eta = materialOf(s)->InteriorEta();
+        if (!eta) return;
+        const ShapeSceneEntity*& first = boundedBy[size_t(it->second)];
+        if (!first) {
+            first = &s;
+            media[size_t(it->second)].SetRefractiveIndex(*eta);
+        } else if (materialOf(*first) != materialOf(s)) {
+            diag.Warn(s.loc, "medium '" + s.insideMedium +
+                                 "' fills bodies of different materials; its thermal emission "
+                                 "uses the refractive index of the first, at " +
+                                 first->loc.ToString());
+        }
+    };
+    for (const ShapeSceneEntity& s : desc.shapes) visit(s);
+    for (const auto& [name, def] : desc.instanceDefinitions)
+        for (const ShapeSceneEntity& s : def.shapes) visit(s);
+    return indices;
+}
+
+int MediumIndex(const std::string& name, const MediumIndices& media, const FileLoc& loc) {
+    if (name.empty()) return -1;
+    auto it = media.find(name);
+    if (it == media.end()) throw SceneError(loc, "medium '" + name + "' not defined", name);
+    return it->second;
+}
+
+}  // namespace kiln

@@ -1,0 +1,307 @@
+// Volumetric path tracing (pbrt-v4's VolPathIntegrator): the path integrator with
+// participating media.
+//
+// Distances in a medium are sampled by delta tracking against majorants (Medium::SampleT_maj),
+// each tentative collision absorbing, scattering or passing on (null collision) with
+// probabilities sigma_a, sigma_s and sigma_n = sigma_maj - sigma_t over sigma_maj of the hero
+// wavelength. The other wavelengths follow with weights, and rescaled path probabilities r_u
+// (unidirectional) and r_l (light sampling) combine the wavelengths and the two strategies in
+// one spectral MIS estimate (Miller, Georgiev & Jarosz 2019). Shadow rays pass through
+// interface surfaces and estimate transmittance by ratio tracking. Media emit at every
+// tentative collision (sigma_a Le, or thermal emission: medium_emission.h). Surfaces are
+// handled as in PathIntegrator: emission computed from the BSDF at the hit.
+//
+// Scenes without media run PathIntegrator (renderer.cpp); kiln --generic volpath runs this
+// one anyway, for comparisons.
+#pragma once
+
+#include <optional>
+
+#include "core/base/rng.h"
+#include "core/camera/sampler.h"
+#include "materials/bxdfs/hg_phase_function.h"
+#include "render/radiance.h"
+#include "render/scene.h"
+
+namespace kiln {
+
+template <typename RadianceType>
+class VolPathIntegrator {
+  public:
+    using Radiance = RadianceType;
+    using Spectrum = typename Radiance::Spectrum;
+    using Throughput = typename Radiance::Throughput;
+
+    VolPathIntegrator(const Scene& scene, PathIntegratorSettings settings)
+        : scene(scene), settings(settings) {}
+
+    // As PathIntegrator::Li; the camera ray starts in the camera's medium.
+    Spectrum Li(Ray ray, SampledWavelengths& lambda, Sampler& sampler,
+                VisibleSurface* visibleSurface) const {
+        Spectrum L{};
+        Throughput beta = Radiance::One();
+        SampledSpectrum r_u(1.f), r_l(1.f);
+        bool specularBounce = false, anyNonSpecularBounces = false;
+        int depth = 0;
+        Float etaScale = 1;
+        LightSampleContext prevContext;
+        int medium = scene.cameraMedium;
+        const int maxDepth = settings.maxDepth;
+
+        while (true) {
+            std::optional<ShapeIntersection> si = scene.aggregate->Intersect(ray, Infinity);
+            if (medium >= 0) {
+                // Sample the medium up to the surface hit (or forever)
+                bool scattered = false, terminated = false;
+                Float tMax = si ? si->tHit : Infinity;
+                RNG rng(Hash(sampler.Get1D()), Hash(sampler.Get1D()));
+                SampledSpectrum T_maj = scene.media[size_t(medium)].SampleT_maj(
+                    ray, tMax, sampler.Get1D(), rng, lambda,
+                    [&](Point3f p, const MediumProperties& mp, const SampledSpectrum& sigma_maj,
+                        const SampledSpectrum& T_maj) {
+                        if (!beta) {
+                            terminated = true;
+                            return false;
+                        }
+                        // Emission at the tentative collision
+                        if (depth < maxDepth && mp.emission) {
+                            Float pdf = sigma_maj[0] * T_maj[0];
+                            SampledSpectrum r_e = r_u * sigma_maj * T_maj / pdf;
+                            if (r_e)
+                                L += Radiance::Apply(
+                                    beta * (T_maj / pdf),
+                                    Radiance::Unpolarized(mp.emission / r_e.Average()));
+                        }
+                        // Absorption, real scattering or a null collision
+                        Float pAbsorb = mp.sigma_a[0] / sigma_maj[0];
+                        Float pScatter = mp.sigma_s[0] / sigma_maj[0];
+                        Float um = rng.UniformFloat();
+                        if (um < pAbsorb) {
+                            terminated = true;
+                            return false;
+                        }
+                        if (um < pAbsorb + pScatter) {
+                            if (depth++ >= maxDepth) {
+                                terminated = true;
+                                return false;
+                            }
+                            Float pdf = T_maj[0] * mp.sigma_s[0];
+                            beta = beta * (T_maj * mp.sigma_s / pdf);
+                            r_u *= T_maj * mp.sigma_s / pdf;
+                            if (!beta || !r_u) return false;
+                            // Direct light at the scattering point, then a new direction
+                            Vector3f wo = -ray.d;
+                            HGPhaseFunction phase(mp.g);
+                            if (settings.strategy != LightStrategy::BSDFOnly)
+                                L += SampleLd(Interaction(p, Normal3f(), Point2f(), wo, ray.time),
+                                              nullptr, &phase, medium, lambda, sampler, beta, r_u);
+                            std::optional<PhaseFunctionSample> ps =
+                                phase.Sample_p(wo, sampler.Get2D());
+                            if (!ps || ps->pdf == 0) {
+                                terminated = true;
+                                return false;
+                            }
+                            beta = beta * Radiance::Depolarizing(SampledSpectrum(ps->p / ps->pdf));
+                            r_l = r_u / ps->pdf;
+                            prevContext = LightSampleContext(Interaction(p, Normal3f(), Point2f()));
+                            scattered = true;
+                            ray = Ray(p, ps->wi, ray.time);
+                            specularBounce = false;
+                            anyNonSpecularBounces = true;
+                            return false;
+                        }
+                        // Null collision
+                        SampledSpectrum sigma_n = ClampZero(sigma_maj - mp.sigma_a - mp.sigma_s);
+                        Float pdf = T_maj[0] * sigma_n[0];
+                        if (pdf == 0) {
+                            beta = Throughput{};
+                            return false;
+                        }
+                        beta = beta * (T_maj * sigma_n / pdf);
+                        r_u *= T_maj * sigma_n / pdf;
+                        r_l *= T_maj * sigma_maj / pdf;
+                        return bool(beta) && bool(r_u);
+                    });
+                if (terminated || !beta || !r_u) return L;
+                if (scattered) continue;
+                if (T_maj[0] == 0) return L;
+                beta = beta * (T_maj / T_maj[0]);
+                r_u *= T_maj / T_maj[0];
+                r_l *= T_maj / T_maj[0];
+            }
+
+            // Escaped rays: emission from infinite lights
+            if (!si) {
+                for (int index : scene.infiniteLights) {
+                    const Light& light = scene.lights[size_t(index)];
+                    SampledSpectrum Le = light.Le(ray, lambda);
+                    if (!Le) continue;
+                    Float w = EmissionWeight(depth == 0 || specularBounce, index, ray.d,
+                                             prevContext, r_u, r_l);
+                    L += Radiance::Apply(beta, Radiance::Unpolarized(Le * w));
+                }
+                break;
+            }
+            SurfaceInteraction& isect = si->intr;
+
+            // The BSDF at the hit; emission computed from it
+            BSDF bsdf = scene.GetBSDF(isect, lambda);
+            if (Spectrum Le = scene.SurfaceLe<Spectrum>(isect, bsdf, -ray.d, lambda)) {
+                bool whole = depth == 0 || specularBounce || isect.lightIndex < 0;
+                Float w = EmissionWeight(whole, isect.lightIndex, ray.d, prevContext, r_u, r_l);
+                L += Radiance::Apply(beta, Le * w);
+            }
+            // Medium boundaries without a material are crossed
+            if (!bsdf) {
+                medium = isect.MediumAfter(ray.d, medium);
+                ray = isect.SpawnRay(ray.d);
+                continue;
+            }
+            if (depth == 0 && visibleSurface)
+                *visibleSurface = scene.MakeVisibleSurface(isect, bsdf, lambda);
+            if (depth++ >= maxDepth) return L;
+            if (settings.regularize && anyNonSpecularBounces) bsdf.Regularize();
+
+            // Direct lighting by light sampling
+            if (IsNonSpecular(bsdf.Flags()) && settings.strategy != LightStrategy::BSDFOnly)
+                L += SampleLd(isect, &bsdf, nullptr, medium, lambda, sampler, beta, r_u);
+            prevContext = LightSampleContext(isect);
+
+            // Continue by sampling the BSDF
+            Vector3f wo = isect.wo;
+            Float u = sampler.Get1D();
+            std::optional<BSDFSampleOf<Throughput>> bs =
+                bsdf.Sample_f<Throughput>(wo, u, sampler.Get2D());
+            if (!bs || bs->pdf == 0 || !bs->f) break;
+            beta = beta * (bs->f * (AbsDot(bs->wi, isect.shading.n) / bs->pdf));
+            r_l = r_u / (bs->pdfIsProportional ? bsdf.PDF(wo, bs->wi) : bs->pdf);
+            specularBounce = bs->IsSpecular();
+            anyNonSpecularBounces |= !bs->IsSpecular();
+            if (bs->IsTransmission()) etaScale *= Sqr(bs->eta);
+            medium = isect.MediumAfter(bs->wi, medium);
+            ray = isect.SpawnRay(bs->wi);
+
+            // Russian roulette
+            if (!beta) break;
+            Float rrBeta = Radiance::RouletteWeight(beta) * etaScale / r_u.Average();
+            Float uRR = sampler.Get1D();
+            if (rrBeta < 1 && depth > 1) {
+                Float q = std::max<Float>(0, 1 - rrBeta);
+                if (uRR < q) break;
+                beta = beta / (1 - q);
+            }
+        }
+        return L;
+    }
+
+  private:
+    // The factor of emission found by path sampling: 1 / r_u when light sampling could not
+    // have found it (whole), else the spectral MIS weight against light sampling (pbrt-v4's
+    // 1 / (r_u + r_l p_l)); per LightStrategy for comparisons.
+    Float EmissionWeight(bool whole, int lightIndex, Vector3f d, const LightSampleContext& ctx,
+                         const SampledSpectrum& r_u, const SampledSpectrum& r_l) const {
+        if (whole || settings.strategy == LightStrategy::BSDFOnly) return 1 / r_u.Average();
+        const Light& light = scene.lights[size_t(lightIndex)];
+        Float p_l = scene.lightSampler->PMF(ctx, lightIndex) * light.PDF_Li(ctx, d, true);
+        if (settings.strategy == LightStrategy::LightOnly) return p_l > 0 ? 0 : 1 / r_u.Average();
+        return 1 / (r_u + r_l * p_l).Average();
+    }
+
+    // One light sample at a surface (bsdf) or a point in a medium (phase), weighted by spectral
+    // MIS; transmittance through media by ratio tracking, across interface surfaces.
+    Spectrum SampleLd(const Interaction& intr, const BSDF* bsdf, const HGPhaseFunction* phase,
+                      int medium, const SampledWavelengths& lambda, Sampler& sampler,
+                      const Throughput& beta, const SampledSpectrum& r_p) const {
+        const auto* surface = bsdf ? static_cast<const SurfaceInteraction*>(&intr) : nullptr;
+        LightSampleContext ctx = surface ? LightSampleContext(*surface) : LightSampleContext(intr);
+        if (bsdf) {
+            BxDFFlags flags = bsdf->Flags();
+            if (IsReflective(flags) && !IsTransmissive(flags))
+                ctx.p = intr.OffsetRayOrigin(intr.wo);
+            else if (IsTransmissive(flags) && !IsReflective(flags))
+                ctx.p = intr.OffsetRayOrigin(-intr.wo);
+        }
+        Float uLight = sampler.Get1D();
+        Point2f uPoint = sampler.Get2D();
+        std::optional<SampledLight> sampled = scene.lightSampler->Sample(ctx, uLight);
+        if (!sampled) return {};
+        const Light& light = scene.lights[size_t(sampled->index)];
+        std::optional<LightLiSample> ls = light.SampleLiDeferred(ctx, uPoint, lambda, true);
+        if (!ls || ls->pdf == 0 || (!ls->deferredL && !ls->L)) return {};
+        Float p_l = sampled->p * ls->pdf;
+
+        // The BSDF or phase function towards the light
+        Vector3f wo = intr.wo, wi = ls->wi;
+        Throughput f_hat;
+        Float scatterPDF;
+        if (bsdf) {
+            Float cosTheta = AbsDot(wi, surface->shading.n);
+            if (cosTheta == 0) return {};
+            f_hat = bsdf->f<Throughput>(wo, wi) * cosTheta;
+            scatterPDF = bsdf->PDF(wo, wi);
+        } else {
+            Float p = phase->p(wo, wi);
+            f_hat = Radiance::Depolarizing(SampledSpectrum(p));
+            scatterPDF = phase->PDF(wo, wi);
+        }
+        if (!f_hat) return {};
+
+        // Transmittance to the light
+        Ray lightRay = intr.SpawnRayTo(ls->pLight);
+        if (surface) medium = surface->MediumAfter(lightRay.d, medium);
+        SampledSpectrum T_ray(1.f), r_l(1.f), r_u(1.f);
+        RNG rng(Hash(lightRay.o), Hash(lightRay.d));
+        for (int crossings = 0;; ++crossings) {
+            std::optional<ShapeIntersection> si =
+                scene.aggregate->Intersect(lightRay, 1 - ShadowEpsilon);
+            if (si && si->intr.material && !si->intr.material->IsInterface()) return {};
+            if (medium >= 0) {
+                Float tMax = si ? si->tHit : 1 - ShadowEpsilon;
+                SampledSpectrum T_maj = scene.media[size_t(medium)].SampleT_maj(
+                    lightRay, tMax, rng.UniformFloat(), rng, lambda,
+                    [&](Point3f, const MediumProperties& mp, const SampledSpectrum& sigma_maj,
+                        const SampledSpectrum& T_maj) {
+                        // Ratio tracking, with Russian roulette on small transmittance
+                        SampledSpectrum sigma_n = ClampZero(sigma_maj - mp.sigma_a - mp.sigma_s);
+                        Float pdf = T_maj[0] * sigma_maj[0];
+                        T_ray *= T_maj * sigma_n / pdf;
+                        r_l *= T_maj * sigma_maj / pdf;
+                        r_u *= T_maj * sigma_n / pdf;
+                        SampledSpectrum Tr = T_ray / (r_l + r_u).Average();
+                        if (Tr.MaxComponentValue() < 0.05f) {
+                            if (rng.UniformFloat() < 0.75f)
+                                T_ray = SampledSpectrum(0.f);
+                            else
+                                T_ray /= 0.25f;
+                        }
+                        return bool(T_ray);
+                    });
+                if (T_maj[0] == 0) return {};
+                T_ray *= T_maj / T_maj[0];
+                r_l *= T_maj / T_maj[0];
+                r_u *= T_maj / T_maj[0];
+            }
+            if (!T_ray) return {};
+            if (!si) break;
+            // Past an interface surface; a path through thousands of them is treated as blocked
+            if (crossings == kMaxInterfaceCrossings) return {};
+            medium = si->intr.MediumAfter(lightRay.d, medium);
+            lightRay = si->intr.SpawnRayTo(ls->pLight);
+        }
+
+        Spectrum Li = light.DeferredL<Spectrum>(*ls, lambda);
+        if (!Li) return {};
+        r_l *= r_p * p_l;
+        r_u *= r_p * scatterPDF;
+        Spectrum contribution = Radiance::Apply(beta * f_hat, Li) * T_ray;
+        if (IsDeltaLight(light.Type()) || settings.strategy == LightStrategy::LightOnly)
+            return contribution / r_l.Average();
+        return contribution / (r_l + r_u).Average();
+    }
+
+    static constexpr int kMaxInterfaceCrossings = 1024;
+    const Scene& scene;
+    PathIntegratorSettings settings;
+};
+
+}  // namespace kiln
