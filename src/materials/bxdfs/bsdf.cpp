@@ -7,9 +7,8 @@ namespace kiln {
 BSDF::BSDF(Normal3f ns, Vector3f dpdus, const BxDF& bxdf, Normal3f ngeom)
     : bxdf(bxdf), valid(true) {
     Vector3f z = Normalize(Vector3f(ns));
-    // Fold when the BxDF only reflects and the shading normal is not the geometric one
-    BxDFFlags flags = bxdf.Flags();
-    if (ngeom != Normal3f(0, 0, 0) && IsReflective(flags) && !IsTransmissive(flags)) {
+    // Fold when the shading normal is not the geometric one
+    if (ngeom != Normal3f(0, 0, 0)) {
         Vector3f g = Normalize(Vector3f(ngeom));
         if (AbsDot(g, z) < 1 - 1e-6f) {
             fold = true;
@@ -39,10 +38,14 @@ Value BSDF::f(Vector3f woRender, Vector3f wiRender, TransportMode mode) const {
         return v;
     };
     if (!fold) return value(wiRender, wi);
-    if (!SameSide(woRender, wiRender) || wi.z == 0) return {};
-    Value f = value(wiRender, wi);
+    if (wi.z == 0) return {};
+    // wi gets what the BxDF sends to it and to its mirror image, from the lobe (reflection or
+    // transmission in the shading frame) that matches wi's side of the geometric surface
+    bool reflect = SameSide(woRender, wiRender);
+    Value f{};
+    if (SameHemisphere(wo, wi) == reflect) f = value(wiRender, wi);
     Vector3f miRender = Mirror(wiRender), mi = RenderToLocal(miRender);
-    if (SameHemisphere(wo, mi)) {
+    if (mi.z != 0 && SameHemisphere(wo, mi) == reflect) {
         Value fm = value(miRender, mi);
         if constexpr (polarized) fm = fm * FoldMueller(wiRender);
         f += fm * (AbsCosTheta(mi) / AbsCosTheta(wi));
@@ -64,11 +67,12 @@ std::optional<BSDFSampleOf<Value>> BSDF::Sample_f(Vector3f woRender, Float u, Po
     bs->wi = LocalToRender(bs->wi);
     if constexpr (polarized) bs->f = ToRenderFrames(bs->f, woRender, bs->wi, wo, wiLocal);
     if (!fold) return bs;
-    if (!SameSide(woRender, bs->wi)) {
+    bool reflect = SameHemisphere(wo, wiLocal);
+    if (SameSide(woRender, bs->wi) != reflect) {
         // Redirect to the mirror image, keeping the sample's weight f |cos| / pdf
         Vector3f w = Mirror(bs->wi);
         Float cosW = AbsCosTheta(RenderToLocal(w));
-        if (cosW == 0 || !SameSide(woRender, w)) return {};
+        if (cosW == 0 || SameSide(woRender, w) != reflect) return {};
         if constexpr (polarized) bs->f = bs->f * FoldMueller(w);
         bs->f = bs->f * (AbsCosTheta(RenderToLocal(bs->wi)) / cosW);
         bs->wi = w;
@@ -108,9 +112,12 @@ Float BSDF::PDF(Vector3f woRender, Vector3f wiRender, TransportMode mode,
     Vector3f wo = RenderToLocal(woRender), wi = RenderToLocal(wiRender);
     if (wo.z == 0) return 0;
     if (!fold) return bxdf.PDF(wo, wi, mode, sampleFlags);
-    if (!SameSide(woRender, wiRender)) return 0;
-    return bxdf.PDF(wo, wi, mode, sampleFlags) +
-           bxdf.PDF(wo, RenderToLocal(Mirror(wiRender)), mode, sampleFlags);
+    bool reflect = SameSide(woRender, wiRender);
+    Vector3f mi = RenderToLocal(Mirror(wiRender));
+    Float pdf = 0;
+    if (SameHemisphere(wo, wi) == reflect) pdf += bxdf.PDF(wo, wi, mode, sampleFlags);
+    if (SameHemisphere(wo, mi) == reflect) pdf += bxdf.PDF(wo, mi, mode, sampleFlags);
+    return pdf;
 }
 
 }  // namespace kiln

@@ -1,16 +1,21 @@
 // BSDF: a BxDF placed in the local shading frame of a surface point; converts directions
 // between render space and the shading frame (normal on +z).
 //
-// Opaque surfaces with shading normals (interpolated or bumped normals that differ from the
-// geometric normal ng): a reflection-only BxDF in the shading frame can send light to the
-// other side of the geometric surface, where pbrt-v4 lets it leak through. kiln folds such
-// directions back: a direction w on the wrong side of the surface is mirrored about the
-// geometric tangent plane, m(w) = w - 2 (w . ng) ng, so the BSDF becomes, on wo's side,
-//   f_fold(wo, wi) |wi . ns| = f(wo, wi) |wi . ns| + f(wo, m(wi)) |m(wi) . ns|
-// and zero on the other side. The directional albedo is unchanged (so Kirchhoff emission
+// Surfaces with shading normals (interpolated or bumped normals that differ from the
+// geometric normal ng): a BxDF's reflection lobe in the shading frame can send light to the
+// other side of the geometric surface (where pbrt-v4 lets it leak through an opaque surface),
+// and its transmission lobe can send light back to wo's side (so a refracted ray would not
+// enter the body, nor its medium). kiln folds such directions back: a direction w on the wrong
+// side of the surface for its lobe is mirrored about the geometric tangent plane,
+// m(w) = w - 2 (w . ng) ng, so the BSDF becomes
+//   f_fold(wo, wi) |wi . ns| = f(wo, wi) |wi . ns| + f(wo, m(wi)) |m(wi) . ns|,
+// each term counted only when its lobe matches wi's geometric side (reflection on wo's side,
+// transmission on the other). The directional albedo is unchanged (so Kirchhoff emission
 // 1 - albedo stays exact and a closed cavity stays in equilibrium), no light passes through an
-// opaque surface, and the same estimate holds for light and BSDF sampling (MIS). A deliberate
-// difference from pbrt-v4, visible only where shading and geometric normals differ strongly.
+// opaque surface, reflected light stays in its medium and refracted light enters the other
+// (n^2 B inside glass meets the 1 / eta^2 of refraction), and the same estimate holds for
+// light and BSDF sampling (MIS). A deliberate difference from pbrt-v4, visible only where
+// shading and geometric normals differ strongly.
 //
 // Polarised transport (Value = MuellerMatrix): f and Sample_f return Mueller matrices between
 // the implicit frames of render-space directions (spectral/polarization.h): light arriving
@@ -79,7 +84,7 @@ class BSDF {
     BxDF bxdf;
     Frame shadingFrame;
     Vector3f ng;        // geometric normal when folding, else zero
-    bool fold = false;  // opaque BxDF whose shading normal differs from the geometric one
+    bool fold = false;  // the shading normal differs from the geometric one
     bool valid = false;
 };
 
