@@ -113,19 +113,19 @@ GridMedium* GridMedium::Create(const TextureParameterDictionary& params,
         if (!(d >= 0) || !std::isfinite(d))
             throw SceneError(params.Loc("density"), "grid densities must be finite and >= 0",
                              std::to_string(d));
+    // "float temperature": one value per voxel is a grid (pbrt-v4's, or kiln's kelvin with
+    // "emission"); one value for several voxels is kiln's constant temperature
     SampledGrid<Float> temperature;
     if (params.TypeOf("temperature") == "float") {
         std::vector<Float> t = params.GetFloatArray("temperature");
-        // A grid of temperatures (pbrt-v4's, or kiln's with "emission"), else kiln's one value
-        if (t.size() > 1 || !params.Has("emission")) {
-            if (t.size() != density.size())
-                throw SceneError(params.Loc("temperature"),
-                                 "different number of samples (" + std::to_string(density.size()) +
-                                     " vs " + std::to_string(t.size()) +
-                                     ") provided for \"density\" and \"temperature\"",
-                                 "temperature");
-            temperature = SampledGrid<Float>(std::move(t), nx, ny, nz);
-        }
+        bool grid = t.size() == density.size() && (t.size() > 1 || !params.Has("emission"));
+        if (!grid && t.size() != 1)
+            throw SceneError(params.Loc("temperature"),
+                             "different number of samples (" + std::to_string(density.size()) +
+                                 " vs " + std::to_string(t.size()) +
+                                 ") provided for \"density\" and \"temperature\"",
+                             "temperature");
+        if (grid) temperature = SampledGrid<Float>(std::move(t), nx, ny, nz);
     }
     MediumCoefficients c = ReadMediumCoefficients(params, loc, diag);
     MediumEmission emission =

@@ -22,8 +22,8 @@ class GridMedium {
     // "density" (nx * ny * nz values, x fastest), "nx", "ny", "nz", "p0", "p1", the shared
     // coefficients, "Le" with "Lescale" (one value or one per voxel), "temperature" (one per
     // voxel: pbrt-v4's peak-normalised blackbody times "Lescale"; with kiln's "emission",
-    // kelvin) with "temperatureoffset" (or "temperaturecutoff") and "temperaturescale"; or,
-    // with "emission", kiln's one-value or textured "temperature".
+    // kelvin) with "temperatureoffset" (or "temperaturecutoff") and "temperaturescale"; or
+    // kiln's textured "temperature", or one value for a grid of several voxels.
     static GridMedium* Create(const TextureParameterDictionary& params,
                               const Transform& renderFromMedium,
                               std::optional<EmissionModel> modelOverride, const FileLoc& loc,

@@ -60,7 +60,9 @@ class Medium {
     // segment, and calls callback(p, MediumProperties, sigma_maj, T_maj) at each, T_maj being
     // the majorant transmittance since the previous one; the callback returns whether to go
     // on. Returns the majorant transmittance from the last collision to tMax (1 if stopped).
-    // u: the first uniform sample; rng supplies the rest.
+    // u: the first uniform sample; rng supplies the rest. A ray that makes kMaxCollisions
+    // tentative collisions (majorants far above the extinction, as hostile input can make
+    // them) ends there with transmittance 0 rather than hang.
     template <typename F>
     SampledSpectrum SampleT_maj(Ray ray, Float tMax, Float u, RNG& rng,
                                 const SampledWavelengths& lambda, F callback) const {
@@ -72,6 +74,7 @@ class Medium {
             [&](auto m) {
                 MajorantIterator iter = m->SampleRay(ray, tMax, lambda);
                 SampledSpectrum T_maj(1.f);
+                int collisions = 0;
                 while (std::optional<RayMajorantSegment> seg = iter.Next()) {
                     if (seg->sigma_maj[0] == 0) {
                         // No collisions here: only the transmittance of the other wavelengths
@@ -86,6 +89,7 @@ class Medium {
                             T_maj *= FastExpTransmittance(seg->tMax - tMin, seg->sigma_maj);
                             break;
                         }
+                        if (++collisions > kMaxCollisions) return SampledSpectrum(0.f);
                         T_maj *= FastExpTransmittance(t - tMin, seg->sigma_maj);
                         Point3f p = ray(t);
                         if (!callback(p, m->SamplePoint(p, lambda), seg->sigma_maj, T_maj))
@@ -98,6 +102,8 @@ class Medium {
             },
             kind);
     }
+
+    static constexpr int kMaxCollisions = 1 << 20;
 
   private:
     // exp(-dt sigma) per wavelength; an infinite segment with sigma 0 transmits everything.

@@ -141,8 +141,10 @@ std::array<int, 3> ReadGridResolution(const TextureParameterDictionary& params, 
                                       const std::string& what, const FileLoc& loc) {
     std::array<int, 3> res = {params.GetOneInt("nx", 1), params.GetOneInt("ny", 1),
                               params.GetOneInt("nz", 1)};
+    // In double: the product of three ints can overflow size_t, not a double's exact range
+    // for any n that fits in memory
     bool valid = res[0] >= 1 && res[1] >= 1 && res[2] >= 1 &&
-                 n == size_t(res[0]) * size_t(res[1]) * size_t(res[2]);
+                 double(n) == double(res[0]) * double(res[1]) * double(res[2]);
     if (!valid)
         throw SceneError(params.Has("nx") ? params.Loc("nx") : loc,
                          "grid medium has " + std::to_string(n) + " " + what +

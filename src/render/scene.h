@@ -47,7 +47,8 @@ struct SceneOverrides {
     // measure what the choices save: texture footprints at every hit, AOV work for every
     // camera ray.
     bool genericFootprints = false, genericAOVs = false;
-    // Volumetric path tracing even when the scene has no media (kiln --generic volpath)
+    // Volumetric path tracing even when the scene has no media or asks for "path" (kiln
+    // --generic volpath)
     bool genericVolumes = false;
     // kiln --stokes: the film records Stokes layers (Film "bool stokes" true).
     bool stokes = false;
@@ -100,7 +101,8 @@ struct SceneFeatures {
     bool areaLights = false, environmentLight = false;
     bool dispersion = false;  // wavelength-dependent IOR (terminates secondaries)
     // Participating media: the integrator "volpath" runs VolPathIntegrator when the scene has
-    // media (or --generic volpath), PathIntegrator otherwise (media cost nothing when absent)
+    // media, PathIntegrator otherwise (media cost nothing when absent); --generic volpath
+    // runs VolPathIntegrator whatever the scene says
     int media = 0, emissiveMedia = 0, thermalMedia = 0;
     bool volumetric = false, genericVolumes = false;
     // Polarised transport (radiance.h): when the film records Stokes layers, the camera

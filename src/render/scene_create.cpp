@@ -396,7 +396,7 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
         f.thermalMedia += m.IsThermal();
     }
     f.genericVolumes = overrides.genericVolumes;
-    f.volumetric = scene.integrator.volumetric && (f.media > 0 || overrides.genericVolumes);
+    f.volumetric = overrides.genericVolumes || (scene.integrator.volumetric && f.media > 0);
     f.areaLights = !desc.areaLights.empty();
     f.environmentLight = !scene.infiniteLights.empty();
     auto dispersive = [](const ParameterDictionary& p) {

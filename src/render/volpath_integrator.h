@@ -68,9 +68,10 @@ class VolPathIntegrator {
                             Float pdf = sigma_maj[0] * T_maj[0];
                             SampledSpectrum r_e = r_u * sigma_maj * T_maj / pdf;
                             if (r_e)
-                                L += Radiance::Apply(
-                                    beta * (T_maj / pdf),
-                                    Radiance::Unpolarized(mp.emission / r_e.Average()));
+                                L +=
+                                    Radiance::Apply(beta * (T_maj / pdf),
+                                                    Radiance::Unpolarized(
+                                                        mp.emission / WavelengthMean(r_e, lambda)));
                         }
                         // Absorption, real scattering or a null collision
                         Float pAbsorb = mp.sigma_a[0] / sigma_maj[0];
@@ -137,7 +138,7 @@ class VolPathIntegrator {
                     SampledSpectrum Le = light.Le(ray, lambda);
                     if (!Le) continue;
                     Float w = EmissionWeight(depth == 0 || specularBounce, index, ray.d,
-                                             prevContext, r_u, r_l);
+                                             prevContext, r_u, r_l, lambda);
                     L += Radiance::Apply(beta, Radiance::Unpolarized(Le * w));
                 }
                 break;
@@ -148,7 +149,8 @@ class VolPathIntegrator {
             BSDF bsdf = scene.GetBSDF(isect, lambda);
             if (Spectrum Le = scene.SurfaceLe<Spectrum>(isect, bsdf, -ray.d, lambda)) {
                 bool whole = depth == 0 || specularBounce || isect.lightIndex < 0;
-                Float w = EmissionWeight(whole, isect.lightIndex, ray.d, prevContext, r_u, r_l);
+                Float w =
+                    EmissionWeight(whole, isect.lightIndex, ray.d, prevContext, r_u, r_l, lambda);
                 L += Radiance::Apply(beta, Le * w);
             }
             // Medium boundaries without a material are crossed
@@ -183,7 +185,7 @@ class VolPathIntegrator {
 
             // Russian roulette
             if (!beta) break;
-            Float rrBeta = Radiance::RouletteWeight(beta) * etaScale / r_u.Average();
+            Float rrBeta = Radiance::RouletteWeight(beta) * etaScale / WavelengthMean(r_u, lambda);
             Float uRR = sampler.Get1D();
             if (rrBeta < 1 && depth > 1) {
                 Float q = std::max<Float>(0, 1 - rrBeta);
@@ -195,16 +197,27 @@ class VolPathIntegrator {
     }
 
   private:
+    // The denominator of spectral MIS: the mean of the rescaled path probabilities over the
+    // wavelengths that could have sampled the path; only the hero's once the others are
+    // terminated (after a dispersive surface, which no other wavelength crosses the same way;
+    // pbrt-v4 keeps averaging all four, biased where media are chromatic).
+    static Float WavelengthMean(const SampledSpectrum& r, const SampledWavelengths& lambda) {
+        return lambda.SecondaryTerminated() ? r[0] : r.Average();
+    }
+
     // The factor of emission found by path sampling: 1 / r_u when light sampling could not
     // have found it (whole), else the spectral MIS weight against light sampling (pbrt-v4's
     // 1 / (r_u + r_l p_l)); per LightStrategy for comparisons.
     Float EmissionWeight(bool whole, int lightIndex, Vector3f d, const LightSampleContext& ctx,
-                         const SampledSpectrum& r_u, const SampledSpectrum& r_l) const {
-        if (whole || settings.strategy == LightStrategy::BSDFOnly) return 1 / r_u.Average();
+                         const SampledSpectrum& r_u, const SampledSpectrum& r_l,
+                         const SampledWavelengths& lambda) const {
+        if (whole || settings.strategy == LightStrategy::BSDFOnly)
+            return 1 / WavelengthMean(r_u, lambda);
         const Light& light = scene.lights[size_t(lightIndex)];
         Float p_l = scene.lightSampler->PMF(ctx, lightIndex) * light.PDF_Li(ctx, d, true);
-        if (settings.strategy == LightStrategy::LightOnly) return p_l > 0 ? 0 : 1 / r_u.Average();
-        return 1 / (r_u + r_l * p_l).Average();
+        if (settings.strategy == LightStrategy::LightOnly)
+            return p_l > 0 ? 0 : 1 / WavelengthMean(r_u, lambda);
+        return 1 / WavelengthMean(r_u + r_l * p_l, lambda);
     }
 
     // One light sample at a surface (bsdf) or a point in a medium (phase), weighted by spectral
@@ -267,7 +280,7 @@ class VolPathIntegrator {
                         T_ray *= T_maj * sigma_n / pdf;
                         r_l *= T_maj * sigma_maj / pdf;
                         r_u *= T_maj * sigma_n / pdf;
-                        SampledSpectrum Tr = T_ray / (r_l + r_u).Average();
+                        SampledSpectrum Tr = T_ray / WavelengthMean(r_l + r_u, lambda);
                         if (Tr.MaxComponentValue() < 0.05f) {
                             if (rng.UniformFloat() < 0.75f)
                                 T_ray = SampledSpectrum(0.f);
@@ -295,8 +308,8 @@ class VolPathIntegrator {
         r_u *= r_p * scatterPDF;
         Spectrum contribution = Radiance::Apply(beta * f_hat, Li) * T_ray;
         if (IsDeltaLight(light.Type()) || settings.strategy == LightStrategy::LightOnly)
-            return contribution / r_l.Average();
-        return contribution / (r_l + r_u).Average();
+            return contribution / WavelengthMean(r_l, lambda);
+        return contribution / WavelengthMean(r_l + r_u, lambda);
     }
 
     static constexpr int kMaxInterfaceCrossings = 1024;
