@@ -19,46 +19,6 @@
 namespace kiln {
 namespace {
 
-double BlackbodyLuminance(double T) {
-    double sum = 0;
-    for (int l = cie::kCMFLambdaMin; l <= cie::kCMFLambdaMax; ++l)
-        sum += planck_radiance(l, T) * CIE_Y(Float(l));
-    return sum / CIE_Y_integral;
-}
-
-// A closed UV sphere of triangles with per-vertex normals (inward for a wall) and uv.
-std::string MeshSphere(double r, int nu, int nv, double cx, double cy, double cz, bool inward) {
-    std::ostringstream P, N, UV, I;
-    for (int j = 0; j <= nv; ++j)
-        for (int i = 0; i <= nu; ++i) {
-            double th = Pi * j / nv, ph = 2 * Pi * i / nu;
-            double n[3] = {std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)};
-            P << cx + r * n[0] << " " << cy + r * n[1] << " " << cz + r * n[2] << " ";
-            double s = inward ? -1 : 1;
-            N << s * n[0] << " " << s * n[1] << " " << s * n[2] << " ";
-            UV << double(i) / nu << " " << double(j) / nv << " ";
-        }
-    for (int j = 0; j < nv; ++j)
-        for (int i = 0; i < nu; ++i) {
-            // Two triangles per cell, leaving out the degenerate ones at the poles
-            int a = j * (nu + 1) + i, b = a + 1, c = a + nu + 1, d = c + 1;
-            if (j > 0) {
-                if (inward)
-                    I << a << " " << b << " " << c << " ";
-                else
-                    I << a << " " << c << " " << b << " ";
-            }
-            if (j < nv - 1) {
-                if (inward)
-                    I << b << " " << d << " " << c << " ";
-                else
-                    I << b << " " << c << " " << d << " ";
-            }
-        }
-    return "Shape \"trianglemesh\" \"integer indices\" [" + I.str() + "] \"point3 P\" [" + P.str() +
-           "] \"normal N\" [" + N.str() + "] \"point2 uv\" [" + UV.str() + "]\n";
-}
-
 struct Case {
     const char* name;
     const char* material;
@@ -81,9 +41,10 @@ std::string Cavity(const Case& c, bool meshes, double T, int spp) {
       << "MakeNamedMaterial \"checks\" \"string type\" \"diffuse\" \"texture reflectance\" "
          "\"checks\"\n"
       << "NamedMaterial \"checks\"\n"
-      << (meshes ? MeshSphere(6, 12, 8, 0, 0, 0, true) : "Shape \"sphere\" \"float radius\" 6\n")
+      << (meshes ? testing::MeshSphere(6, 12, 8, 0, 0, 0, true)
+                 : "Shape \"sphere\" \"float radius\" 6\n")
       << "Material " << c.material << "\n"
-      << (meshes ? MeshSphere(1.2, 10, 6, 0, 0, 0.3, false)
+      << (meshes ? testing::MeshSphere(1.2, 10, 6, 0, 0, 0.3, false)
                  : "AttributeBegin Translate 0 0 0.3 Shape \"sphere\" \"float radius\" 1.2 "
                    "AttributeEnd\n");
     return s.str();
@@ -95,7 +56,7 @@ TEST_P(Equilibrium, CavityRendersTheBlackbody) {
     auto [c, meshes] = GetParam();
     for (double T : {1000.0, 5000.0}) {
         SCOPED_TRACE(T);
-        const double B = BlackbodyLuminance(T);
+        const double B = testing::BlackbodyLuminance(T);
         testing::RenderedScene r = testing::RenderText(Cavity(c, meshes, T, 256));
         for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
         RunningStats s;
@@ -148,7 +109,7 @@ class PolarizedEquilibrium : public ::testing::TestWithParam<std::tuple<Case, bo
 
 TEST_P(PolarizedEquilibrium, CavityIsUnpolarisedBlackbody) {
     auto [c, meshes] = GetParam();
-    const double T = 1000, B = BlackbodyLuminance(T);
+    const double T = 1000, B = testing::BlackbodyLuminance(T);
     SceneOverrides overrides;
     overrides.stokes = true;
     testing::RenderedScene r = testing::RenderText(Cavity(c, meshes, T, 256), 0, overrides);
@@ -185,24 +146,16 @@ TEST_P(PolarizedEquilibrium, CavityIsUnpolarisedBlackbody) {
     }
 }
 
-// Test names: the case's letters and digits, and the geometry.
-std::string CaseName(const ::testing::TestParamInfo<std::tuple<Case, bool>>& info) {
-    std::string id;
-    for (char ch : std::string(std::get<0>(info.param).name))
-        if (std::isalnum(static_cast<unsigned char>(ch))) id += ch;
-    return id + (std::get<1>(info.param) ? "_Meshes" : "_Spheres");
-}
-
 INSTANTIATE_TEST_SUITE_P(Cavities, Equilibrium,
                          ::testing::Combine(::testing::ValuesIn(kCases), ::testing::Bool()),
-                         CaseName);
+                         testing::CavityCaseName<Case>);
 
 INSTANTIATE_TEST_SUITE_P(Cavities, PolarizedEquilibrium,
                          ::testing::Combine(::testing::Values(kCases[0], kCases[1], kCases[2],
                                                               kCases[3], kCases[4], kCases[5],
                                                               kCases[6], kCases[8]),
                                             ::testing::Bool()),
-                         CaseName);
+                         testing::CavityCaseName<Case>);
 
 }  // namespace
 }  // namespace kiln

@@ -1,14 +1,21 @@
 // Helpers for render tests: build and render a scene given as text or file, in process.
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <cmath>
 #include <memory>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 #include "core/parser/parser.h"
 #include "render/renderer.h"
 #include "render/scene_builder.h"
+#include "spectral/cie.h"
 #include "spectral/color.h"
+#include "spectral/planck.h"
 
 namespace kiln::testing {
 
@@ -47,6 +54,58 @@ inline RenderedScene RenderFile(const std::string& filename, SceneOverrides over
     r.stats = Render(*r.scene, settings);
     r.warnings = diag.Warnings();
     return r;
+}
+
+// Luminance Y of a blackbody at T (kelvin): the Y the film reports for B(lambda, T).
+inline double BlackbodyLuminance(double T) {
+    double sum = 0;
+    for (int l = cie::kCMFLambdaMin; l <= cie::kCMFLambdaMax; ++l)
+        sum += planck_radiance(l, T) * CIE_Y(Float(l));
+    return sum / CIE_Y_integral;
+}
+
+// A closed UV sphere of triangles with per-vertex normals (inward for a wall) and uv.
+inline std::string MeshSphere(double r, int nu, int nv, double cx, double cy, double cz,
+                              bool inward) {
+    std::ostringstream P, N, UV, I;
+    for (int j = 0; j <= nv; ++j)
+        for (int i = 0; i <= nu; ++i) {
+            double th = Pi * j / nv, ph = 2 * Pi * i / nu;
+            double n[3] = {std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)};
+            P << cx + r * n[0] << " " << cy + r * n[1] << " " << cz + r * n[2] << " ";
+            double s = inward ? -1 : 1;
+            N << s * n[0] << " " << s * n[1] << " " << s * n[2] << " ";
+            UV << double(i) / nu << " " << double(j) / nv << " ";
+        }
+    for (int j = 0; j < nv; ++j)
+        for (int i = 0; i < nu; ++i) {
+            // Two triangles per cell, leaving out the degenerate ones at the poles
+            int a = j * (nu + 1) + i, b = a + 1, c = a + nu + 1, d = c + 1;
+            if (j > 0) {
+                if (inward)
+                    I << a << " " << b << " " << c << " ";
+                else
+                    I << a << " " << c << " " << b << " ";
+            }
+            if (j < nv - 1) {
+                if (inward)
+                    I << b << " " << d << " " << c << " ";
+                else
+                    I << b << " " << c << " " << d << " ";
+            }
+        }
+    return "Shape \"trianglemesh\" \"integer indices\" [" + I.str() + "] \"point3 P\" [" + P.str() +
+           "] \"normal N\" [" + N.str() + "] \"point2 uv\" [" + UV.str() + "]\n";
+}
+
+// Names of cavity tests parameterised by (case with a name, meshes): the case's letters and
+// digits, and the geometry.
+template <typename Case>
+std::string CavityCaseName(const ::testing::TestParamInfo<std::tuple<Case, bool>>& info) {
+    std::string id;
+    for (char ch : std::string(std::get<0>(info.param).name))
+        if (std::isalnum(static_cast<unsigned char>(ch))) id += ch;
+    return id + (std::get<1>(info.param) ? "_Meshes" : "_Spheres");
 }
 
 // Luminance Y of a film pixel (colour space of the film).

@@ -20,13 +20,6 @@ namespace {
 
 // Luminance Y = int B ybar / int ybar of a blackbody, W m^-2 sr^-1 nm^-1 (the film's
 // convention), by the same 1 nm sum the film's colour matching uses.
-double BlackbodyLuminance(double T) {
-    double sum = 0;
-    for (int l = cie::kCMFLambdaMin; l <= cie::kCMFLambdaMax; ++l)
-        sum += planck_radiance(l, T) * CIE_Y(Float(l));
-    return sum / CIE_Y_integral;
-}
-
 RunningStats ImageLuminance(const Scene& scene) {
     RunningStats stats;
     Bounds2i b = scene.film->PixelBounds();
@@ -70,7 +63,7 @@ TEST(ThermalTest, KirchhoffCavityIsInEquilibriumAtEveryPixel) {
     // A glowing temperature and a near-white one (flatter Planck curve, less spectral noise).
     for (double T : {1400.0, 5500.0}) {
         SCOPED_TRACE(T);
-        const double expected = BlackbodyLuminance(T);
+        const double expected = testing::BlackbodyLuminance(T);
         testing::RenderedScene r = testing::RenderText(Cavity(T, "kirchhoff", 128));
         EXPECT_TRUE(r.warnings.empty());
         EXPECT_GT(r.scene->thermalEmitterCount, 0);
@@ -94,7 +87,7 @@ TEST(ThermalTest, KirchhoffCavityIsInEquilibriumAtEveryPixel) {
 }
 
 TEST(ThermalTest, AdditiveEmissionOverfillsTheCavity) {
-    const double T = 1400, expected = BlackbodyLuminance(T);
+    const double T = 1400, expected = testing::BlackbodyLuminance(T);
     testing::RenderedScene r = testing::RenderText(Cavity(T, "additive", 64));
     RunningStats s = ImageLuminance(*r.scene);
     // Emission B plus reflected light: B / (1 - R) on reflective surfaces.
@@ -204,7 +197,7 @@ TEST(ThermalTest, SilverGlowsFarWeakerThanBlackQuartz) {
                        .Y;
     EXPECT_GT(quartz, 10 * silver);
     // Black quartz is nearly a blackbody at normal incidence: 1 - R of fused silica ~ 0.96.
-    EXPECT_NEAR(quartz / BlackbodyLuminance(1300), 0.965, 0.01);
+    EXPECT_NEAR(quartz / testing::BlackbodyLuminance(1300), 0.965, 0.01);
 }
 
 // Hot emitters resting on a floor (a sphere and a triangle-mesh box touching it): the floor

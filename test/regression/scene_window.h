@@ -1,0 +1,61 @@
+// Renders of a window of a scene file for the regression tests that compare two ways of
+// rendering every scene in scenes/ (polarised against unpolarised, volpath against path).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "../render/render_test_util.h"
+#include "core/image/image.h"
+
+namespace kiln::testing {
+
+// The scene's window (NDC) rendered with the "independent" sampler (renders with different
+// seeds must be independent for the across-seed variance to measure the error, as in
+// regression_test.cpp) at spp samples per pixel with the given seed; edit changes the
+// description first. Nothing if accept rejects the created scene.
+inline std::optional<Image> RenderSceneWindow(
+    const std::string& file, const Bounds2f& window, int spp, int seed, SceneOverrides o,
+    const std::function<void(SceneDescription&)>& edit = {},
+    const std::function<bool(const Scene&)>& accept = {}) {
+    Diagnostics diag(nullptr);
+    SceneBuilder builder(diag);
+    ParseFile(builder, file, diag);
+    builder.Description().sampler.name = "independent";
+    if (edit) edit(builder.Description());
+    o.samplesPerPixel = spp;
+    o.seed = seed;
+    o.cropWindow = window;
+    std::unique_ptr<Scene> scene = Scene::Create(builder.Description(), o, diag);
+    if (accept && !accept(*scene)) return std::nullopt;
+    RenderSettings settings;
+    Render(*scene, settings);
+    EXPECT_EQ(scene->film->NonFiniteSampleCount(), 0);
+    return scene->film->GetImage(nullptr).SelectChannels({"R", "G", "B"});
+}
+
+inline bool IsBlack(const Image& image) {
+    for (int y = 0; y < image.Resolution().y; ++y)
+        for (int x = 0; x < image.Resolution().x; ++x)
+            for (int c = 0; c < image.NChannels(); ++c)
+                if (image.GetChannel({x, y}, c) != 0) return false;
+    return true;
+}
+
+// Every .pbrt file under scenes/, sorted.
+inline std::vector<std::string> SceneFiles() {
+    std::vector<std::string> files;
+    for (const auto& e :
+         std::filesystem::recursive_directory_iterator(std::string(KILN_SOURCE_DIR) + "/scenes"))
+        if (e.path().extension() == ".pbrt") files.push_back(e.path().string());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+}  // namespace kiln::testing

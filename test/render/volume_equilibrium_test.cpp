@@ -1,0 +1,119 @@
+// Kirchhoff equilibrium with participating media: a closed cavity at temperature T containing
+// a glass body filled with a hot medium (absorbing, scattering, thin, graded, dispersive), or
+// itself filled with hot scattering air, must render exactly B(T) in every direction. Inside
+// glass of index n the equilibrium radiance is n^2 B and the medium emits sigma_a n^2 B; the
+// Fresnel boundary passes (1 - R) of it out, scaled by 1 / n^2, and reflects R of the wall's
+// B: B either way. Walls and bodies as in equilibrium_test.cpp (spheres, or low-poly meshes
+// with smooth shading normals). The image mean must be B(T) within 4 standard errors of the
+// pixel noise (plus 1e-3), and the test renders enough samples for that to be tighter than
+// 0.5 %.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "core/base/statistics.h"
+#include "render_test_util.h"
+
+namespace kiln {
+namespace {
+
+struct Case {
+    const char* name;
+    const char* glass;   // the body's material ("" for no body)
+    const char* inside;  // the medium in the body, without its temperature
+    const char* air;     // the medium filling the cavity ("" for none)
+    int spp;             // enough for a standard error below 0.125 %
+};
+
+std::string Cavity(const Case& c, bool meshes, double T, int spp) {
+    std::ostringstream s;
+    s << "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 24\n"
+      << "Sampler \"zsobol\" \"integer pixelsamples\" " << spp << "\n"
+      << "Integrator \"volpath\" \"integer maxdepth\" 500\n";
+    if (*c.air) s << "MediumInterface \"\" \"air\"\n";  // the camera's medium
+    s << "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
+      << "WorldBegin\n";
+    if (*c.air) s << "MakeNamedMedium \"air\" " << c.air << " \"float temperature\" " << T << "\n";
+    if (*c.inside)
+        s << "MakeNamedMedium \"melt\" " << c.inside << " \"float temperature\" " << T << "\n";
+    // The wall: the cavity is inside the sphere primitive, outside the inward-facing mesh
+    s << "AttributeBegin\n"
+      << (*c.air ? (meshes ? "MediumInterface \"\" \"air\"\n" : "MediumInterface \"air\" \"\"\n")
+                 : "")
+      << "Attribute \"shape\" \"float temperature\" " << T << "\n"
+      << "Texture \"checks\" \"spectrum\" \"checkerboard\" \"float uscale\" 8 \"float vscale\" 8"
+         " \"rgb tex1\" [0.9 0.8 0.7] \"rgb tex2\" [0.1 0.2 0.05]\n"
+      << "Material \"diffuse\" \"texture reflectance\" \"checks\"\n"
+      << (meshes ? testing::MeshSphere(6, 12, 8, 0, 0, 0, true)
+                 : "Shape \"sphere\" \"float radius\" 6\n")
+      << "AttributeEnd\n";
+    if (*c.glass) {
+        s << "AttributeBegin\nMaterial " << c.glass << "\n"
+          << "MediumInterface \"" << (*c.inside ? "melt" : "") << "\" \"" << (*c.air ? "air" : "")
+          << "\"\n"
+          << (meshes ? testing::MeshSphere(1.2, 10, 6, 0, 0, 0.3, false)
+                     : "Translate 0 0 0.3 Shape \"sphere\" \"float radius\" 1.2\n")
+          << "AttributeEnd\n";
+    }
+    return s.str();
+}
+
+class VolumeEquilibrium : public ::testing::TestWithParam<std::tuple<Case, bool>> {};
+
+TEST_P(VolumeEquilibrium, CavityRendersTheBlackbody) {
+    auto [c, meshes] = GetParam();
+    // One temperature (the equilibrium holds wavelength by wavelength; the dispersive case sees
+    // the spectrum's shape)
+    const double T = 1300;
+    const double B = testing::BlackbodyLuminance(T);
+    testing::RenderedScene r = testing::RenderText(Cavity(c, meshes, T, c.spp));
+    for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
+    ASSERT_TRUE(r.scene->features.volumetric);
+    ASSERT_GE(r.scene->features.thermalMedia, 1);
+    RunningStats s;
+    Bounds2i b = r.scene->film->PixelBounds();
+    for (int y = b.pMin.y; y < b.pMax.y; ++y)
+        for (int x = b.pMin.x; x < b.pMax.x; ++x) s.Add(testing::PixelY(*r.scene, {x, y}) / B);
+    double se = s.StandardError();
+    std::printf("%-30s %-7s %5.0f K: mean %.5f of B(T), standard error %.5f\n", c.name,
+                meshes ? "meshes" : "spheres", T, s.Mean(), se);
+    EXPECT_LT(4 * se, 0.005);  // the test can see a 0.5 % error
+    EXPECT_NEAR(s.Mean(), 1, 4 * se + 1e-3);
+}
+
+const Case kCases[] = {
+    {"glass, absorbing melt", "\"dielectric\" \"float eta\" 1.5",
+     "\"string type\" \"homogeneous\" \"rgb sigma_a\" [1 1.5 2] \"rgb sigma_s\" [0 0 0]", "", 256},
+    {"glass, scattering melt", "\"dielectric\" \"float eta\" 1.5",
+     "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.3 0.2 0.1] \"rgb sigma_s\" [2 1 3] "
+     "\"float g\" 0.5",
+     "", 1024},
+    {"glass, thin melt", "\"dielectric\" \"float eta\" 1.7",
+     "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.05 0.05 0.05] \"rgb sigma_s\" [0 0 0]", "",
+     512},
+    {"glass, graded melt", "\"dielectric\" \"float eta\" 1.5",
+     "\"string type\" \"uniformgrid\" \"float density\" [0 4 1 2 3 0.5 2 1] \"integer nx\" 2 "
+     "\"integer ny\" 2 \"integer nz\" 2 \"point3 p0\" [-1.2 -1.2 -0.9] \"point3 p1\" [1.2 1.2 "
+     "1.5] \"rgb sigma_a\" [0.5 0.5 0.5] \"rgb sigma_s\" [1 1 1]",
+     "", 1024},
+    {"dispersive glass", "\"dielectric\" \"spectrum eta\" \"glass-BAF10\"",
+     "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.5 0.8 0.4] \"rgb sigma_s\" [0.5 0.5 "
+     "0.5]",
+     "", 1024},
+    {"hot air, glass, melt", "\"dielectric\" \"float eta\" 1.5",
+     "\"string type\" \"homogeneous\" \"rgb sigma_a\" [1 1 1] \"rgb sigma_s\" [1 1 1]",
+     "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.05 0.1 0.02] \"rgb sigma_s\" [0.2 0.1 "
+     "0.3] \"float g\" -0.4",
+     1024},
+    {"hot air only", "", "",
+     "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.2 0.2 0.2] \"rgb sigma_s\" [0.3 0.3 "
+     "0.3]",
+     1024},
+};
+
+INSTANTIATE_TEST_SUITE_P(Cavities, VolumeEquilibrium,
+                         ::testing::Combine(::testing::ValuesIn(kCases), ::testing::Bool()),
+                         testing::CavityCaseName<Case>);
+
+}  // namespace
+}  // namespace kiln
