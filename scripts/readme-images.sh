@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Renders the small images shown in README.md ("Glowing objects") into docs/images/.
-# Usage: scripts/readme-images.sh [spp] [all|thermal|polarization]   (default 64 all)
+# Usage: scripts/readme-images.sh [spp] [all|thermal|polarization|media]   (default 64 all)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 kiln="${KILN_BUILD_DIR:-$root/build}/kiln"
@@ -54,6 +54,20 @@ oiiotool "$tmp/fig10-without.png" "$tmp/fig10-with.png" "$tmp/fig10-diff.png" --
     --resize 50% -o "$out/fig10-black-glass.png"
 fi
 [ "$mode" = polarization ] && exit 0
+# Hot glass and smoke (scenes/media/)
+if [ "$mode" = all ] || [ "$mode" = media ]; then
+media="$root/scenes/media"
+render "$media/glass-blowing.pbrt" "$tmp/glass-blowing.png"
+oiiotool "$tmp/glass-blowing.png" --resize 66.67% -o "$out/glass-blowing.png"
+for q in black smoky; do
+    render "$media/quartz-ring-$q.pbrt" "$tmp/quartz-ring-$q.png"
+done
+oiiotool "$tmp/quartz-ring-black.png" "$tmp/quartz-ring-smoky.png" --mosaic 2x1 --resize 50% \
+    -o "$out/quartz-ring.png"
+render "$media/lava-smoke.pbrt" "$tmp/lava-smoke.png"
+oiiotool "$tmp/lava-smoke.png" --resize 66.67% -o "$out/lava-smoke.png"
+fi
+[ "$mode" = media ] && exit 0
 # Temperature fields (scenes/thermal/): gradient, per-vertex lava, heat map, cooling blade
 for scene in heated-bar lava heat-map; do
     render "$root/scenes/thermal/$scene.pbrt" "$tmp/$scene.png"
