@@ -104,6 +104,10 @@ MediumCoefficients ReadMediumCoefficients(const TextureParameterDictionary& para
         c.sigma_a = *dict.GetOneSpectrum("sigma_a", ConstantSpectrum(1), SpectrumType::Unbounded);
         c.sigma_s = *dict.GetOneSpectrum("sigma_s", ConstantSpectrum(1), SpectrumType::Unbounded);
     }
+    // Tabulated per nanometre (as pbrt-v4): sampled at every tentative collision, an RGB
+    // spectrum's sigmoid would cost more than the lookup
+    c.sigma_a = DenselySampledSpectrum(c.sigma_a);
+    c.sigma_s = DenselySampledSpectrum(c.sigma_s);
     c.scale = ReadCoefficientScale(params, loc);
     c.g = ReadHGAsymmetry(params);
     return c;
