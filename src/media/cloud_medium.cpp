@@ -39,11 +39,9 @@ MediumProperties CloudMedium::SamplePoint(Point3f p, const SampledWavelengths& l
 
 MajorantIterator CloudMedium::SampleRay(const Ray& ray, Float tMax,
                                         const SampledWavelengths& lambda) const {
-    Point3f o = renderFromMedium.ApplyInverse(ray.o);
-    Vector3f d = renderFromMedium.ApplyInverse(ray.d);
-    std::optional<std::pair<Float, Float>> t = ClipRayToBounds(bounds, o, d, tMax);
-    if (!t) return {};
-    return MajorantIterator(t->first, t->second,
+    std::optional<MediumRaySegment> r = RayInMedium(renderFromMedium, bounds, ray, tMax);
+    if (!r) return {};
+    return MajorantIterator(r->tMin, r->tMax,
                             (sigma_a.Sample(lambda) + sigma_s.Sample(lambda)) * scale);
 }
 

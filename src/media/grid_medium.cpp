@@ -42,12 +42,10 @@ MediumProperties GridMedium::SamplePoint(Point3f p, const SampledWavelengths& la
 
 MajorantIterator GridMedium::SampleRay(const Ray& ray, Float tMax,
                                        const SampledWavelengths& lambda) const {
-    Point3f o = renderFromMedium.ApplyInverse(ray.o);
-    Vector3f d = renderFromMedium.ApplyInverse(ray.d);
-    std::optional<std::pair<Float, Float>> t = ClipRayToBounds(bounds, o, d, tMax);
-    if (!t) return {};
+    std::optional<MediumRaySegment> r = RayInMedium(renderFromMedium, bounds, ray, tMax);
+    if (!r) return {};
     SampledSpectrum sigma_t = (sigma_a.Sample(lambda) + sigma_s.Sample(lambda)) * scale;
-    return MajorantIterator(o, d, t->first, t->second, &majorants, sigma_t);
+    return MajorantIterator(r->o, r->d, r->tMin, r->tMax, &majorants, sigma_t);
 }
 
 // Creation

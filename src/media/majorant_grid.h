@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/base/transform.h"
 #include "core/base/vecmath.h"
 #include "spectral/sampled_spectrum.h"
 
@@ -51,6 +52,23 @@ struct MajorantGrid {
 // it misses.
 std::optional<std::pair<Float, Float>> ClipRayToBounds(const Bounds3f& bounds, Point3f o,
                                                        Vector3f d, Float tMax);
+
+// A render-space ray over [0, tMax] in a medium's space (same parameter t), clipped to the
+// medium's box; nullopt if it misses.
+struct MediumRaySegment {
+    Point3f o;
+    Vector3f d;
+    Float tMin, tMax;
+};
+inline std::optional<MediumRaySegment> RayInMedium(const Transform& renderFromMedium,
+                                                   const Bounds3f& bounds, const Ray& ray,
+                                                   Float tMax) {
+    Point3f o = renderFromMedium.ApplyInverse(ray.o);
+    Vector3f d = renderFromMedium.ApplyInverse(ray.d);
+    std::optional<std::pair<Float, Float>> t = ClipRayToBounds(bounds, o, d, tMax);
+    if (!t) return std::nullopt;
+    return MediumRaySegment{o, d, t->first, t->second};
+}
 
 // The segments of a ray through a medium: one segment (homogeneous media, or a single bound
 // over the whole medium) or the voxels of a MajorantGrid crossed by a 3D DDA; none when the

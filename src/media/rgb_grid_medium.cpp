@@ -44,11 +44,9 @@ MediumProperties RGBGridMedium::SamplePoint(Point3f p, const SampledWavelengths&
 
 MajorantIterator RGBGridMedium::SampleRay(const Ray& ray, Float tMax,
                                           const SampledWavelengths&) const {
-    Point3f o = renderFromMedium.ApplyInverse(ray.o);
-    Vector3f d = renderFromMedium.ApplyInverse(ray.d);
-    std::optional<std::pair<Float, Float>> t = ClipRayToBounds(bounds, o, d, tMax);
-    if (!t) return {};
-    return MajorantIterator(o, d, t->first, t->second, &majorants, SampledSpectrum(1.f));
+    std::optional<MediumRaySegment> r = RayInMedium(renderFromMedium, bounds, ray, tMax);
+    if (!r) return {};
+    return MajorantIterator(r->o, r->d, r->tMin, r->tMax, &majorants, SampledSpectrum(1.f));
 }
 
 RGBGridMedium* RGBGridMedium::Create(const TextureParameterDictionary& params,

@@ -13,6 +13,7 @@
 
 #include "../render/render_test_util.h"
 #include "core/image/image.h"
+#include "noise_comparison.h"
 
 namespace kiln::testing {
 
@@ -56,6 +57,43 @@ inline std::vector<std::string> SceneFiles() {
         if (e.path().extension() == ".pbrt") files.push_back(e.path().string());
     std::sort(files.begin(), files.end());
     return files;
+}
+
+// Every scene in scenes/ rendered two ways and compared within the Monte Carlo noise:
+// render(file, window, alternative, spp, seed) renders a window of a scene the plain way
+// (alternative false) or the way under test, or returns nothing to skip the scene. The plain
+// render at kReferenceSpp is the reference for kSeeds renders of the alternative at kSpp with
+// independent seeds (noise_comparison.h), over the centre of the image (or below it, where the
+// centre is black). The comparison must also see a 10 % error. Returns how many scenes were
+// compared.
+using WindowRenderer = std::function<std::optional<Image>(
+    const std::string& file, const Bounds2f& window, bool alternative, int spp, int seed)>;
+inline int CompareEveryScene(const WindowRenderer& render) {
+    constexpr int kSeeds = 8, kSpp = 4, kReferenceSpp = 128;
+    int compared = 0;
+    for (const std::string& file : SceneFiles()) {
+        SCOPED_TRACE(file);
+        std::string name = std::filesystem::path(file).filename().string();
+        Bounds2f window{{0.45f, 0.45f}, {0.55f, 0.55f}};
+        std::optional<Image> reference = render(file, window, false, kReferenceSpp, 1000);
+        if (reference && IsBlack(*reference)) {
+            window = Bounds2f{{0.45f, 0.7f}, {0.55f, 0.8f}};
+            reference = render(file, window, false, kReferenceSpp, 1000);
+        }
+        if (!reference) {
+            std::printf("%s: skipped\n", name.c_str());
+            continue;
+        }
+        std::vector<Image> renders;
+        for (int k = 0; k < kSeeds; ++k)
+            renders.push_back(*render(file, window, true, kSpp, k + 1));
+        NoiseComparison c = CompareWithNoise(renders, *reference, kSpp, kReferenceSpp);
+        EXPECT_TRUE(c.Pass()) << c;
+        EXPECT_FALSE(CompareWithNoise(renders, *reference, kSpp, kReferenceSpp, 4, 1.1).Pass());
+        std::printf("%s: %s\n", name.c_str(), ::testing::PrintToString(c).c_str());
+        ++compared;
+    }
+    return compared;
 }
 
 }  // namespace kiln::testing

@@ -10,6 +10,7 @@
 #include <string>
 #include <tuple>
 
+#include "core/base/statistics.h"
 #include "core/parser/parser.h"
 #include "render/renderer.h"
 #include "render/scene_builder.h"
@@ -112,6 +113,23 @@ std::string CavityCaseName(const ::testing::TestParamInfo<std::tuple<Case, bool>
 inline Float PixelY(const Scene& scene, Point2i p) {
     RGB rgb = scene.film->GetPixelRGB(p);
     return scene.film->ColorSpace()->ToXYZ(rgb).Y;
+}
+
+// An equilibrium cavity render at temperature T (label: what it holds): no warnings, and the
+// image mean B(T) within 4 standard errors of the pixel noise (plus 1e-3), the test able to see
+// a 0.5 % error.
+inline void ExpectBlackbodyImage(const RenderedScene& r, double T, const std::string& label) {
+    for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
+    const double B = BlackbodyLuminance(T);
+    RunningStats s;
+    Bounds2i b = r.scene->film->PixelBounds();
+    for (int y = b.pMin.y; y < b.pMax.y; ++y)
+        for (int x = b.pMin.x; x < b.pMax.x; ++x) s.Add(PixelY(*r.scene, {x, y}) / B);
+    double se = s.StandardError();
+    std::printf("%-38s %5.0f K: mean %.5f of B(T), standard error %.5f\n", label.c_str(), T,
+                s.Mean(), se);
+    EXPECT_LT(4 * se, 0.005);
+    EXPECT_NEAR(s.Mean(), 1, 4 * se + 1e-3);
 }
 
 }  // namespace kiln::testing
