@@ -59,19 +59,29 @@ inline std::vector<std::string> SceneFiles() {
     return files;
 }
 
-// Every scene in scenes/ rendered two ways and compared within the Monte Carlo noise:
-// render(file, window, alternative, spp, seed) renders a window of a scene the plain way
-// (alternative false) or the way under test, or returns nothing to skip the scene. The plain
-// render at kReferenceSpp is the reference for kSeeds renders of the alternative at kSpp with
-// independent seeds (noise_comparison.h), over the centre of the image (or below it, where the
-// centre is black). The comparison must also see a 10 % error. Returns how many scenes were
-// compared.
+// The first scene file of every folder under scenes/ (one of each kind).
+inline std::vector<std::string> OneScenePerFolder() {
+    std::vector<std::string> files, all = SceneFiles();
+    for (const std::string& f : all)
+        if (files.empty() || std::filesystem::path(files.back()).parent_path() !=
+                                 std::filesystem::path(f).parent_path())
+            files.push_back(f);
+    return files;
+}
+
+// Scenes rendered two ways and compared within the Monte Carlo noise: render(file, window,
+// alternative, spp, seed) renders a window of a scene the plain way (alternative false) or the
+// way under test, or returns nothing to skip the scene. The plain render at referenceSpp is the
+// reference for `seeds` renders of the alternative at spp samples per pixel with independent seeds
+// (noise_comparison.h), over the centre of the image (or below it, where the centre is black).
+// Accepted within `sigmas` (noise_comparison.h); the comparison must also see a 10 % error.
+// Returns how many scenes were compared.
 using WindowRenderer = std::function<std::optional<Image>(
     const std::string& file, const Bounds2f& window, bool alternative, int spp, int seed)>;
-inline int CompareEveryScene(const WindowRenderer& render) {
-    constexpr int kSeeds = 8, kSpp = 4, kReferenceSpp = 128;
+inline int CompareScenes(const std::vector<std::string>& files, const WindowRenderer& render,
+                         int kSpp, int kSeeds, int kReferenceSpp, double sigmas = 4) {
     int compared = 0;
-    for (const std::string& file : SceneFiles()) {
+    for (const std::string& file : files) {
         SCOPED_TRACE(file);
         std::string name = std::filesystem::path(file).filename().string();
         Bounds2f window{{0.45f, 0.45f}, {0.55f, 0.55f}};
@@ -87,9 +97,10 @@ inline int CompareEveryScene(const WindowRenderer& render) {
         std::vector<Image> renders;
         for (int k = 0; k < kSeeds; ++k)
             renders.push_back(*render(file, window, true, kSpp, k + 1));
-        NoiseComparison c = CompareWithNoise(renders, *reference, kSpp, kReferenceSpp);
+        NoiseComparison c = CompareWithNoise(renders, *reference, kSpp, kReferenceSpp, sigmas);
         EXPECT_TRUE(c.Pass()) << c;
-        EXPECT_FALSE(CompareWithNoise(renders, *reference, kSpp, kReferenceSpp, 4, 1.1).Pass());
+        EXPECT_FALSE(
+            CompareWithNoise(renders, *reference, kSpp, kReferenceSpp, sigmas, 1.1).Pass());
         std::printf("%s: %s\n", name.c_str(), ::testing::PrintToString(c).c_str());
         ++compared;
     }
