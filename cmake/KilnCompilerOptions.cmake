@@ -19,7 +19,8 @@ target_link_libraries(kiln_options INTERFACE kiln_warnings)
 if(KILN_SANITIZE)
     # Any report fails the run (no recovery)
     target_compile_options(kiln_options INTERFACE -fsanitize=address,undefined
-        -fno-sanitize-recover=all -fno-omit-frame-pointer)
+        -fno-sanitize-recover=all -fno-omit-frame-pointer
+        $<$<CXX_COMPILER_ID:Clang>:-fsanitize-ignorelist=${PROJECT_SOURCE_DIR}/cmake/sanitizer-ignorelist.txt>)
     target_link_options(kiln_options INTERFACE -fsanitize=address,undefined)
 endif()
 if(KILN_FUZZ)
