@@ -4,6 +4,8 @@
 
 #include "core/geometry/ply_reader.h"
 #include "core/geometry/shape.h"
+
+#include "core/geometry/loop_subdivision.h"
 #include "core/parser/diagnostics.h"
 #include "core/parser/parameter_dictionary.h"
 
@@ -107,6 +109,40 @@ std::vector<Shape> CreateTriangleMesh(const Transform* renderFromObject, bool re
     auto* mesh = arena.New<TriangleMesh>(*renderFromObject, reverseOrientation, std::move(indices),
                                          std::move(P), std::move(N), std::move(S), std::move(uv),
                                          std::move(faceIndices), std::move(attributes));
+    std::vector<Shape> shapes;
+    AddTriangles(mesh, arena, &shapes, loc, diag);
+    return shapes;
+}
+
+// "loopsubdiv" (pbrt-v4): "integer levels" (3), "integer indices", "point3 P"; the refined
+// triangles carry the limit surface's normals (loop_subdivision.h).
+std::vector<Shape> CreateLoopSubdiv(const Transform* renderFromObject, bool reverseOrientation,
+                                    const ParameterDictionary& params, const FileLoc& loc,
+                                    ObjectArena& arena, Diagnostics& diag) {
+    int levels = params.GetOneInt("levels", 3);
+    std::vector<int> indices = params.GetIntArray("indices");
+    std::vector<Point3f> P = params.GetPoint3fArray("P");
+    if (P.empty()) throw SceneError(loc, "vertex positions \"P\" must be provided", "loopsubdiv");
+    if (indices.empty())
+        throw SceneError(loc, "vertex indices \"indices\" must be provided", "loopsubdiv");
+    if (indices.size() % 3 != 0)
+        throw SceneError(LocOf(params, "indices", loc),
+                         "number of vertex indices (" + std::to_string(indices.size()) +
+                             ") is not a multiple of 3",
+                         "indices");
+    CheckIndices(indices, P.size(), params, loc);
+    // Each level makes four triangles of one
+    constexpr double kMaxTriangles = double(1 << 25);
+    if (levels < 0 || double(indices.size() / 3) * std::pow(4.0, levels) > kMaxTriangles)
+        throw SceneError(LocOf(params, "levels", loc),
+                         "loopsubdiv \"levels\" must be >= 0 and make at most 2^25 triangles (" +
+                             std::to_string(indices.size() / 3) + " triangles to begin with)",
+                         std::to_string(levels));
+    SubdividedMesh m = LoopSubdivide(indices, P, levels);
+    auto* mesh = arena.New<TriangleMesh>(
+        *renderFromObject, reverseOrientation, std::move(m.indices), std::move(m.p), std::move(m.n),
+        std::vector<Vector3f>(), std::vector<Point2f>(), std::vector<int>(),
+        std::map<std::string, std::vector<Float>>());
     std::vector<Shape> shapes;
     AddTriangles(mesh, arena, &shapes, loc, diag);
     return shapes;
@@ -247,7 +283,9 @@ std::vector<Shape> CreateShapes(const std::string& name, const Transform* render
         return CreateBilinearMesh(renderFromObject, reverseOrientation, params, loc, arena);
     if (name == "plymesh")
         return CreatePLYMesh(renderFromObject, reverseOrientation, params, loc, arena, diag);
-    if (name == "loopsubdiv" || name == "curve") {
+    if (name == "loopsubdiv")
+        return CreateLoopSubdiv(renderFromObject, reverseOrientation, params, loc, arena, diag);
+    if (name == "curve") {
         diag.Warn(loc, "shape \"" + name + "\" is not supported; skipped");
         return {};
     }
