@@ -1,14 +1,15 @@
 // What a light path carries: the integrator's radiance type parameter.
 //
-// Following Mitsuba 3's variants, PathIntegrator<Radiance> is written once against the small
-// interface below, and the scene's needs choose the variant at load (renderer.cpp):
+// Following Mitsuba 3's variants, PathIntegrator<Radiance> and VolPathIntegrator<Radiance> are
+// written once against the small interface below, and the scene's needs choose the variant at
+// load (renderer.cpp):
 //   UnpolarizedRadiance: radiance and throughput are SampledSpectrum; BSDFs return scalar values
 //                        per wavelength.
 //   PolarizedRadiance:   radiance is a Stokes vector per wavelength and throughput a Mueller
 //                        matrix per wavelength, both in the implicit frames of the directions
 //                        of travel (spectral/polarization.h); BSDFs return Mueller matrices
 //                        rotated into those frames, thermal emission is polarised, other
-//                        emitters are unpolarised.
+//                        emitters (media too) are unpolarised and phase functions depolarise.
 #pragma once
 
 #include "spectral/polarization.h"
