@@ -67,6 +67,17 @@ void CheckTemperatures(const std::vector<Float>& t, const FileLoc& at, const std
                              "temperature");
 }
 
+// Whole triangles (a multiple of 3 indices), each index a vertex.
+void CheckTriangleIndices(const std::vector<int>& indices, size_t nVertices,
+                          const ParameterDictionary& params, const FileLoc& loc) {
+    if (indices.size() % 3 != 0)
+        throw SceneError(LocOf(params, "indices", loc),
+                         "number of vertex indices (" + std::to_string(indices.size()) +
+                             ") is not a multiple of 3",
+                         "indices");
+    CheckIndices(indices, nVertices, params, loc);
+}
+
 std::vector<Shape> CreateTriangleMesh(const Transform* renderFromObject, bool reverseOrientation,
                                       const ParameterDictionary& params, const FileLoc& loc,
                                       ObjectArena& arena, Diagnostics& diag) {
@@ -89,12 +100,7 @@ std::vector<Shape> CreateTriangleMesh(const Transform* renderFromObject, bool re
                              "trianglemesh");
         indices = {0, 1, 2};
     }
-    if (indices.size() % 3 != 0)
-        throw SceneError(LocOf(params, "indices", loc),
-                         "number of vertex indices (" + std::to_string(indices.size()) +
-                             ") is not a multiple of 3",
-                         "indices");
-    CheckIndices(indices, P.size(), params, loc);
+    CheckTriangleIndices(indices, P.size(), params, loc);
     CheckPerVertex(uv, P.size(), "uv", params, loc);
     CheckPerVertex(N, P.size(), "N", params, loc);
     CheckPerVertex(S, P.size(), "S", params, loc);
@@ -125,12 +131,7 @@ std::vector<Shape> CreateLoopSubdiv(const Transform* renderFromObject, bool reve
     if (P.empty()) throw SceneError(loc, "vertex positions \"P\" must be provided", "loopsubdiv");
     if (indices.empty())
         throw SceneError(loc, "vertex indices \"indices\" must be provided", "loopsubdiv");
-    if (indices.size() % 3 != 0)
-        throw SceneError(LocOf(params, "indices", loc),
-                         "number of vertex indices (" + std::to_string(indices.size()) +
-                             ") is not a multiple of 3",
-                         "indices");
-    CheckIndices(indices, P.size(), params, loc);
+    CheckTriangleIndices(indices, P.size(), params, loc);
     // Each level makes four triangles of one
     constexpr double kMaxTriangles = double(1 << 25);
     if (levels < 0 || double(indices.size() / 3) * std::pow(4.0, levels) > kMaxTriangles)
