@@ -34,6 +34,11 @@ const ThermalProperties& Material::Thermal() const {
     return std::visit([](const auto* m) -> const ThermalProperties& { return m->thermal; }, v);
 }
 
+const ShadingPerturbation& Material::Perturbation() const {
+    return std::visit([](const auto* m) -> const ShadingPerturbation& { return m->perturbation; },
+                      v);
+}
+
 bool Material::UsesFootprint() const {
     return std::visit([](const auto* m) { return m->usesFootprint; }, v);
 }
@@ -108,8 +113,10 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
                           ObjectArena& arena, Diagnostics& diag) {
     // The material's heat (its own property), then its scattering
     ThermalProperties thermal = ReadThermalProperties(params, false, arena);
+    ShadingPerturbation perturbation;
     auto make = [&](auto* m) {
         m->thermal = thermal;
+        m->perturbation = perturbation;
         Material material(m);
         m->usesFootprint = ComputeUsesFootprint(material);
         return material;
@@ -137,15 +144,8 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
             arena.New<MixMaterial>(*m[0], *m[1], params.GetFloatTexture("amount", 0.5f, arena)));
     }
 
-    // Unsupported shading modifiers: warn, and read them so they are not reported as unused
-    if (params.Has("displacement")) {
-        params.GetFloatTextureOrNull("displacement", arena);
-        diag.Warn(params.Loc("displacement"), "\"displacement\" is not supported; ignored");
-    }
-    if (params.Has("normalmap")) {
-        params.GetOneString("normalmap", "");
-        diag.Warn(params.Loc("normalmap"), "\"normalmap\" is not supported; ignored");
-    }
+    // Bump or normal map, for every material that scatters (pbrt-v4: not mix or interface)
+    perturbation = ShadingPerturbation::Read(params, arena);
 
     auto remap = [&] { return params.GetOneBool("remaproughness", true); };
     if (type == "diffuse")

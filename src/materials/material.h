@@ -27,6 +27,7 @@ class InterfaceMaterial;
 class PolarizingFilterMaterial;
 class TextureParameterDictionary;
 struct ThermalProperties;
+struct ShadingPerturbation;
 
 // Material Definition
 class Material {
@@ -56,6 +57,9 @@ class Material {
     // Whether the BSDF depends on the screen-space footprint (a texture filters with it):
     // shading computes footprints only then (decided at creation).
     bool UsesFootprint() const;
+
+    // The material's bump or normal map (shading_perturbation.h); none for mix and interface.
+    const ShadingPerturbation& Perturbation() const;
 
     // The refractive index of the body whose surface this is: a dielectric's eta; nullopt for
     // every other material (thin dielectrics enclose nothing; conductors and coatings are

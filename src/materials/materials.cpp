@@ -42,6 +42,7 @@ bool HasUniformParameters(const Material& material) {
 bool ComputeUsesFootprint(const Material& material) {
     bool uses = false;
     ForEachTexture(material, [&](const auto& t) { uses |= t.UsesFootprint(); });
+    uses |= material.Perturbation().UsesFootprint();
     if (const MixMaterial* mix = material.GetIf<MixMaterial>())
         uses |= mix->GetMaterial(0).UsesFootprint() || mix->GetMaterial(1).UsesFootprint();
     return uses;

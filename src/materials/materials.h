@@ -12,6 +12,7 @@
 
 #include "materials/bxdfs/bxdf.h"
 #include "materials/material.h"
+#include "materials/shading_perturbation.h"
 #include "materials/thermal_properties.h"
 #include "spectral/spectrum.h"
 #include "textures/texture.h"
@@ -22,7 +23,8 @@ namespace kiln {
 // its textures need, decided at creation.
 struct MaterialBase {
     ThermalProperties thermal;
-    bool usesFootprint = false;  // a texture filters or antialiases with the footprint
+    bool usesFootprint = false;        // a texture filters or antialiases with the footprint
+    ShadingPerturbation perturbation;  // bump or normal map (none for mix and interface)
 };
 
 // Calls f(const FloatTexture&) or f(const SpectrumTexture&) for every texture of the material

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "lights/thermal_emission.h"
+#include "materials/shading_perturbation.h"
 
 namespace kiln {
 
@@ -55,11 +56,13 @@ BSDF SceneShader::GetBSDF(SurfaceInteraction& si, SampledWavelengths& lambda) co
         si.dudy = finiteOr0((ata11 * atb0y - ata01 * atb1y) * invDet);
         si.dvdy = finiteOr0((ata00 * atb1y - ata01 * atb0y) * invDet);
     }
-    MaterialEvalContext ctx(si);
-    const Material* material = si.material->ChooseMaterial(ctx);
+    const Material* material = si.material->ChooseMaterial(MaterialEvalContext(si));
     si.material = material;
     if (!material || material->IsInterface()) return {};
-    return material->GetBSDF(ctx, lambda);
+    // Bump or normal map: the shading frame the BSDF (and emission) is built in
+    if (const ShadingPerturbation& p = material->Perturbation(); p.Any())
+        ApplyShadingPerturbation(p, si);
+    return material->GetBSDF(MaterialEvalContext(si), lambda);
 }
 
 // Scene

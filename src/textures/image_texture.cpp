@@ -22,6 +22,17 @@ void ImageTextureCache::Insert(const std::string& key, const MIPMap* mipmap) {
     mipmaps.emplace(key, mipmap);
 }
 
+const Image* ImageTextureCache::FindImage(const std::string& filename) const {
+    std::lock_guard<std::mutex> lock(mutex);
+    auto it = images.find(filename);
+    return it == images.end() ? nullptr : it->second;
+}
+
+void ImageTextureCache::InsertImage(const std::string& filename, const Image* image) {
+    std::lock_guard<std::mutex> lock(mutex);
+    images.emplace(filename, image);
+}
+
 // ImageTextureBase Method Definitions
 const MIPMap* ImageTextureBase::GetOrCreateMIPMap(const TextureParameterDictionary& params,
                                                   const FileLoc& loc, ObjectArena& arena) {

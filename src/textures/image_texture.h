@@ -16,19 +16,24 @@
 namespace kiln {
 
 class MIPMap;
+class Image;
 
 // ImageTextureCache Definition
 // MIP maps shared by image textures with the same file and lookup options (filter, maximum
 // anisotropy, wrap mode, encoding). Thread-safe. The MIP maps live in the ObjectArena they
-// were created in.
+// were created in; so do the images.
 class ImageTextureCache {
   public:
     const MIPMap* Find(const std::string& key) const;
     void Insert(const std::string& key, const MIPMap* mipmap);
+    // Plain images by file name (materials' normal maps).
+    const Image* FindImage(const std::string& filename) const;
+    void InsertImage(const std::string& filename, const Image* image);
 
   private:
     mutable std::mutex mutex;
     std::map<std::string, const MIPMap*> mipmaps;
+    std::map<std::string, const Image*> images;
 };
 
 // ImageTextureBase Definition

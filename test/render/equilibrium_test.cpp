@@ -3,7 +3,8 @@
 // and geometry, because emission is 1 - albedo of the very BSDF that scatters. Each case puts
 // one large object of the tested material (a sphere, or a low-poly triangle mesh with smooth
 // per-vertex shading normals) in front of the camera inside a closed wall (a textured diffuse
-// sphere, or a mesh with shading normals too), at 1000 K and 5000 K. The image mean must be
+// sphere, or a mesh with shading normals too), at 1000 K and 5000 K; one case bump-maps the
+// object, so that its shading frame departs far from the geometric one. The image mean must be
 // B(T) within 4 standard errors of the pixel noise (plus 1e-3 for the tables), and the test
 // renders enough samples for that to be tighter than 0.5 %.
 #include <gtest/gtest.h>
@@ -36,6 +37,7 @@ std::string Cavity(const Case& c, bool meshes, double T, int spp) {
          " \"rgb tex1\" [0.9 0.8 0.7] \"rgb tex2\" [0.1 0.2 0.05]\n"
       << "Texture \"rough\" \"float\" \"checkerboard\" \"float uscale\" 6 \"float vscale\" 6"
          " \"float tex1\" 0.001 \"float tex2\" 0.5\n"
+      << "Texture \"bumps\" \"float\" \"wrinkled\" \"integer octaves\" 4\n"
       << "MakeNamedMaterial \"gold\" \"string type\" \"conductor\" \"spectrum eta\" "
          "\"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\" \"float roughness\" 0.05\n"
       << "MakeNamedMaterial \"checks\" \"string type\" \"diffuse\" \"texture reflectance\" "
@@ -87,6 +89,9 @@ const Case kCases[] = {
     {"coatedconductor",
      "\"coatedconductor\" \"float interface.roughness\" 0.05 "
      "\"float conductor.roughness\" 0.2"},
+    {"gold, bump-mapped",
+     "\"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" "
+     "\"metal-Au-k\" \"float roughness\" 0.05 \"texture displacement\" \"bumps\""},
     {"mix gold/diffuse",
      "\"mix\" \"string materials\" [\"gold\" \"checks\"] "
      "\"float amount\" 0.4"},
@@ -143,7 +148,7 @@ INSTANTIATE_TEST_SUITE_P(Cavities, Equilibrium,
 INSTANTIATE_TEST_SUITE_P(Cavities, PolarizedEquilibrium,
                          ::testing::Combine(::testing::Values(kCases[0], kCases[1], kCases[2],
                                                               kCases[3], kCases[4], kCases[5],
-                                                              kCases[6], kCases[8]),
+                                                              kCases[6], kCases[8], kCases[9]),
                                             ::testing::Bool()),
                          testing::CavityCaseName<Case>);
 

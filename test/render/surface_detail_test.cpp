@@ -1,0 +1,78 @@
+// pbrt-v4's surface detail in whole renders, against what it stands for: a normal map or bump
+// map tilting a diffuse plane's shading normal by theta dims it, under a light along the
+// geometric normal, by exactly cos(theta) (direct light only, so the images are noise-free).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "core/image/image.h"
+#include "render_test_util.h"
+
+namespace kiln {
+namespace {
+
+// A diffuse square (uv over [0, 1]^2) filling an orthographic view, lit by a distant light
+// along its normal; `material` is appended to the diffuse material's parameters.
+std::string LitSquare(const std::string& material, const std::string& preamble = "") {
+    std::ostringstream s;
+    s << "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\n"
+      << "Sampler \"independent\" \"integer pixelsamples\" 4\n"
+      << "Integrator \"path\" \"integer maxdepth\" 1\n"
+      << "LookAt 0.5 0.5 5  0.5 0.5 0  0 1 0\n"
+      << "Camera \"orthographic\" \"float screenwindow\" [-0.4 0.4 -0.4 0.4]\n"
+      << "WorldBegin\n"
+      << "LightSource \"distant\" \"point3 from\" [0 0 1] \"point3 to\" [0 0 0] "
+         "\"rgb L\" [1 1 1]\n"
+      << preamble << "Material \"diffuse\" \"rgb reflectance\" [0.5 0.5 0.5] " << material << "\n"
+      << "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] "
+         "\"point3 P\" [0 0 0 1 0 0 1 1 0 0 1 0] \"point2 uv\" [0 0 1 0 1 1 0 1]\n";
+    return s.str();
+}
+
+double MeanY(const std::string& scene) {
+    testing::RenderedScene r = testing::RenderText(scene);
+    for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
+    EXPECT_EQ(r.scene->film->NonFiniteSampleCount(), 0);
+    RunningStats s;
+    Bounds2i b = r.scene->film->PixelBounds();
+    for (int y = b.pMin.y; y < b.pMax.y; ++y)
+        for (int x = b.pMin.x; x < b.pMax.x; ++x) s.Add(testing::PixelY(*r.scene, {x, y}));
+    return s.Mean();
+}
+
+TEST(SurfaceDetailRender, NormalMapDimsByTheCosineOfItsTilt) {
+    const double flat = MeanY(LitSquare(""));
+    ASSERT_GT(flat, 0);
+    for (double degrees : {20.0, 50.0}) {
+        // A 2 x 2 map tilting the normal towards +v (green) by `degrees`
+        std::string file =
+            ::testing::TempDir() + "/kiln_tilt_" + std::to_string(int(degrees)) + ".exr";
+        Image image(PixelFormat::Float, {2, 2}, {"R", "G", "B"});
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 2; ++x) {
+                image.SetChannel({x, y}, 0, 0.5f);
+                image.SetChannel({x, y}, 1, 0.5f + 0.5f * std::sin(Radians(float(degrees))));
+                image.SetChannel({x, y}, 2, 0.5f + 0.5f * std::cos(Radians(float(degrees))));
+            }
+        image.Write(file);
+        double tilted = MeanY(LitSquare("\"string normalmap\" \"" + file + "\""));
+        EXPECT_NEAR(tilted / flat, std::cos(Radians(degrees)), 2e-3) << degrees;
+    }
+}
+
+TEST(SurfaceDetailRender, BumpMapDimsByTheCosineOfItsSlope) {
+    const double flat = MeanY(LitSquare(""));
+    // d = 0.6 u: slope 0.6 along u, cos(theta) = 1 / sqrt(1 + 0.36)
+    std::string bump =
+        "Texture \"ramp\" \"float\" \"bilerp\" \"float v00\" 0 \"float v10\" 0.6 "
+        "\"float v01\" 0 \"float v11\" 0.6\n";
+    double bumped = MeanY(LitSquare("\"texture displacement\" \"ramp\"", bump));
+    EXPECT_NEAR(bumped / flat, 1 / std::sqrt(1 + 0.36), 2e-3);
+    // A constant displacement of a plane changes nothing
+    double lifted = MeanY(LitSquare("\"float displacement\" 0.3"));
+    EXPECT_NEAR(lifted / flat, 1, 1e-4);
+}
+
+}  // namespace
+}  // namespace kiln
