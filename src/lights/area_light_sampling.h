@@ -6,6 +6,8 @@
 #include <cmath>
 #include <optional>
 
+#include "core/base/rng.h"
+#include "core/geometry/alpha_mask.h"
 #include "core/geometry/shape.h"
 #include "lights/light_sample.h"
 
@@ -23,6 +25,12 @@ std::optional<LightLiSample> SampleAreaLi(const Shape& shape, const LightSampleC
     SampledSpectrum Le = L(ss->intr.p, ss->intr.n, ss->intr.uv, -wi);
     if (!Le) return {};
     return LightLiSample{Le, wi, ss->pdf, ss->intr};
+}
+
+// Whether a light's sampled point p (leaving towards w) is cut out of its shape (pbrt-v4's
+// AreaLight::AlphaMasked, the uniform number a hash of p).
+inline bool IsCutOut(const Shape& shape, const AlphaMask& alpha, Point3f p, Vector3f w) {
+    return alpha.Masked(TextureEvalContext(shape.InteractionAt(p, 0, w)), HashToUniform(Hash(p)));
 }
 
 // Solid-angle density of SampleAreaLi choosing direction wi (0 where it is not finite).

@@ -2,6 +2,7 @@
 
 #include "lights/area_light_sampling.h"
 
+#include "core/geometry/alpha_mask.h"
 #include "core/geometry/shape.h"
 #include "spectral/color.h"
 
@@ -9,8 +10,9 @@ namespace kiln {
 
 DiffuseAreaLight::DiffuseAreaLight(const Transform&, Spectrum Lemit, Float scale,
                                    const Shape* shape, bool twoSided, Image image,
-                                   const RGBColorSpace* imageColorSpace)
+                                   const RGBColorSpace* imageColorSpace, const AlphaMask* alpha)
     : shape(shape),
+      alpha(alpha),
       area(shape->Area()),
       twoSided(twoSided),
       Lemit(std::move(Lemit)),
@@ -37,6 +39,7 @@ std::optional<LightLiSample> DiffuseAreaLight::SampleLi(const LightSampleContext
                                                         const SampledWavelengths& lambda,
                                                         bool) const {
     return SampleAreaLi(*shape, ctx, u, [&](Point3f p, Normal3f n, Point2f uv, Vector3f w) {
+        if (alpha && IsCutOut(*shape, *alpha, p, w)) return SampledSpectrum(0);
         return L(p, n, uv, w, lambda);
     });
 }

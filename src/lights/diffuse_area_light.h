@@ -14,6 +14,7 @@
 namespace kiln {
 
 class Shape;
+class AlphaMask;
 class RGBColorSpace;
 
 class DiffuseAreaLight {
@@ -21,9 +22,12 @@ class DiffuseAreaLight {
     // shape must outlive the light (the scene's arena holds both). With a non-empty image
     // (R, G, B channels in imageColorSpace) emission comes from the image at
     // (u, 1 - v), bilinearly filtered, as pbrt-v4; Lemit is then unused.
+    // alpha (the shape's cut-outs, nullptr: none) makes light sampling skip points where the
+    // shape is cut out; rays never hit such points in the first place.
     DiffuseAreaLight(const Transform& renderFromLight, Spectrum Lemit, Float scale,
                      const Shape* shape, bool twoSided, Image image = {},
-                     const RGBColorSpace* imageColorSpace = nullptr);
+                     const RGBColorSpace* imageColorSpace = nullptr,
+                     const AlphaMask* alpha = nullptr);
 
     LightType Type() const { return LightType::Area; }
     const Shape& GetShape() const { return *shape; }
@@ -49,6 +53,7 @@ class DiffuseAreaLight {
 
   private:
     const Shape* shape;
+    const AlphaMask* alpha;
     Float area;
     bool twoSided;
     Spectrum Lemit;

@@ -40,6 +40,8 @@
 
 namespace kiln {
 
+class AlphaMask;
+
 class ParameterDictionary;
 class Shape;
 class Diagnostics;
@@ -166,9 +168,11 @@ class Light {
                                        ObjectArena& arena, Diagnostics& diag);
     // AreaLightSource "diffuse" (L, scale, power, twosided, filename) on `shape`; other names
     // throw SceneError. (Thermal lights are made by scene creation: render/scene_lights.h.)
+    // alpha: the shape's cut-outs (nullptr: none), skipped by light sampling.
     static Light CreateArea(const std::string& name, const ParameterDictionary& params,
                             const Transform& renderFromLight, const Shape& shape,
-                            const FileLoc& loc, ObjectArena& arena, Diagnostics& diag);
+                            const FileLoc& loc, ObjectArena& arena, Diagnostics& diag,
+                            const AlphaMask* alpha = nullptr);
 
   private:
     Kind kind;

@@ -214,7 +214,7 @@ std::optional<Light> Light::Create(const std::string& name, const ParameterDicti
 // Light::CreateArea
 Light Light::CreateArea(const std::string& name, const ParameterDictionary& params,
                         const Transform& renderFromLight, const Shape& shape, const FileLoc& loc,
-                        ObjectArena& arena, Diagnostics& diag) {
+                        ObjectArena& arena, Diagnostics& diag, const AlphaMask* alpha) {
     if (name != "diffuse") throw SceneError(loc, "unknown area light type", name);
 
     const RGBColorSpace& cs = ColorSpaceOf(params);
@@ -259,7 +259,7 @@ Light Light::CreateArea(const std::string& name, const ParameterDictionary& para
 
     const Shape* s = arena.New<Shape>(shape);
     Light light = arena.New<DiffuseAreaLight>(renderFromLight, std::move(Le), scale, s, twoSided,
-                                              std::move(image), imageCS);
+                                              std::move(image), imageCS, alpha);
     params.ReportUnused(diag);
     return light;
 }

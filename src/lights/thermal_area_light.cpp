@@ -1,5 +1,8 @@
 #include "lights/thermal_area_light.h"
 
+#include "core/base/rng.h"
+#include "core/geometry/alpha_mask.h"
+
 #include <cmath>
 #include <vector>
 
@@ -47,8 +50,9 @@ SurfaceInteraction ThermalAreaLight::InteractionAt(Point3f p, Float time, Vector
 
 ThermalAreaLight::ThermalAreaLight(const Shape* shape, const Material* material,
                                    const ThermalEmission* emission, const SurfaceShader* shader,
-                                   std::optional<Uniform> uniform, bool powerSampling)
-    : shape(shape), material(material), emission(emission), shader(shader) {
+                                   std::optional<Uniform> uniform, bool powerSampling,
+                                   const AlphaMask* alpha)
+    : shape(shape), alpha(alpha), material(material), emission(emission), shader(shader) {
     area = shape->Area();
     if (!(area > 0)) return;
     if (uniform) {
@@ -170,6 +174,8 @@ Radiance ThermalAreaLight::EmissionAt(Point3f p, Vector3f w, const SampledWavele
     // The BSDF built as at a ray hit (on a copy of the wavelengths: the receiving path keeps
     // all of its own)
     SurfaceInteraction si = InteractionAt(p, 0, w);
+    // Cut out of the shape: nothing there to emit (rays never hit such points)
+    if (alpha && alpha->Masked(TextureEvalContext(si), HashToUniform(Hash(p)))) return {};
     SampledWavelengths l = lambda;
     BSDF bsdf = shader->GetBSDF(si, l);
     if (interaction) *interaction = si;

@@ -21,6 +21,7 @@
 namespace kiln {
 
 class Shape;
+class AlphaMask;
 class Material;
 class SurfaceShader;
 
@@ -36,9 +37,10 @@ class ThermalAreaLight {
     // shape, material (the shape's), emission and shader must outlive the light. Estimates
     // the light's power and, where it varies over the shape and powerSampling is set, builds
     // the sampling distribution; with `uniform` given, takes the caller's exitance instead.
+    // alpha: the shape's cut-outs (nullptr: none), where sampled points emit nothing.
     ThermalAreaLight(const Shape* shape, const Material* material, const ThermalEmission* emission,
                      const SurfaceShader* shader, std::optional<Uniform> uniform = std::nullopt,
-                     bool powerSampling = true);
+                     bool powerSampling = true, const AlphaMask* alpha = nullptr);
 
     LightType Type() const { return LightType::Area; }
     const ThermalEmission& Emission() const { return *emission; }
@@ -81,6 +83,7 @@ class ThermalAreaLight {
     std::optional<Float> ParametricPDF(Point3f p) const;
 
     const Shape* shape;
+    const AlphaMask* alpha = nullptr;
     const Material* material;
     const ThermalEmission* emission;
     const SurfaceShader* shader;

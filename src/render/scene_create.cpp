@@ -11,6 +11,7 @@
 #include "render/scene_media.h"
 #include "spectral/color.h"
 #include "textures/basic_textures.h"
+#include "textures/texture_alpha_mask.h"
 #include "textures/texture_parameter_dictionary.h"
 
 namespace kiln {
@@ -237,6 +238,7 @@ struct SceneShapes {
     std::vector<Shape> shapes;
     ShapeHeat heat;
     MediumInterface media;
+    const AlphaMask* alpha = nullptr;  // cut-outs ("alpha"), nullptr: opaque
 };
 
 SceneShapes CreateShapes(ShapeSceneEntity& s, const NamedTextures& textures,
@@ -246,6 +248,7 @@ SceneShapes CreateShapes(ShapeSceneEntity& s, const NamedTextures& textures,
     result.media = ShapeMedia(s, media);
     TextureParameterDictionary params(&s.parameters, &textures);
     ThermalProperties own = ReadThermalProperties(params, s.name == "trianglemesh", arena);
+    result.alpha = TextureAlphaMask::Read(params, arena);
     const kiln::Transform* renderFromObject = arena.New<kiln::Transform>(s.renderFromObject);
     const kiln::Transform* objectFromRender =
         arena.New<kiln::Transform>(Inverse(s.renderFromObject));
@@ -278,11 +281,13 @@ std::vector<std::vector<int>> CreateLights(Scene& scene, SceneDescription& desc,
                           "area light \"" + le.name + "\" is not supported; using \"diffuse\"");
             for (const Shape& shape : shapes[i].shapes) {
                 shapeLights[i].push_back(int(scene.lights.size()));
-                scene.lights.push_back(Light::CreateArea(
-                    "diffuse", le.parameters, le.renderFromObject, shape, le.loc, arena, diag));
+                scene.lights.push_back(Light::CreateArea("diffuse", le.parameters,
+                                                         le.renderFromObject, shape, le.loc, arena,
+                                                         diag, shapes[i].alpha));
             }
         } else if (shapes[i].heat.emission) {
-            shapeLights[i] = emitters.CreateLights(shapes[i].shapes, shapes[i].heat, scene.lights);
+            shapeLights[i] = emitters.CreateLights(shapes[i].shapes, shapes[i].heat, scene.lights,
+                                                   shapes[i].alpha);
             scene.thermalEmitterCount += int(shapeLights[i].size());
         }
     }
@@ -307,7 +312,7 @@ void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<Sce
     for (size_t i = 0; i < desc.shapes.size(); ++i) {
         if (shapes[i].shapes.empty()) continue;
         scene.aggregate->Add(shapes[i].shapes, shapes[i].heat.material, shapeLights[i],
-                             shapes[i].heat.emission, shapes[i].media);
+                             shapes[i].heat.emission, shapes[i].media, shapes[i].alpha);
         scene.shapeCount += int(shapes[i].shapes.size());
     }
     std::map<std::string, int> definitionIds;
@@ -322,7 +327,7 @@ void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<Sce
                 if (!defShapes.shapes.empty())
                     scene.aggregate->AddToInstanceDefinition(
                         id, defShapes.shapes, defShapes.heat.material, defShapes.heat.emission,
-                        defShapes.media);
+                        defShapes.media, defShapes.alpha);
             }
             it = definitionIds.emplace(inst.name, id).first;
         }

@@ -82,7 +82,7 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
 }
 
 std::vector<int> ThermalEmitters::CreateLights(std::span<const Shape> shapes, const ShapeHeat& heat,
-                                               std::vector<Light>& lights) {
+                                               std::vector<Light>& lights, const AlphaMask* alpha) {
     std::vector<int> indices;
 #if KILN_THERMAL_EMISSION
     if (!heat.emission || shapes.empty()) return indices;
@@ -106,14 +106,14 @@ std::vector<int> ThermalEmitters::CreateLights(std::span<const Shape> shapes, co
     tbb::parallel_for(size_t(0), shapes.size(), [&](size_t i) {
         const Shape* stored = arena.New<Shape>(shapes[i]);
         created[i] = arena.New<ThermalAreaLight>(stored, heat.material, heat.emission, &shader,
-                                                 uniform, powerSampling);
+                                                 uniform, powerSampling, alpha);
     });
     for (const ThermalAreaLight* light : created) {
         indices.push_back(int(lights.size()));
         lights.push_back(Light(light));
     }
 #else
-    (void)shapes, (void)heat, (void)lights;
+    (void)shapes, (void)heat, (void)lights, (void)alpha;
 #endif
     return indices;
 }

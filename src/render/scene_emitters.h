@@ -48,9 +48,10 @@ class ThermalEmitters {
     // shapes = what it created. A shape with an area light keeps the area light (warning).
     ShapeHeat Heat(const ShapeSceneEntity& entity, const ThermalProperties& own,
                    const Material* material, std::span<const Shape> shapes, bool hasAreaLight);
-    // One light per shape, appended to lights; returns their indices.
+    // One light per shape, appended to lights; returns their indices. alpha: the shapes'
+    // cut-outs (nullptr: none).
     std::vector<int> CreateLights(std::span<const Shape> shapes, const ShapeHeat& heat,
-                                  std::vector<Light>& lights);
+                                  std::vector<Light>& lights, const AlphaMask* alpha = nullptr);
     // Materials whose emissivity was tabulated, and the time that took (s).
     int TabulatedMaterials() const { return int(albedos.size()); }
     double TableSeconds() const { return tableSeconds; }

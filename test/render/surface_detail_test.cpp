@@ -1,6 +1,8 @@
 // pbrt-v4's surface detail in whole renders, against what it stands for: a normal map or bump
 // map tilting a diffuse plane's shading normal by theta dims it, under a light along the
-// geometric normal, by exactly cos(theta) (direct light only, so the images are noise-free).
+// geometric normal, by exactly cos(theta) (direct light only, so the images are noise-free);
+// a shape with alpha a lets 1 - a of the light through its shadow (each surface of a sphere
+// separately), and an area light with alpha a emits a of its light, whichever way paths find it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -72,6 +74,95 @@ TEST(SurfaceDetailRender, BumpMapDimsByTheCosineOfItsSlope) {
     // A constant displacement of a plane changes nothing
     double lifted = MeanY(LitSquare("\"float displacement\" 0.3"));
     EXPECT_NEAR(lifted / flat, 1, 1e-4);
+}
+
+// A diffuse floor (z = 0, viewed from above over [0, 1]^2) lit by a distant light from
+// (1, 0, 1); `occluder` sits in the light's path (around x + 1 at height 1), out of view.
+std::string ShadowedFloor(const std::string& occluder, int spp) {
+    std::ostringstream s;
+    s << "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\n"
+      << "Sampler \"independent\" \"integer pixelsamples\" " << spp << "\n"
+      << "Integrator \"path\" \"integer maxdepth\" 1\n"
+      << "LookAt 0.5 0.5 0.5  0.5 0.5 0  0 1 0\n"
+      << "Camera \"orthographic\" \"float screenwindow\" [-0.5 0.5 -0.5 0.5]\n"
+      << "WorldBegin\n"
+      << "LightSource \"distant\" \"point3 from\" [1 0 1] \"point3 to\" [0 0 0] "
+         "\"rgb L\" [1 1 1]\n"
+      << "Material \"diffuse\"\n"
+      << "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] "
+         "\"point3 P\" [-1 -1 0 2 -1 0 2 2 0 -1 2 0]\n"
+      << occluder << "\n";
+    return s.str();
+}
+
+// Mean pixel luminance and its standard error over pixels.
+std::pair<double, double> MeanAndError(const std::string& scene) {
+    testing::RenderedScene r = testing::RenderText(scene);
+    for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
+    EXPECT_EQ(r.scene->film->NonFiniteSampleCount(), 0);
+    RunningStats s;
+    Bounds2i b = r.scene->film->PixelBounds();
+    for (int y = b.pMin.y; y < b.pMax.y; ++y)
+        for (int x = b.pMin.x; x < b.pMax.x; ++x) s.Add(testing::PixelY(*r.scene, {x, y}));
+    return {s.Mean(), s.StandardError()};
+}
+
+TEST(AlphaRender, ShadowsPassOneMinusAlphaPerSurface) {
+    const int spp = 256;
+    const double lit = MeanAndError(ShadowedFloor("", spp)).first;
+    ASSERT_GT(lit, 0);
+    // An opaque square at height 1 over x in [0.8, 2.2] shadows the whole view
+    auto square = [](const std::string& alpha) {
+        return "Shape \"trianglemesh\" " + alpha +
+               " \"integer indices\" [0 1 2 0 2 3] "
+               "\"point3 P\" [0.8 -1 1 2.2 -1 1 2.2 2 1 0.8 2 1] \"point2 uv\" [0 0 1 0 1 1 0 1]";
+    };
+    EXPECT_EQ(MeanAndError(ShadowedFloor(square(""), spp)).first, 0);
+    EXPECT_EQ(MeanAndError(ShadowedFloor(square("\"float alpha\" 0"), spp)).first, lit);
+    // Alpha 0.3 everywhere, or from a texture: the light passes 70 % of the time
+    std::string ramp =
+        "Texture \"a\" \"float\" \"bilerp\" \"float v00\" 0.3 \"float v10\" 0.3 "
+        "\"float v01\" 0.3 \"float v11\" 0.3\n";
+    for (const std::string& occluder :
+         {square("\"float alpha\" 0.3"), ramp + square("\"texture alpha\" \"a\"")}) {
+        auto [m, se] = MeanAndError(ShadowedFloor(occluder, spp));
+        EXPECT_NEAR(m / lit, 0.7, 4 * se / lit) << occluder;
+        EXPECT_LT(4 * se / lit, 0.02);
+    }
+    // A sphere (quadric, Embree user geometry) covering the view's shadow: each of its two
+    // surfaces passes 70 %, together 49 %
+    std::string sphere =
+        "AttributeBegin Translate 2 0.5 1.5 Shape \"sphere\" \"float radius\" 1 "
+        "\"float alpha\" 0.3 AttributeEnd";
+    auto [m, se] = MeanAndError(ShadowedFloor(sphere, spp));
+    EXPECT_NEAR(m / lit, 0.49, 4 * se / lit);
+}
+
+TEST(AlphaRender, AreaLightWithAlphaEmitsItsFraction) {
+    // A floor lit by a square area light above it, with light sampling and BSDF sampling
+    // both finding the light (MIS): alpha 0.4 must give 40 % of the opaque light's image
+    auto scene = [](const std::string& alpha) {
+        std::ostringstream s;
+        s << "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\n"
+          << "Sampler \"independent\" \"integer pixelsamples\" 256\n"
+          << "Integrator \"path\" \"integer maxdepth\" 1\n"
+          << "LookAt 0 0 0.5  0 0 0  0 1 0\n"
+          << "Camera \"orthographic\" \"float screenwindow\" [-0.5 0.5 -0.5 0.5]\n"
+          << "WorldBegin\nMaterial \"diffuse\"\n"
+          << "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] "
+             "\"point3 P\" [-2 -2 0 2 -2 0 2 2 0 -2 2 0]\n"
+          << "AttributeBegin AreaLightSource \"diffuse\" \"rgb L\" [1 1 1] "
+          << "ReverseOrientation Translate 0 0 1 Shape \"bilinearmesh\" " << alpha
+          << " \"point3 P\" [-1 -1 0 1 -1 0 -1 1 0 1 1 0] AttributeEnd\n";
+        return s.str();
+    };
+    auto [opaque, seOpaque] = MeanAndError(scene(""));
+    ASSERT_GT(opaque, 0);
+    auto [m, se] = MeanAndError(scene("\"float alpha\" 0.4"));
+    double tol = 4 * std::hypot(se / opaque, 0.4 * seOpaque / opaque);
+    EXPECT_LT(tol, 0.03);
+    EXPECT_NEAR(m / opaque, 0.4, tol);
+    EXPECT_EQ(MeanAndError(scene("\"float alpha\" 0")).first, 0);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/base/rng.h"
 #include "core/geometry/shape_util.h"
 
 namespace kiln {
@@ -26,7 +27,8 @@ struct GeomRecord {
     std::vector<int> lights;  // primID -> index of the light in the scene's list; empty: none
     const ThermalEmission* thermal = nullptr;
     MediumInterface media;
-    Transform renderFromInstance;  // Instance
+    const AlphaMask* alpha = nullptr;  // cut-outs; nullptr: opaque
+    Transform renderFromInstance;      // Instance
 };
 
 struct SceneBVH {
@@ -55,12 +57,37 @@ Ray RayFromEmbree(const RTCRay& r) {
     return Ray(Point3f(r.org_x, r.org_y, r.org_z), Vector3f(r.dir_x, r.dir_y, r.dir_z), r.time);
 }
 
+// The closest hit of a user-geometry shape beyond which alpha does not cut out (pbrt-v4's
+// GeometricPrimitive::Intersect: a cut-out hit continues the ray from there); the uniform
+// number of the stochastic test is a hash of the ray from each hit on. A shape has at most a few
+// hits along a ray (two for quadrics and bilinear patches); the loop is bounded all the same.
+std::optional<ShapeIntersection> UserHit(const GeomRecord& rec, unsigned primID, Ray ray,
+                                         Float tMax) {
+    const Shape& shape = rec.shapes[primID];
+    Float tOffset = 0;
+    for (int k = 0; k < 8; ++k) {
+        std::optional<ShapeIntersection> si = shape.Intersect(ray, tMax);
+        if (!si) return std::nullopt;
+        if (!rec.alpha || !rec.alpha->Masked(TextureEvalContext(si->intr),
+                                             HashToUniform(Hash(ray.o, ray.d, primID, k)))) {
+            si->tHit += tOffset;
+            return si;
+        }
+        // Continue from just beyond the cut-out point; t keeps the units of ray.d
+        Ray next = si->intr.SpawnRay(ray.d);
+        tOffset += si->tHit;
+        tMax -= si->tHit;
+        if (!(tMax > 0)) return std::nullopt;
+        ray = next;
+    }
+    return std::nullopt;
+}
+
 void UserIntersect(const RTCIntersectFunctionNArguments* args) {
     if (args->N != 1 || !args->valid[0]) return;
     auto* rec = static_cast<const GeomRecord*>(args->geometryUserPtr);
     auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
-    Ray ray = RayFromEmbree(rh->ray);
-    auto si = rec->shapes[args->primID].Intersect(ray, rh->ray.tfar);
+    auto si = UserHit(*rec, args->primID, RayFromEmbree(rh->ray), rh->ray.tfar);
     if (!si || si->tHit <= rh->ray.tnear) return;
     rh->ray.tfar = si->tHit;
     rh->hit.Ng_x = si->intr.n.x, rh->hit.Ng_y = si->intr.n.y, rh->hit.Ng_z = si->intr.n.z;
@@ -76,8 +103,40 @@ void UserOccluded(const RTCOccludedFunctionNArguments* args) {
     if (args->N != 1 || !args->valid[0]) return;
     auto* rec = static_cast<const GeomRecord*>(args->geometryUserPtr);
     auto* r = reinterpret_cast<RTCRay*>(args->ray);
-    if (rec->shapes[args->primID].IntersectP(RayFromEmbree(*r), r->tfar))
-        r->tfar = -std::numeric_limits<float>::infinity();
+    Ray ray = RayFromEmbree(*r);
+    bool hit = rec->alpha ? UserHit(*rec, args->primID, ray, r->tfar).has_value()
+                          : rec->shapes[args->primID].IntersectP(ray, r->tfar);
+    if (hit) r->tfar = -std::numeric_limits<float>::infinity();
+}
+
+// Embree's filter for triangles with alpha (closest-hit and shadow queries alike): rejects a
+// candidate hit where the surface is cut out. The uniform number hashes the ray and the
+// triangle, so each surface along a ray gets its own.
+void TriangleAlphaFilter(const RTCFilterFunctionNArguments* args) {
+    if (args->N != 1 || !args->valid[0]) return;
+    auto* rec = static_cast<const GeomRecord*>(args->geometryUserPtr);
+    RTCRayN* ray = args->ray;
+    RTCHitN* hit = args->hit;
+    unsigned prim = RTCHitN_primID(hit, 1, 0);
+    int tri = rec->triIndices.empty() ? int(prim) : rec->triIndices[prim];
+    Float b1 = Clamp(RTCHitN_u(hit, 1, 0), 0, 1), b2 = Clamp(RTCHitN_v(hit, 1, 0), 0, 1);
+    if (b1 + b2 > 1) b1 /= (b1 + b2), b2 = 1 - b1;
+    std::array<Float, 3> b = {1 - b1 - b2, b1, b2};
+    Float time = RTCRayN_time(ray, 1, 0);
+    Interaction it = Triangle(rec->mesh, tri).PointAt(b, time);
+    TextureEvalContext ctx;
+    ctx.p = it.p;
+    ctx.n = it.n;
+    ctx.uv = it.uv;
+    ctx.time = time;
+    ctx.faceIndex = rec->mesh->faceIndices.empty() ? 0 : rec->mesh->faceIndices[size_t(tri)];
+    ctx.mesh = rec->mesh;
+    ctx.triIndex = tri;
+    ctx.b = b;
+    Float u = HashToUniform(Hash(RTCRayN_org_x(ray, 1, 0), RTCRayN_org_y(ray, 1, 0),
+                                 RTCRayN_org_z(ray, 1, 0), RTCRayN_dir_x(ray, 1, 0),
+                                 RTCRayN_dir_y(ray, 1, 0), RTCRayN_dir_z(ray, 1, 0), tri));
+    if (rec->alpha->Masked(ctx, u)) args->valid[0] = 0;
 }
 
 void ErrorCallback(void*, RTCError code, const char* message) {
@@ -111,13 +170,14 @@ struct Accelerator::Impl {
     }
     void AddShapes(SceneBVH& s, std::span<const Shape> shapes, const Material* material,
                    std::span<const int> areaLights, const ThermalEmission* thermal,
-                   MediumInterface media);
+                   MediumInterface media, const AlphaMask* alpha);
 };
 
 // Adding shapes
 void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
                                   const Material* material, std::span<const int> areaLights,
-                                  const ThermalEmission* thermal, MediumInterface media) {
+                                  const ThermalEmission* thermal, MediumInterface media,
+                                  const AlphaMask* alpha) {
     primitives += shapes.size();
     bool haveLights = !areaLights.empty();
     // Triangles grouped by mesh (first-seen order), everything else as one user geometry.
@@ -143,6 +203,7 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
         rec->material = material;
         rec->thermal = thermal;
         rec->media = media;
+        rec->alpha = alpha;
         // All of the mesh's triangles in order (the usual case): Embree shares the mesh's
         // index buffer and no per-triangle index is kept
         bool identity = int(idx.size()) == mesh->nTriangles;
@@ -174,6 +235,10 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
                 for (int j = 0; j < 3; ++j) ib[3 * k + j] = unsigned(v[j]);
             }
         }
+        if (alpha) {
+            rtcSetGeometryIntersectFilterFunction(g, TriangleAlphaFilter);
+            rtcSetGeometryOccludedFilterFunction(g, TriangleAlphaFilter);
+        }
         Attach(s, g, std::move(rec));
     }
     if (!others.empty()) {
@@ -182,6 +247,7 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
         rec->material = material;
         rec->thermal = thermal;
         rec->media = media;
+        rec->alpha = alpha;
         for (size_t i : others) {
             rec->shapes.push_back(shapes[i]);
             if (haveLights) rec->lights.push_back(areaLights[i]);
@@ -221,10 +287,10 @@ Accelerator::~Accelerator() {
 
 void Accelerator::Add(std::span<const Shape> shapes, const Material* material,
                       std::span<const int> lightIndices, const ThermalEmission* thermal,
-                      MediumInterface media) {
+                      MediumInterface media, const AlphaMask* alpha) {
     if (!lightIndices.empty() && lightIndices.size() != shapes.size())
         throw std::invalid_argument("Accelerator::Add: need one light per shape or none");
-    impl->AddShapes(impl->top, shapes, material, lightIndices, thermal, media);
+    impl->AddShapes(impl->top, shapes, material, lightIndices, thermal, media, alpha);
 }
 
 int Accelerator::NewInstanceDefinition() {
@@ -234,8 +300,8 @@ int Accelerator::NewInstanceDefinition() {
 
 void Accelerator::AddToInstanceDefinition(int definition, std::span<const Shape> shapes,
                                           const Material* material, const ThermalEmission* thermal,
-                                          MediumInterface media) {
-    impl->AddShapes(impl->definitions.at(definition), shapes, material, {}, thermal, media);
+                                          MediumInterface media, const AlphaMask* alpha) {
+    impl->AddShapes(impl->definitions.at(definition), shapes, material, {}, thermal, media, alpha);
 }
 
 void Accelerator::AddInstance(int definition, const Transform& renderFromInstance) {

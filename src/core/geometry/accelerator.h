@@ -12,6 +12,7 @@
 
 #include "core/base/transform.h"
 #include "core/base/vecmath.h"
+#include "core/geometry/alpha_mask.h"
 #include "core/geometry/shape.h"
 #include "core/geometry/shape_sample.h"
 
@@ -43,16 +44,17 @@ class Accelerator {
     // of their lights in the scene's light list (empty, or one per shape in the same order),
     // their thermal emission (nullptr when cold) and the media they separate. Shapes,
     // materials and emission must outlive the accelerator; hits report them in
-    // SurfaceInteraction.
+    // SurfaceInteraction. alpha (nullptr: opaque) cuts the shapes out where it is below 1, for
+    // closest hits and shadow rays alike (alpha_mask.h); it must outlive the accelerator.
     void Add(std::span<const Shape> shapes, const Material* material,
              std::span<const int> lightIndices, const ThermalEmission* thermal,
-             MediumInterface media = {});
+             MediumInterface media = {}, const AlphaMask* alpha = nullptr);
     // Object instancing: a definition's shapes are given in the definition's own space (they
     // can glow, but are no lights).
     int NewInstanceDefinition();
     void AddToInstanceDefinition(int definition, std::span<const Shape> shapes,
                                  const Material* material, const ThermalEmission* thermal,
-                                 MediumInterface media = {});
+                                 MediumInterface media = {}, const AlphaMask* alpha = nullptr);
     void AddInstance(int definition, const Transform& renderFromInstance);
     // Builds the BVHs; call once after everything has been added.
     void Commit();

@@ -1,0 +1,25 @@
+// A shape's "alpha" given by a float texture (core/geometry/alpha_mask.h), as pbrt-v4 reads it.
+#pragma once
+
+#include "core/base/object_arena.h"
+#include "core/geometry/alpha_mask.h"
+#include "textures/texture.h"
+
+namespace kiln {
+
+class TextureParameterDictionary;
+
+class TextureAlphaMask : public AlphaMask {
+  public:
+    explicit TextureAlphaMask(FloatTexture alpha) : alpha(alpha) {}
+    Float Alpha(const TextureEvalContext& ctx) const override { return alpha.Evaluate(ctx); }
+
+    // A shape's "float alpha" or "texture alpha" (SceneError for an undefined texture or a
+    // non-finite value); nullptr when absent or a constant >= 1 (opaque, no test at all).
+    static const AlphaMask* Read(const TextureParameterDictionary& params, ObjectArena& arena);
+
+  private:
+    FloatTexture alpha;
+};
+
+}  // namespace kiln
