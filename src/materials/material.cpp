@@ -211,8 +211,8 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
                                 : PolarizingFilterBxDF::Kind::Retarder,
             Radians(angle), Radians(retardance)));
     }
-    if (type == "measured" || type == "hair" || type == "subsurface" ||
-        type == "diffusetransmission") {
+    if (type == "hair") return make(HairMaterial::Create(params, arena, diag));
+    if (type == "measured" || type == "subsurface" || type == "diffusetransmission") {
         diag.Warn(loc, "\"" + type + "\" material is not supported; using diffuse 0.5");
         return make(arena.New<DiffuseMaterial>(arena.New<SpectrumConstantTexture>(Constant(0.5f))));
     }

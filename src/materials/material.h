@@ -25,6 +25,7 @@ class CoatedConductorMaterial;
 class MixMaterial;
 class InterfaceMaterial;
 class PolarizingFilterMaterial;
+class HairMaterial;
 class TextureParameterDictionary;
 struct ThermalProperties;
 struct ShadingPerturbation;
@@ -36,7 +37,7 @@ class Material {
         std::variant<const DiffuseMaterial*, const ConductorMaterial*, const DielectricMaterial*,
                      const ThinDielectricMaterial*, const CoatedDiffuseMaterial*,
                      const CoatedConductorMaterial*, const MixMaterial*, const InterfaceMaterial*,
-                     const PolarizingFilterMaterial*>;
+                     const PolarizingFilterMaterial*, const HairMaterial*>;
 
     template <typename T>
     requires std::is_constructible_v<Kind, const T*> Material(const T* m) : v(m) {}

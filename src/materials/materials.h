@@ -11,21 +11,13 @@
 #include <optional>
 
 #include "materials/bxdfs/bxdf.h"
+#include "materials/hair_material.h"
 #include "materials/material.h"
-#include "materials/shading_perturbation.h"
-#include "materials/thermal_properties.h"
+#include "materials/material_base.h"
 #include "spectral/spectrum.h"
 #include "textures/texture.h"
 
 namespace kiln {
-
-// What every material holds besides its scattering: its heat (thermal_properties.h), and what
-// its textures need, decided at creation.
-struct MaterialBase {
-    ThermalProperties thermal;
-    bool usesFootprint = false;        // a texture filters or antialiases with the footprint
-    ShadingPerturbation perturbation;  // bump or normal map (none for mix and interface)
-};
 
 // Calls f(const FloatTexture&) or f(const SpectrumTexture&) for every texture of the material
 // (of a mix: its amount; its components are materials of their own).
@@ -242,6 +234,12 @@ void ForEachTexture(const Material& material, F&& f) {
         f(p.interfaceURoughness), f(p.interfaceVRoughness), f(p.thickness), f(p.g);
         opt(p.conductorEta), opt(p.k), opt(p.reflectance);
         f(p.conductorURoughness), f(p.conductorVRoughness), f(p.albedo);
+    } else if (const auto* m = material.GetIf<HairMaterial>()) {
+        const HairMaterial::Params& p = m->Parameters();
+        opt(p.sigma_a), opt(p.reflectance);
+        if (p.eumelanin) f(*p.eumelanin);
+        if (p.pheomelanin) f(*p.pheomelanin);
+        f(p.eta), f(p.beta_m), f(p.beta_n), f(p.alpha);
     } else if (const auto* m = material.GetIf<MixMaterial>()) {
         f(m->Amount());
     }

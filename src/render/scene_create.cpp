@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "core/geometry/curve.h"
 #include "core/geometry/triangle.h"
 #include "render/scene.h"
 #include "render/scene_emitters.h"
@@ -239,6 +240,7 @@ struct SceneShapes {
     ShapeHeat heat;
     MediumInterface media;
     const AlphaMask* alpha = nullptr;  // cut-outs ("alpha"), nullptr: opaque
+    const CurveSet* curves = nullptr;  // a "curve" directive (not a Shape)
 };
 
 SceneShapes CreateShapes(ShapeSceneEntity& s, const NamedTextures& textures,
@@ -252,6 +254,20 @@ SceneShapes CreateShapes(ShapeSceneEntity& s, const NamedTextures& textures,
     const kiln::Transform* renderFromObject = arena.New<kiln::Transform>(s.renderFromObject);
     const kiln::Transform* objectFromRender =
         arena.New<kiln::Transform>(Inverse(s.renderFromObject));
+    if (s.name == "curve") {
+        result.curves = CurveSet::Create(s.renderFromObject, s.reverseOrientation, s.parameters,
+                                         s.loc, arena, diag);
+        s.parameters.ReportUnused(diag);
+        if (!result.curves) return result;
+        if (s.areaLightIndex >= 0)
+            diag.Warn(s.loc,
+                      "curves cannot be area lights (as in pbrt-v4); the AreaLightSource "
+                      "is ignored");
+        result.heat = emitters.Heat(s, own, materials.Of(s), {}, false);
+        if (result.heat.emission)
+            diag.Warn(s.loc, "hot curves glow where rays hit them but are not sampled as lights");
+        return result;
+    }
     result.shapes = Shape::Create(s.name, renderFromObject, objectFromRender, s.reverseOrientation,
                                   s.parameters, s.loc, arena, diag);
     s.parameters.ReportUnused(diag);
@@ -310,6 +326,9 @@ void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<Sce
                      const MediumIndices& media, ThermalEmitters& emitters, Diagnostics& diag) {
     scene.aggregate = std::make_unique<kiln::Accelerator>();
     for (size_t i = 0; i < desc.shapes.size(); ++i) {
+        if (shapes[i].curves)
+            scene.aggregate->AddCurves(*shapes[i].curves, shapes[i].heat.material,
+                                       shapes[i].heat.emission, shapes[i].media, shapes[i].alpha);
         if (shapes[i].shapes.empty()) continue;
         scene.aggregate->Add(shapes[i].shapes, shapes[i].heat.material, shapeLights[i],
                              shapes[i].heat.emission, shapes[i].media, shapes[i].alpha);
@@ -324,6 +343,10 @@ void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<Sce
             for (ShapeSceneEntity& s : def.shapes) {
                 SceneShapes defShapes =
                     CreateShapes(s, textures, materials, media, emitters, scene.arena, diag);
+                if (defShapes.curves)
+                    scene.aggregate->AddCurves(*defShapes.curves, defShapes.heat.material,
+                                               defShapes.heat.emission, defShapes.media,
+                                               defShapes.alpha, id);
                 if (!defShapes.shapes.empty())
                     scene.aggregate->AddToInstanceDefinition(
                         id, defShapes.shapes, defShapes.heat.material, defShapes.heat.emission,

@@ -62,6 +62,12 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
                   "temperature is ignored");
         return heat;
     }
+    if (model == EmissionModel::Kirchhoff && material->Is<HairMaterial>()) {
+        diag.Warn(entity.loc,
+                  "hot hair does not glow: kiln has no emissivity for the hair model yet (use "
+                  "\"string emission\" \"diffuse\" for a blackbody fibre)");
+        return heat;
+    }
     if (model == EmissionModel::Kirchhoff && material->InteriorEta()) {
         // A dielectric surface absorbs nothing: the body glows from its interior medium
         diag.Warn(entity.loc,

@@ -18,7 +18,7 @@ namespace {
 
 constexpr int kThetaBins = 80, kPhiBins = 160, kSub = 8;
 constexpr int kSamples = 200000;
-constexpr int kNumTests = 36;  // tests in this file, for the multiple-testing correction
+constexpr int kNumTests = 42;  // tests in this file, for the multiple-testing correction
 
 // Bins directions by (theta, phi) over the sphere (bins narrow near the poles, where sharp
 // lobes sit); sample() returns nullopt on failure (the lost mass must then be missing from the
@@ -135,6 +135,23 @@ TEST(SamplingChi2, TrowbridgeReitzVisibleNormals) {
                 seed++);
             EXPECT_TRUE(r.passed) << ax << "," << ay << " cos " << cosTheta << ": " << r.message;
         }
+}
+
+TEST(SamplingChi2, Hair) {
+    // Lobes around the fibre axis (x): wo off the axis, both sides of the fibre, absorbing
+    // and clear fibres, smooth and rough
+    int seed = 90;
+    struct Case {
+        Float h, beta_m, beta_n, sigma, cosTheta;
+    };
+    for (Case c : {Case{-0.7f, 0.2f, 0.2f, 0.f, 0.6f}, Case{0.3f, 0.5f, 0.6f, 0.f, 0.2f},
+                   Case{0.9f, 0.3f, 0.3f, 1.5f, 0.9f}, Case{0.f, 0.25f, 0.8f, 0.4f, -0.4f},
+                   Case{-0.2f, 0.8f, 0.25f, 3.f, 0.7f}, Case{0.5f, 0.35f, 0.4f, 0.1f, 0.05f}}) {
+        BxDF bxdf = HairBxDF(c.h, 1.55f, SampledSpectrum(c.sigma), c.beta_m, c.beta_n, 2.f);
+        auto r = TestBxDF(bxdf, Wo(c.cosTheta, 0.9f), seed++);
+        EXPECT_TRUE(r.passed) << "h " << c.h << " beta_m " << c.beta_m << " beta_n " << c.beta_n
+                              << " sigma_a " << c.sigma << ": " << r.message;
+    }
 }
 
 TEST(SamplingChi2, WrongPdfIsRejected) {

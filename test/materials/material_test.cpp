@@ -244,14 +244,24 @@ TEST(Materials, MixChoiceDeterministicAndProportional) {
 
 TEST(Materials, UnsupportedAndUnknown) {
     Fixture f;
-    Material hair = f.Make("hair", Dict({}));
-    EXPECT_TRUE(hair.Is<DiffuseMaterial>());
-    EXPECT_EQ(GetBSDF(hair).GetBxDF().Cast<DiffuseBxDF>()->Reflectance(), SampledSpectrum(0.5f));
+    Material measured = f.Make("measured", Dict({}));
+    EXPECT_TRUE(measured.Is<DiffuseMaterial>());
+    EXPECT_EQ(GetBSDF(measured).GetBxDF().Cast<DiffuseBxDF>()->Reflectance(),
+              SampledSpectrum(0.5f));
     EXPECT_EQ(f.diag.WarningCount(), 1);
+    // Hair is supported: brown by default
+    Material hair = f.Make("hair", Dict({}));
+    ASSERT_TRUE(hair.Is<HairMaterial>());
+    EXPECT_TRUE(GetBSDF(hair).GetBxDF().Is<HairBxDF>());
+    EXPECT_FLOAT_EQ(hair.GetIf<HairMaterial>()->Parameters().eumelanin->Evaluate(Context()), 1.3f);
+    EXPECT_EQ(f.diag.WarningCount(), 1);
+    // Two sources of absorption: the first wins, with a warning
+    f.Make("hair", Dict({Rgb("sigma_a", 0.1f, 0.2f, 0.3f), Float1("eumelanin", 2)}));
+    EXPECT_EQ(f.diag.WarningCount(), 2);
     // Bump mapping is supported: no warning
     Material bumped = f.Make("diffuse", Dict({Float1("displacement", 0.1f)}));
     EXPECT_TRUE(bumped.Perturbation().displacement);
-    EXPECT_EQ(f.diag.WarningCount(), 1);
+    EXPECT_EQ(f.diag.WarningCount(), 2);
     try {
         f.Make("plastic", Dict({}));
         FAIL();

@@ -19,8 +19,9 @@ namespace {
 
 // What one Embree geometry stands for; the geometry's user data points at it.
 struct GeomRecord {
-    enum class Kind { Triangles, User, Instance } kind = Kind::User;
+    enum class Kind { Triangles, User, Instance, Curves } kind = Kind::User;
     const TriangleMesh* mesh = nullptr;
+    const CurveSet* curves = nullptr;
     std::vector<int> triIndices;  // primID -> triangle index; empty when the identity
     std::vector<Shape> shapes;    // User: primID -> shape
     const Material* material = nullptr;
@@ -107,6 +108,21 @@ void UserOccluded(const RTCOccludedFunctionNArguments* args) {
     bool hit = rec->alpha ? UserHit(*rec, args->primID, ray, r->tfar).has_value()
                           : rec->shapes[args->primID].IntersectP(ray, r->tfar);
     if (hit) r->tfar = -std::numeric_limits<float>::infinity();
+}
+
+// The same for curves: the hit's interaction gives the texture context.
+void CurveAlphaFilter(const RTCFilterFunctionNArguments* args) {
+    if (args->N != 1 || !args->valid[0]) return;
+    auto* rec = static_cast<const GeomRecord*>(args->geometryUserPtr);
+    RTCRayN* ray = args->ray;
+    unsigned prim = RTCHitN_primID(args->hit, 1, 0);
+    Point3f o(RTCRayN_org_x(ray, 1, 0), RTCRayN_org_y(ray, 1, 0), RTCRayN_org_z(ray, 1, 0));
+    Vector3f d(RTCRayN_dir_x(ray, 1, 0), RTCRayN_dir_y(ray, 1, 0), RTCRayN_dir_z(ray, 1, 0));
+    SurfaceInteraction si =
+        rec->curves->InteractionAt(int(prim), RTCHitN_u(args->hit, 1, 0), o, d,
+                                   RTCRayN_tfar(ray, 1, 0), RTCRayN_time(ray, 1, 0));
+    if (rec->alpha->Masked(TextureEvalContext(si), HashToUniform(Hash(o, d, prim))))
+        args->valid[0] = 0;
 }
 
 // Embree's filter for triangles with alpha (closest-hit and shadow queries alike): rejects a
@@ -322,6 +338,44 @@ void Accelerator::AddInstance(int definition, const Transform& renderFromInstanc
     impl->Attach(impl->top, g, std::move(rec));
 }
 
+void Accelerator::AddCurves(const CurveSet& curves, const Material* material,
+                            const ThermalEmission* thermal, MediumInterface media,
+                            const AlphaMask* alpha, int definition) {
+    SceneBVH& s = definition < 0 ? impl->top : impl->definitions.at(size_t(definition));
+    int n = curves.NumSegments();
+    if (n == 0) return;
+    impl->primitives += size_t(n);
+    auto rec = std::make_unique<GeomRecord>();
+    rec->kind = GeomRecord::Kind::Curves;
+    rec->curves = &curves;
+    rec->material = material;
+    rec->thermal = thermal;
+    rec->media = media;
+    rec->alpha = alpha;
+    bool ribbon = curves.Type() == CurveType::Ribbon;
+    RTCGeometry g =
+        rtcNewGeometry(impl->device, ribbon ? RTC_GEOMETRY_TYPE_NORMAL_ORIENTED_BEZIER_CURVE
+                                            : RTC_GEOMETRY_TYPE_FLAT_BEZIER_CURVE);
+    rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
+                               curves.Vertices().data(), 0, 4 * sizeof(float), 4 * size_t(n));
+    auto* index = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned), size_t(n)));
+    for (int i = 0; i < n; ++i) index[i] = unsigned(4 * i);
+    if (ribbon) {
+        std::vector<Vector3f> normals = curves.EmbreeNormals();
+        auto* nb = static_cast<float*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), normals.size()));
+        for (size_t i = 0; i < normals.size(); ++i)
+            nb[3 * i] = normals[i].x, nb[3 * i + 1] = normals[i].y, nb[3 * i + 2] = normals[i].z;
+    }
+    rtcSetGeometryTessellationRate(g, float(curves.TessellationRate()));
+    if (alpha) {
+        rtcSetGeometryIntersectFilterFunction(g, CurveAlphaFilter);
+        rtcSetGeometryOccludedFilterFunction(g, CurveAlphaFilter);
+    }
+    impl->Attach(s, g, std::move(rec));
+}
+
 void Accelerator::Commit() {
     // Large scenes trade a little traversal speed for half the BVH memory
     if (Compact()) {
@@ -373,11 +427,13 @@ std::optional<ShapeIntersection> Accelerator::Intersect(const Ray& ray, Float tM
     const GeomRecord* rec;
     const Transform* renderFromInstance = nullptr;
     Vector3f d = ray.d;
+    Point3f o = ray.o;
     if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
         const GeomRecord* inst = impl->top.records[rh.hit.instID[0]].get();
         renderFromInstance = &inst->renderFromInstance;
         rec = impl->definitions[inst->triIndices[0]].records[rh.hit.geomID].get();
         d = renderFromInstance->ApplyInverse(ray.d);
+        o = renderFromInstance->ApplyInverse(ray.o);
     } else {
         rec = impl->top.records[rh.hit.geomID].get();
     }
@@ -389,6 +445,9 @@ std::optional<ShapeIntersection> Accelerator::Intersect(const Ray& ray, Float tM
         if (b1 + b2 > 1) b1 /= (b1 + b2), b2 = 1 - b1;
         si.intr = Triangle(rec->mesh, tri)
                       .InteractionFromBarycentrics({1 - b1 - b2, b1, b2}, ray.time, -d);
+        si.tHit = rh.ray.tfar;
+    } else if (rec->kind == GeomRecord::Kind::Curves) {
+        si.intr = rec->curves->InteractionAt(int(prim), rh.hit.u, o, d, rh.ray.tfar, ray.time);
         si.tHit = rh.ray.tfar;
     } else {
         if (!ctx.userHit) return std::nullopt;

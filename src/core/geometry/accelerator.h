@@ -1,7 +1,7 @@
 // Accelerator: Embree 3 BVH over every primitive of the scene. Triangle meshes are native
-// Embree triangle geometries sharing the meshes' buffers; quadrics and bilinear patches are
-// user geometries whose callbacks call Shape::Intersect. Object instances are Embree instance
-// geometries over one scene per definition.
+// Embree triangle geometries sharing the meshes' buffers, curves native curve geometries; quadrics
+// and bilinear patches are user geometries whose callbacks call Shape::Intersect. Object instances
+// are Embree instance geometries over one scene per definition.
 #pragma once
 
 #include <embree3/rtcore.h>
@@ -13,6 +13,7 @@
 #include "core/base/transform.h"
 #include "core/base/vecmath.h"
 #include "core/geometry/alpha_mask.h"
+#include "core/geometry/curve.h"
 #include "core/geometry/shape.h"
 #include "core/geometry/shape_sample.h"
 
@@ -56,6 +57,11 @@ class Accelerator {
                                  const Material* material, const ThermalEmission* thermal,
                                  MediumInterface media = {}, const AlphaMask* alpha = nullptr);
     void AddInstance(int definition, const Transform& renderFromInstance);
+    // A curve (curve.h) as Embree curve primitives, at the top level (definition -1) or in an
+    // instance definition; it must outlive the accelerator. Curves are not lights.
+    void AddCurves(const CurveSet& curves, const Material* material, const ThermalEmission* thermal,
+                   MediumInterface media = {}, const AlphaMask* alpha = nullptr,
+                   int definition = -1);
     // Builds the BVHs; call once after everything has been added.
     void Commit();
 

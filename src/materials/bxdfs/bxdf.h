@@ -20,6 +20,7 @@
 #include "materials/bxdfs/conductor_bxdf.h"
 #include "materials/bxdfs/dielectric_bxdf.h"
 #include "materials/bxdfs/diffuse_bxdf.h"
+#include "materials/bxdfs/hair_bxdf.h"
 #include "materials/bxdfs/layered_bxdf.h"
 #include "materials/bxdfs/polarizing_filter_bxdf.h"
 #include "materials/bxdfs/thin_dielectric_bxdf.h"
@@ -30,7 +31,8 @@ namespace kiln {
 class BxDF {
   public:
     using Variant = std::variant<DiffuseBxDF, ConductorBxDF, DielectricBxDF, ThinDielectricBxDF,
-                                 CoatedDiffuseBxDF, CoatedConductorBxDF, PolarizingFilterBxDF>;
+                                 CoatedDiffuseBxDF, CoatedConductorBxDF, PolarizingFilterBxDF,
+                                 HairBxDF>;
 
     BxDF() = default;  // a black DiffuseBxDF
     template <typename T>
