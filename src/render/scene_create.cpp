@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/geometry/curve.h"
+#include "core/geometry/mesh_displacement.h"
 #include "core/geometry/triangle.h"
 #include "render/scene.h"
 #include "render/scene_emitters.h"
@@ -268,8 +269,27 @@ SceneShapes CreateShapes(ShapeSceneEntity& s, const NamedTextures& textures,
             diag.Warn(s.loc, "hot curves glow where rays hit them but are not sampled as lights");
         return result;
     }
-    result.shapes = Shape::Create(s.name, renderFromObject, objectFromRender, s.reverseOrientation,
-                                  s.parameters, s.loc, arena, diag);
+    // A plymesh's displacement texture (named textures live here, not in Shape::Create)
+    std::optional<MeshDisplacement> displacement;
+    if (s.name == "plymesh" && s.parameters.Has("displacement")) {
+        std::optional<FloatTexture> d = params.GetFloatTextureOrNull("displacement", arena);
+        Float edgeLength = params.GetOneFloat("edgelength", 1);
+        if (!(edgeLength > 0) || !std::isfinite(edgeLength))
+            throw SceneError(params.Has("edgelength") ? params.Loc("edgelength") : s.loc,
+                             "\"edgelength\" must be positive and finite", "edgelength");
+        if (d)
+            displacement = MeshDisplacement{[d](Point3f p, Normal3f n, Point2f uv) {
+                                                TextureEvalContext ctx;
+                                                ctx.p = p;
+                                                ctx.n = n;
+                                                ctx.uv = uv;
+                                                return d->Evaluate(ctx);
+                                            },
+                                            edgeLength};
+    }
+    result.shapes =
+        Shape::Create(s.name, renderFromObject, objectFromRender, s.reverseOrientation,
+                      s.parameters, s.loc, arena, diag, displacement ? &*displacement : nullptr);
     s.parameters.ReportUnused(diag);
     if (!result.shapes.empty())
         result.heat = emitters.Heat(s, own, materials.Of(s), result.shapes, s.areaLightIndex >= 0);

@@ -2,10 +2,12 @@
 // map tilting a diffuse plane's shading normal by theta dims it, under a light along the
 // geometric normal, by exactly cos(theta) (direct light only, so the images are noise-free);
 // a shape with alpha a lets 1 - a of the light through its shadow (each surface of a sphere
-// separately), and an area light with alpha a emits a of its light, whichever way paths find it.
+// separately), and an area light with alpha a emits a of its light, whichever way paths find it;
+// a displaced PLY mesh is where its displacement puts it.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 #include "core/image/image.h"
@@ -163,6 +165,40 @@ TEST(AlphaRender, AreaLightWithAlphaEmitsItsFraction) {
     EXPECT_LT(tol, 0.03);
     EXPECT_NEAR(m / opaque, 0.4, tol);
     EXPECT_EQ(MeanAndError(scene("\"float alpha\" 0")).first, 0);
+}
+
+TEST(PlyDisplacement, MeshIsWhereTheTextureMovesIt) {
+    // An ASCII PLY square (uv) raised 0.3 along its normal, refined to edges under 0.25
+    std::string ply = ::testing::TempDir() + "/kiln_displaced_square.ply";
+    {
+        std::ofstream out(ply);
+        out << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+               "property float z\nproperty float u\nproperty float v\nelement face 2\n"
+               "property list uchar int vertex_indices\nend_header\n"
+               "0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 1 0 0 1\n3 0 1 2\n3 0 2 3\n";
+    }
+    auto scene = [&](const std::string& displacement) {
+        return "Camera \"perspective\"\nWorldBegin\nLightSource \"distant\"\n"
+               "Texture \"lift\" \"float\" \"constant\" \"float value\" 0.3\n"
+               "Shape \"plymesh\" \"string filename\" \"" +
+               ply + "\" " + displacement + "\n";
+    };
+    Diagnostics diag(nullptr);
+    auto lifted = testing::BuildScene(
+        scene("\"texture displacement\" \"lift\" \"float edgelength\" 0.25"), diag);
+    EXPECT_EQ(diag.WarningCount(), 0);
+    EXPECT_GE(lifted->shapeCount, 32);  // refined: 2 triangles became many
+    auto hit = lifted->aggregate->Intersect(Ray(Point3f(0.37f, 0.61f, 5), Vector3f(0, 0, -1)));
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_NEAR(hit->intr.p.z, 0.3f, 1e-5f);
+    // Non-positive edge lengths are located errors
+    try {
+        testing::BuildScene(scene("\"texture displacement\" \"lift\" \"float edgelength\" 0"),
+                            diag);
+        ADD_FAILURE() << "edgelength 0 accepted";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.Token(), "edgelength");
+    }
 }
 
 }  // namespace

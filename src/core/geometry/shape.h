@@ -20,6 +20,7 @@
 namespace kiln {
 
 class ParameterDictionary;
+struct MeshDisplacement;
 class Diagnostics;
 struct FileLoc;
 
@@ -57,11 +58,14 @@ class Shape {
     bool IntersectP(const Ray& ray, Float tMax = Infinity) const;
 
     // The shapes of a "Shape" directive (pbrt-v4 names and defaults). Unsupported shapes are
-    // warned about and yield nothing; malformed parameters throw SceneError.
+    // warned about and yield nothing; malformed parameters throw SceneError. displacement: a
+    // plymesh's "displacement" texture and "edgelength" (mesh_displacement.h), read by the
+    // caller, who has the named textures; without it a displacement is warned about.
     static std::vector<Shape> Create(const std::string& name, const Transform* renderFromObject,
                                      const Transform* objectFromRender, bool reverseOrientation,
                                      const ParameterDictionary& params, const FileLoc& loc,
-                                     ObjectArena& arena, Diagnostics& diag);
+                                     ObjectArena& arena, Diagnostics& diag,
+                                     const MeshDisplacement* displacement = nullptr);
 
     template <typename T>
     const T* Get() const {

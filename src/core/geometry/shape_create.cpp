@@ -6,12 +6,16 @@
 #include "core/geometry/shape.h"
 
 #include "core/geometry/loop_subdivision.h"
+#include "core/geometry/mesh_displacement.h"
 #include "core/parser/diagnostics.h"
 #include "core/parser/parameter_dictionary.h"
 
 namespace kiln {
 
 namespace {
+
+// The most triangles a displaced PLY mesh may refine into (as loopsubdiv's limit)
+constexpr size_t kMaxDisplacedTriangles = size_t(1) << 25;
 
 FileLoc LocOf(const ParameterDictionary& params, const std::string& name, const FileLoc& def) {
     FileLoc l = params.Loc(name);
@@ -188,13 +192,15 @@ std::vector<Shape> CreateBilinearMesh(const Transform* renderFromObject, bool re
 
 std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverseOrientation,
                                  const ParameterDictionary& params, const FileLoc& loc,
-                                 ObjectArena& arena, Diagnostics& diag) {
+                                 ObjectArena& arena, Diagnostics& diag,
+                                 const MeshDisplacement* displacement) {
     std::string filename = params.GetOneFilename("filename", "");
     if (filename.empty())
         throw SceneError(loc, "\"filename\" must be provided for a plymesh", "plymesh");
-    if (!params.GetTexture("displacement").empty() || params.Has("displacement")) {
+    if (!displacement &&
+        (!params.GetTexture("displacement").empty() || params.Has("displacement"))) {
         diag.Warn(LocOf(params, "displacement", loc),
-                  "plymesh displacement is not supported; rendering without it");
+                  "plymesh displacement without its texture; rendering without it");
         params.GetOneFloat("edgelength", 1);
     }
     TriQuadMesh ply;
@@ -207,6 +213,21 @@ std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverse
     }
     if (auto t = ply.vertexAttributes.find("temperature"); t != ply.vertexAttributes.end())
         CheckTemperatures(t->second, LocOf(params, "filename", loc), filename);
+    if (displacement) {
+        try {
+            DisplaceMesh(ply, *displacement, *renderFromObject, kMaxDisplacedTriangles);
+        } catch (const std::length_error&) {
+            throw SceneError(LocOf(params, "edgelength", loc),
+                             "displacing \"" + filename +
+                                 "\" at this edge length would make more "
+                                 "than " +
+                                 std::to_string(kMaxDisplacedTriangles) + " triangles",
+                             "edgelength");
+        } catch (const std::invalid_argument& e) {
+            throw SceneError(LocOf(params, "displacement", loc),
+                             "plymesh \"" + filename + "\": " + e.what(), "displacement");
+        }
+    }
     std::vector<Shape> shapes;
     if (!ply.triIndices.empty()) {
         auto* mesh = arena.New<TriangleMesh>(
@@ -227,7 +248,8 @@ std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverse
 std::vector<Shape> CreateShapes(const std::string& name, const Transform* renderFromObject,
                                 const Transform* objectFromRender, bool reverseOrientation,
                                 const ParameterDictionary& params, const FileLoc& loc,
-                                ObjectArena& arena, Diagnostics& diag) {
+                                ObjectArena& arena, Diagnostics& diag,
+                                const MeshDisplacement* displacement) {
     // Quadrics intersect in object space, through the inverse transform; under a singular one
     // (e.g. Scale 0, as pbrt-v4 scenes use to hide objects) they have no area to hit
     if ((name == "sphere" || name == "disk" || name == "cylinder") &&
@@ -283,11 +305,12 @@ std::vector<Shape> CreateShapes(const std::string& name, const Transform* render
     if (name == "bilinearmesh")
         return CreateBilinearMesh(renderFromObject, reverseOrientation, params, loc, arena);
     if (name == "plymesh")
-        return CreatePLYMesh(renderFromObject, reverseOrientation, params, loc, arena, diag);
+        return CreatePLYMesh(renderFromObject, reverseOrientation, params, loc, arena, diag,
+                             displacement);
     if (name == "loopsubdiv")
         return CreateLoopSubdiv(renderFromObject, reverseOrientation, params, loc, arena, diag);
-    if (name == "curve") {
-        diag.Warn(loc, "shape \"" + name + "\" is not supported; skipped");
+    if (name == "curve") {  // scene creation makes curves (curve.h); they are no Shape
+        diag.Warn(loc, "shape \"curve\" is created by scene creation, not Shape::Create; skipped");
         return {};
     }
     diag.Warn(loc, "unknown shape \"" + name + "\"; skipped");
@@ -300,9 +323,11 @@ std::vector<Shape> CreateShapes(const std::string& name, const Transform* render
 std::vector<Shape> Shape::Create(const std::string& name, const Transform* renderFromObject,
                                  const Transform* objectFromRender, bool reverseOrientation,
                                  const ParameterDictionary& params, const FileLoc& loc,
-                                 ObjectArena& arena, Diagnostics& diag) {
-    std::vector<Shape> shapes = CreateShapes(name, renderFromObject, objectFromRender,
-                                             reverseOrientation, params, loc, arena, diag);
+                                 ObjectArena& arena, Diagnostics& diag,
+                                 const MeshDisplacement* displacement) {
+    std::vector<Shape> shapes =
+        CreateShapes(name, renderFromObject, objectFromRender, reverseOrientation, params, loc,
+                     arena, diag, displacement);
     // Nothing with a non-finite extent reaches the accelerator (vertices or radii that
     // overflow float, e.g. 1e30 under a Scale of 1e30)
     size_t kept = 0;
