@@ -1,0 +1,79 @@
+#!/usr/bin/env python3
+"""Writes the binary and compressed inputs of the pbrt-v4 feature scenes in this folder:
+gzip-geometry.pbrt (a gzip-compressed include, named without .gz: detected by content),
+gzip-mesh.ply.gz (a gzip-compressed binary PLY icosphere), displacement-grid.ply (an ASCII
+PLY grid with uv) and normalmap.pfm (a tangent-space normal map of ripples). Deterministic:
+re-running it rewrites the same bytes."""
+import gzip
+import math
+import struct
+
+
+def icosphere():
+    t = (1 + 5 ** 0.5) / 2
+    v = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t),
+         (0, 1, -t), (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
+    v = [tuple(c / math.sqrt(sum(x * x for x in p)) for c in p) for p in v]
+    f = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4),
+         (11, 10, 2), (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8),
+         (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    return v, f
+
+
+def write_gzip(name, data):
+    # mtime 0 and no file name in the header: the same bytes every time
+    with open(name, "wb") as raw:
+        with gzip.GzipFile(filename="", mode="wb", fileobj=raw, mtime=0) as out:
+            out.write(data)
+
+
+def main():
+    v, f = icosphere()
+    header = ("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\n"
+              "property float y\nproperty float z\nproperty float nx\nproperty float ny\n"
+              "property float nz\nelement face %d\nproperty list uchar int vertex_indices\n"
+              "end_header\n" % (len(v), len(f))).encode()
+    body = b"".join(struct.pack("<6f", *p, *p) for p in v)
+    body += b"".join(struct.pack("<B3i", 3, *tri) for tri in f)
+    write_gzip("gzip-mesh.ply.gz", header + body)
+
+    include = ('Material "coateddiffuse" "rgb reflectance" [0.7 0.2 0.1] "float roughness" 0.1\n'
+               'AttributeBegin\n  Translate 0 0.6 0\n  Scale 0.6 0.6 0.6\n'
+               '  Shape "plymesh" "string filename" "gzip-mesh.ply.gz"\nAttributeEnd\n'
+               'Material "diffuse" "rgb reflectance" [0.5 0.5 0.5]\n'
+               'Shape "bilinearmesh" "point3 P" [-3 0 -3 3 0 -3 -3 0 3 3 0 3]\n')
+    write_gzip("gzip-geometry.pbrt", include.encode())
+
+    n = 9
+    lines = ["ply", "format ascii 1.0", "element vertex %d" % (n * n), "property float x",
+             "property float y", "property float z", "property float u", "property float v",
+             "element face %d" % ((n - 1) * (n - 1)), "property list uchar int vertex_indices",
+             "end_header"]
+    for j in range(n):
+        for i in range(n):
+            u, w = i / (n - 1), j / (n - 1)
+            lines.append("%g 0 %g %g %g" % (2 * u - 1, 1 - 2 * w, u, w))
+    for j in range(n - 1):
+        for i in range(n - 1):
+            a = j * n + i
+            lines.append("4 %d %d %d %d" % (a, a + 1, a + n, a + n + 1))
+    open("displacement-grid.ply", "w").write("\n".join(lines) + "\n")
+
+    # Ripples: the normal of the height field 0.05 sin(2 pi 4 r) about the centre
+    w = h = 32
+    data = []
+    for y in range(h):  # PFM rows run bottom to top
+        for x in range(w):
+            u, v2 = (x + 0.5) / w - 0.5, (y + 0.5) / h - 0.5
+            r = math.hypot(u, v2) + 1e-9
+            dh = 0.05 * 2 * math.pi * 4 * math.cos(2 * math.pi * 4 * r)
+            nx, ny, nz = -dh * u / r, -dh * v2 / r, 1.0
+            l = math.sqrt(nx * nx + ny * ny + nz * nz)
+            data += [0.5 + 0.5 * nx / l, 0.5 + 0.5 * ny / l, 0.5 + 0.5 * nz / l]
+    with open("normalmap.pfm", "wb") as out:
+        out.write(b"PF\n%d %d\n-1.0\n" % (w, h))
+        out.write(struct.pack("<%df" % len(data), *data))
+
+
+if __name__ == "__main__":
+    main()
