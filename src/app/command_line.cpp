@@ -1,5 +1,7 @@
 #include "app/command_line.h"
 
+#include "core/base/memory_budget.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -112,6 +114,9 @@ std::string UsageText() {
            "                        output: OUT-dolp.png, OUT-aolp.png (degree and angle of\n"
            "                        linear polarisation) and Wilkie & Weidlich 2010's\n"
            "                        OUT-dop.png, -aop.png, -type.png, -chirality.png\n"
+           "  --memory-limit SIZE   the most memory the scene may take (e.g. 8G, 512M; default:\n"
+           "                        the machine's): a film, mesh, curve, image or volume that\n"
+           "                        would pass it is an error naming it and its estimate\n"
            "  --verbose             print what kiln chose for the scene (code paths, tables)\n"
            "  --generic LIST        run generic code paths instead of the chosen ones, to\n"
            "                        measure what the choices save: footprints (texture\n"
@@ -141,7 +146,13 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             o.spp = ParseInt(a, value(), 1);
         else if (a == "--threads" || a == "--nthreads")
             o.threads = ParseInt(a, value(), 1);
-        else if (a == "--seed")
+        else if (a == "--memory-limit") {
+            std::optional<double> bytes = MemoryBudget::ParseSize(value());
+            if (!bytes)
+                throw std::invalid_argument(
+                    "--memory-limit expects a positive size such as 8G, 512M or 1.5GB");
+            o.memoryLimit = bytes;
+        } else if (a == "--seed")
             o.seed = ParseInt(a, value(), std::numeric_limits<int>::min());
         else if (a == "--crop" || a == "--cropwindow") {
             if (i + 4 >= args.size()) throw std::invalid_argument(a + " needs x0 x1 y0 y1");
@@ -261,6 +272,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
         overrides.genericAOVs = options.genericAOVs;
         overrides.genericVolumes = options.genericVolumes;
         overrides.stokes = options.stokes;
+        overrides.memoryLimitBytes = options.memoryLimit;
         if (options.emission) overrides.emission = ParseEmissionModel(*options.emission);
         if (frame) {
             overrides.frame = *frame;

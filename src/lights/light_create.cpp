@@ -41,11 +41,11 @@ Transform FromFrame(const Frame& f) {
 // Reads an emission image, keeping its R, G, B channels, and the colour space its file names
 // (sRGB if none, as pbrt-v4); SceneError if that fails.
 Image ReadEmissionImage(const std::string& filename, const FileLoc& loc,
-                        const RGBColorSpace** colorSpace) {
+                        const RGBColorSpace** colorSpace, MemoryBudget& budget) {
     Image image;
     ImageMetadata metadata;
     try {
-        image = Image::Read(filename, &metadata);
+        image = Image::Read(filename, &metadata, std::nullopt, &budget);
     } catch (const std::exception& e) {
         throw SceneError(loc, e.what(), filename);
     }
@@ -157,7 +157,7 @@ Light CreateInfinite(const ParameterDictionary& params, const Transform& renderF
 
     // Environment map, in the colour space its file names
     const RGBColorSpace* imageCSp = nullptr;
-    Image image = ReadEmissionImage(filename, loc, &imageCSp);
+    Image image = ReadEmissionImage(filename, loc, &imageCSp, arena.Budget());
     const RGBColorSpace& imageCS = *imageCSp;
     scale = PhotometricScale(scale, Spectrum(imageCS.Illuminant()));
     if (E_v > 0) {
@@ -230,7 +230,7 @@ Light Light::CreateArea(const std::string& name, const ParameterDictionary& para
         if (L)
             throw SceneError(loc, "both \"L\" and \"filename\" specified for a diffuse area light",
                              filename);
-        image = ReadEmissionImage(filename, loc, &imageCS);
+        image = ReadEmissionImage(filename, loc, &imageCS, arena.Budget());
     }
     Spectrum Le = L ? *L : Spectrum(cs.Illuminant());
     scale = PhotometricScale(scale, image ? Spectrum(imageCS->Illuminant()) : Le);

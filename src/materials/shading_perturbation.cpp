@@ -20,7 +20,7 @@ ShadingPerturbation ShadingPerturbation::Read(const TextureParameterDictionary& 
     if (p.normalMap) return p;
     Image rgb;
     try {
-        Image image = Image::Read(filename, nullptr, ColorEncoding::Linear());
+        Image image = Image::Read(filename, nullptr, ColorEncoding::Linear(), &arena.Budget());
         if (image.ChannelIndex("R") < 0 || image.ChannelIndex("G") < 0 ||
             image.ChannelIndex("B") < 0)
             throw SceneError(params.Loc("normalmap"),

@@ -141,7 +141,7 @@ GridMedium* GridMedium::CreateFromVDB(const TextureParameterDictionary& params,
     if (filename.empty()) throw SceneError(loc, "a volume medium needs a \"filename\"", "filename");
     VDBVolume v = ReadVDBVolume(filename, params.GetOneString("gridname", "density"),
                                 params.GetOneString("temperaturename", "temperature"),
-                                params.Loc("filename"));
+                                params.Loc("filename"), size_t(1) << 30, &arena.Budget());
     MediumCoefficients c = ReadMediumCoefficients(params, loc, diag);
     int nx = v.density.XSize(), ny = v.density.YSize(), nz = v.density.ZSize();
     MediumEmission emission =

@@ -1,5 +1,7 @@
 #include "media/vdb_file.h"
 
+#include "core/base/memory_budget.h"
+
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Interpolation.h>
 
@@ -27,7 +29,8 @@ openvdb::FloatGrid::Ptr ReadFloatGrid(openvdb::io::File& file, const std::string
 }  // namespace
 
 VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityName,
-                        const std::string& temperatureName, const FileLoc& loc, size_t maxVoxels) {
+                        const std::string& temperatureName, const FileLoc& loc, size_t maxVoxels,
+                        MemoryBudget* budget) {
     static std::once_flag initialized;
     std::call_once(initialized, [] { openvdb::initialize(); });
     if (filename.size() >= 5 && filename.compare(filename.size() - 5, 5, ".nvdb") == 0)
@@ -62,6 +65,15 @@ VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityN
                                  " voxels; kiln resamples volumes densely and allows at most " +
                                  std::to_string(maxVoxels),
                              densityName);
+        if (budget) {
+            try {
+                budget->Charge(
+                    double(n) * sizeof(Float) * (temperature ? 2 : 1),
+                    "the dense grids of \"" + filename + "\" (" + std::to_string(n) + " voxels)");
+            } catch (const MemoryLimitError& e) {
+                throw SceneError(loc, e.what(), filename);
+            }
+        }
         // Dense copies over the density's active box; temperatures sampled (trilinearly) at
         // the density's voxel centres
         std::vector<Float> d(n), t(temperature ? n : 0);

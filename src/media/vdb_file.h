@@ -12,6 +12,8 @@
 
 namespace kiln {
 
+class MemoryBudget;
+
 struct VDBVolume {
     SampledGrid<Float> density;
     SampledGrid<Float> temperature;  // empty if the file has no such grid
@@ -25,8 +27,9 @@ struct VDBVolume {
 // Reads densityName (required: SceneError at loc if missing, not a float grid, or the file is
 // unreadable) and temperatureName (optional) from filename. Volumes of more than maxVoxels
 // dense voxels are refused.
+// The dense grids are charged to budget (if given) before they are allocated.
 VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityName,
                         const std::string& temperatureName, const FileLoc& loc,
-                        size_t maxVoxels = size_t(1) << 30);
+                        size_t maxVoxels = size_t(1) << 30, MemoryBudget* budget = nullptr);
 
 }  // namespace kiln

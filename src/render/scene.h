@@ -52,6 +52,9 @@ struct SceneOverrides {
     bool genericVolumes = false;
     // kiln --stokes: the film records Stokes layers (Film "bool stokes" true).
     bool stokes = false;
+    // kiln --memory-limit: what the scene's objects may take (core/base/memory_budget.h);
+    // default the machine's memory.
+    std::optional<double> memoryLimitBytes;
 };
 
 // How direct light is found: pbrt-v4's MIS of light and BSDF sampling (default), or one of the

@@ -468,35 +468,47 @@ bool NeedsPolarization(const Scene& scene, const SceneMaterials& materials) {
 
 }  // namespace
 
-std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverrides& overrides,
-                                     Diagnostics& diag) {
-    std::unique_ptr<Scene> scene(new Scene());
-    CreateCameraAndFilm(*scene, desc, overrides, diag);
-    NamedTextures& textures = CreateTextures(desc, overrides, *scene, diag);
-    SceneMaterials materials = CreateMaterials(desc, textures, scene->arena, diag);
+// Every object of the scene, in pbrt-v4's order of creation
+static void CreateScene(Scene& scene, SceneDescription& desc, const SceneOverrides& overrides,
+                        Diagnostics& diag) {
+    CreateCameraAndFilm(scene, desc, overrides, diag);
+    NamedTextures& textures = CreateTextures(desc, overrides, scene, diag);
+    SceneMaterials materials = CreateMaterials(desc, textures, scene.arena, diag);
     MediumIndices media = CreateMedia(
         desc, textures, [&](const ShapeSceneEntity& s) { return materials.Of(s); },
-        overrides.emission, scene->media, scene->arena, diag);
-    scene->cameraMedium = MediumIndex(desc.camera.medium, media, desc.camera.loc);
-    scene->emissivityTables = std::make_unique<EmissivityTables>();
-    scene->emissivityTables->polarized = NeedsPolarization(*scene, materials);
-    ThermalEmitters emitters(*scene->shader, *scene->emissivityTables, scene->arena, diag,
-                             overrides.emission, scene->integrator.emitterPowerSampling);
+        overrides.emission, scene.media, scene.arena, diag);
+    scene.cameraMedium = MediumIndex(desc.camera.medium, media, desc.camera.loc);
+    scene.emissivityTables = std::make_unique<EmissivityTables>();
+    scene.emissivityTables->polarized = NeedsPolarization(scene, materials);
+    ThermalEmitters emitters(*scene.shader, *scene.emissivityTables, scene.arena, diag,
+                             overrides.emission, scene.integrator.emitterPowerSampling);
     std::vector<SceneShapes> shapes;
     for (ShapeSceneEntity& s : desc.shapes)
-        shapes.push_back(CreateShapes(s, textures, materials, media, emitters, scene->arena, diag));
-    std::vector<std::vector<int>> shapeLights = CreateLights(*scene, desc, shapes, emitters, diag);
-    CreateAggregate(*scene, desc, shapes, shapeLights, textures, materials, media, emitters, diag);
-    PreprocessLights(*scene);
-    CreateLightSampler(*scene);
-    scene->features = DecideFeatures(*scene, desc, shapes, materials, emitters, overrides);
-    if (!scene->integrator.volumetric && !scene->media.empty())
+        shapes.push_back(CreateShapes(s, textures, materials, media, emitters, scene.arena, diag));
+    std::vector<std::vector<int>> shapeLights = CreateLights(scene, desc, shapes, emitters, diag);
+    CreateAggregate(scene, desc, shapes, shapeLights, textures, materials, media, emitters, diag);
+    PreprocessLights(scene);
+    CreateLightSampler(scene);
+    scene.features = DecideFeatures(scene, desc, shapes, materials, emitters, overrides);
+    if (!scene.integrator.volumetric && !scene.media.empty())
         diag.Warn(desc.integrator.loc,
                   "integrator \"path\" ignores participating media (as pbrt-v4); use "
                   "\"volpath\"");
-    if (scene->lights.empty() && !scene->features.thermalEmission &&
-        !(scene->features.volumetric && scene->features.emissiveMedia > 0))
+    if (scene.lights.empty() && !scene.features.thermalEmission &&
+        !(scene.features.volumetric && scene.features.emissiveMedia > 0))
         diag.Warn(FileLoc(), "the scene has no lights; the image will be black");
+}
+
+std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverrides& overrides,
+                                     Diagnostics& diag) {
+    std::unique_ptr<Scene> scene(new Scene());
+    if (overrides.memoryLimitBytes) scene->arena.Budget().SetLimit(*overrides.memoryLimitBytes);
+    try {
+        CreateScene(*scene, desc, overrides, diag);
+    } catch (const MemoryLimitError& e) {
+        // Charges are reported at their directive where creation code can; the rest here
+        throw SceneError(FileLoc(), e.what());
+    }
     return scene;
 }
 

@@ -1,12 +1,15 @@
 // ObjectArena: owns the objects a scene is made of (shapes, textures, materials, lights,
 // images) for the scene's lifetime, so the closed-set value types (Shape, Material, Light, ...)
-// can hold plain pointers to them.
+// can hold plain pointers to them. Its MemoryBudget is what the objects may take
+// (memory_budget.h): creation code charges large allocations to it before making them.
 #pragma once
 
 #include <memory>
 #include <mutex>
+
 #include <utility>
 #include <vector>
+#include "core/base/memory_budget.h"
 
 namespace kiln {
 
@@ -30,7 +33,10 @@ class ObjectArena {
         return raw;
     }
 
+    MemoryBudget& Budget() { return budget_; }
+
   private:
+    MemoryBudget budget_;
     std::mutex mutex_;
     std::vector<std::shared_ptr<void>> objects_;
 };

@@ -100,14 +100,18 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
     const bool aovs = params.GetOneBool("writeaovs", type == "gbuffer");
     const bool stokes = params.GetOneBool("stokes", false);
     const double bytes = double(bounds.Area()) * RGBFilm::BytesPerPixel(aovs, stokes);
-    if (bounds.Area() > std::numeric_limits<int32_t>::max() ||
-        (PhysicalMemoryBytes() > 0 && bytes > PhysicalMemoryBytes()))
+    const std::string what = "a film of " + std::to_string(bounds.pMax.x - bounds.pMin.x) + " x " +
+                             std::to_string(bounds.pMax.y - bounds.pMin.y) + " pixels";
+    if (bounds.Area() > std::numeric_limits<int32_t>::max())
         throw SceneError(resolutionLoc,
-                         "film of " + std::to_string(bounds.pMax.x - bounds.pMin.x) + " x " +
-                             std::to_string(bounds.pMax.y - bounds.pMin.y) + " pixels needs " +
-                             FormatBytes(bytes) + ", more than this machine's " +
-                             FormatBytes(PhysicalMemoryBytes()) + " of memory",
+                         what + " needs " + FormatBytes(bytes) +
+                             " and has more than the 2^31 pixels kiln renders at once",
                          "xresolution");
+    try {
+        arena.Budget().Charge(bytes, what);
+    } catch (const MemoryLimitError& e) {
+        throw SceneError(resolutionLoc, e.what(), "xresolution");
+    }
 
     o.savefp16 = params.GetOneBool("savefp16", true);
     o.maxComponentValue = params.GetOneFloat("maxcomponentvalue", Infinity);

@@ -250,6 +250,12 @@ const CurveSet* CurveSet::Create(const Transform& renderFromObject, bool reverse
                  az = renderFromObject(Vector3f(0, 0, 1));
         widthScale = std::cbrt(std::abs(Dot(ax, Cross(ay, az))));
     }
+    try {
+        arena.Budget().Charge(double(nSegments) * MemoryBudget::kBytesPerCurveSegment,
+                              "a curve of " + std::to_string(nSegments) + " segments");
+    } catch (const MemoryLimitError& e) {
+        throw SceneError(at("P"), e.what(), "P");
+    }
     auto* set = arena.New<CurveSet>(type, reverseOrientation ^ renderFromObject.SwapsHandedness());
     size_t cpOffset = 0;
     for (size_t seg = 0; seg < nSegments; ++seg) {

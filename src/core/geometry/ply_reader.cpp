@@ -162,15 +162,16 @@ bool IsPlanar(Point3f p0, Point3f p1, Point3f p2, Point3f p3) {
 }  // namespace
 
 // PLY reading
-TriQuadMesh TriQuadMesh::ReadPLY(const std::string& filename) {
+TriQuadMesh TriQuadMesh::ReadPLY(const std::string& filename, const HeaderCounts& beforeData) {
     std::string data, error;
     if (!ReadFileBytes(filename, &data, &error))  // gzip-compressed PLY too
         throw SceneError(FileLoc(std::make_shared<const std::string>(filename), 0, 0),
                          "cannot read PLY file: " + error);
-    return ParsePLY(data, filename);
+    return ParsePLY(data, filename, beforeData);
 }
 
-TriQuadMesh TriQuadMesh::ParsePLY(const std::string& data, const std::string& filename) {
+TriQuadMesh TriQuadMesh::ParsePLY(const std::string& data, const std::string& filename,
+                                  const HeaderCounts& beforeData) {
     auto file = std::make_shared<const std::string>(filename);
     auto fail = [&](int line, const std::string& message) {
         throw SceneError(FileLoc(file, line, 0), "malformed PLY file: " + message);
@@ -252,9 +253,12 @@ TriQuadMesh TriQuadMesh::ParsePLY(const std::string& data, const std::string& fi
     // Element data
     PlyDataReader reader(filename, data, std::min(pos, data.size()), *format, line);
     TriQuadMesh mesh;
-    double nVertices = 0;  // from the header, for checking indices wherever faces come
-    for (const PlyElement& e : elements)
+    double nVertices = 0, nFaces = 0;  // from the header (indices are checked against it)
+    for (const PlyElement& e : elements) {
         if (e.name == "vertex") nVertices = double(e.count);
+        if (e.name == "face" && !e.props.empty()) nFaces = double(e.count);
+    }
+    if (beforeData) beforeData(nVertices, nFaces);
     // Faces as four vertex indices (the last -1 for a triangle): no allocation per face
     std::vector<std::array<int, 4>> faces;
     std::vector<int> faceIndices;

@@ -9,6 +9,7 @@
 // the file.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -27,9 +28,13 @@ struct TriQuadMesh {
     std::map<std::string, std::vector<Float>> vertexAttributes;  // one value per vertex
 
     // Reads the file; throws SceneError (file name, and line for ascii) when malformed.
-    static TriQuadMesh ReadPLY(const std::string& filename);
+    // beforeData, if given, learns the vertex and face counts the header declares before any
+    // element is read (to charge their memory; it may throw).
+    using HeaderCounts = std::function<void(double vertices, double faces)>;
+    static TriQuadMesh ReadPLY(const std::string& filename, const HeaderCounts& beforeData = {});
     // The same from the file's bytes (filename only names it in errors).
-    static TriQuadMesh ParsePLY(const std::string& data, const std::string& filename);
+    static TriQuadMesh ParsePLY(const std::string& data, const std::string& filename,
+                                const HeaderCounts& beforeData = {});
 };
 
 }  // namespace kiln

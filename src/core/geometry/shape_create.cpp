@@ -5,6 +5,7 @@
 #include "core/geometry/ply_reader.h"
 #include "core/geometry/shape.h"
 
+#include "core/base/system_memory.h"
 #include "core/geometry/loop_subdivision.h"
 #include "core/geometry/mesh_displacement.h"
 #include "core/parser/diagnostics.h"
@@ -13,6 +14,21 @@
 namespace kiln {
 
 namespace {
+
+// Charges the memory of what a directive is about to create (memory_budget.h); a
+// MemoryLimitError becomes a SceneError at the directive.
+void Charge(ObjectArena& arena, double bytes, const std::string& what, const FileLoc& loc,
+            const std::string& token) {
+    try {
+        arena.Budget().Charge(bytes, what);
+    } catch (const MemoryLimitError& e) {
+        throw SceneError(loc, e.what(), token);
+    }
+}
+
+double MeshBytes(double triangles, double vertices) {
+    return triangles * MemoryBudget::kBytesPerTriangle + vertices * MemoryBudget::kBytesPerVertex;
+}
 
 // The most triangles a displaced PLY mesh may refine into (as loopsubdiv's limit)
 constexpr size_t kMaxDisplacedTriangles = size_t(1) << 25;
@@ -116,6 +132,9 @@ std::vector<Shape> CreateTriangleMesh(const Transform* renderFromObject, bool re
                          "faceIndices");
     std::map<std::string, std::vector<Float>> attributes;
     if (!temperature.empty()) attributes["temperature"] = std::move(temperature);
+    Charge(arena, MeshBytes(double(indices.size() / 3), double(P.size())),
+           "a trianglemesh of " + std::to_string(indices.size() / 3) + " triangles", loc,
+           "trianglemesh");
     auto* mesh = arena.New<TriangleMesh>(*renderFromObject, reverseOrientation, std::move(indices),
                                          std::move(P), std::move(N), std::move(S), std::move(uv),
                                          std::move(faceIndices), std::move(attributes));
@@ -143,6 +162,11 @@ std::vector<Shape> CreateLoopSubdiv(const Transform* renderFromObject, bool reve
                          "loopsubdiv \"levels\" must be >= 0 and make at most 2^25 triangles (" +
                              std::to_string(indices.size() / 3) + " triangles to begin with)",
                          std::to_string(levels));
+    double triangles = double(indices.size() / 3) * std::pow(4.0, levels);
+    Charge(arena, MeshBytes(triangles, triangles / 2),
+           "loopsubdiv of " + std::to_string(int64_t(triangles)) + " triangles at level " +
+               std::to_string(levels),
+           LocOf(params, "levels", loc), "levels");
     SubdividedMesh m = LoopSubdivide(indices, P, levels);
     auto* mesh = arena.New<TriangleMesh>(
         *renderFromObject, reverseOrientation, std::move(m.indices), std::move(m.p), std::move(m.n),
@@ -182,6 +206,11 @@ std::vector<Shape> CreateBilinearMesh(const Transform* renderFromObject, bool re
         throw SceneError(LocOf(params, "faceIndices", loc),
                          "number of \"faceIndices\" must match the number of patches",
                          "faceIndices");
+    Charge(arena,
+           double(indices.size() / 4) * MemoryBudget::kBytesPerPatch +
+               double(P.size()) * MemoryBudget::kBytesPerVertex,
+           "a bilinearmesh of " + std::to_string(indices.size() / 4) + " patches", loc,
+           "bilinearmesh");
     auto* mesh = arena.New<BilinearPatchMesh>(*renderFromObject, reverseOrientation,
                                               std::move(indices), std::move(P), std::move(N),
                                               std::move(uv), std::move(faceIndices));
@@ -204,8 +233,18 @@ std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverse
         params.GetOneFloat("edgelength", 1);
     }
     TriQuadMesh ply;
+    // A header may claim any size: its counts are charged before the data are read (a face
+    // may be a quad: two triangles' worth)
+    auto charge = [&](double vertices, double faces) {
+        arena.Budget().Charge(MeshBytes(2 * faces, vertices),
+                              "PLY mesh \"" + filename + "\" (" +
+                                  std::to_string(int64_t(vertices)) + " vertices, " +
+                                  std::to_string(int64_t(faces)) + " faces)");
+    };
     try {
-        ply = TriQuadMesh::ReadPLY(filename);
+        ply = TriQuadMesh::ReadPLY(filename, charge);
+    } catch (const MemoryLimitError& e) {
+        throw SceneError(LocOf(params, "filename", loc), e.what(), filename);
     } catch (const SceneError& e) {
         // Report at the directive, naming the PLY file and the problem.
         throw SceneError(LocOf(params, "filename", loc), e.Loc().ToString() + ": " + e.Message(),
@@ -214,19 +253,29 @@ std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverse
     if (auto t = ply.vertexAttributes.find("temperature"); t != ply.vertexAttributes.end())
         CheckTemperatures(t->second, LocOf(params, "filename", loc), filename);
     if (displacement) {
+        // As many triangles as the memory left holds, and at most kMaxDisplacedTriangles
+        // (the original ones are charged already)
+        double before = double(ply.triIndices.size() / 3 + ply.quadIndices.size() / 2);
+        size_t fit = size_t(std::min(double(kMaxDisplacedTriangles),
+                                     before + arena.Budget().Remaining() / MeshBytes(1, 0.5)));
         try {
-            DisplaceMesh(ply, *displacement, *renderFromObject, kMaxDisplacedTriangles);
+            DisplaceMesh(ply, *displacement, *renderFromObject, fit);
         } catch (const std::length_error&) {
             throw SceneError(LocOf(params, "edgelength", loc),
-                             "displacing \"" + filename +
-                                 "\" at this edge length would make more "
-                                 "than " +
-                                 std::to_string(kMaxDisplacedTriangles) + " triangles",
+                             "displacing \"" + filename + "\" at this edge length would make " +
+                                 "more than " + std::to_string(fit) + " triangles" +
+                                 (fit < kMaxDisplacedTriangles
+                                      ? ", more than the memory left (" +
+                                            FormatBytes(arena.Budget().Remaining()) + ") holds"
+                                      : ""),
                              "edgelength");
         } catch (const std::invalid_argument& e) {
             throw SceneError(LocOf(params, "displacement", loc),
                              "plymesh \"" + filename + "\": " + e.what(), "displacement");
         }
+        Charge(arena, MeshBytes(double(ply.triIndices.size() / 3) - before, 0),
+               "displaced PLY mesh \"" + filename + "\"", LocOf(params, "edgelength", loc),
+               "edgelength");
     }
     std::vector<Shape> shapes;
     if (!ply.triIndices.empty()) {

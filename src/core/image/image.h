@@ -28,6 +28,8 @@
 
 namespace kiln {
 
+class MemoryBudget;
+
 class RGBColorSpace;
 
 // PixelFormat Definition
@@ -80,8 +82,11 @@ class Image {
     // everything else become Float (linear). For files whose data window is smaller than the
     // display window (crop renders) the data window is read and *metadata gets pixelBounds and
     // fullResolution. Throws std::runtime_error("file: reason").
+    // With a budget, the decoded pixels (as floats) are charged to it before they are read
+    // (MemoryLimitError if they do not fit); without, they must fit in half the machine's memory.
     static Image Read(const std::string& filename, ImageMetadata* metadata = nullptr,
-                      std::optional<ColorEncoding> encoding = std::nullopt);
+                      std::optional<ColorEncoding> encoding = std::nullopt,
+                      MemoryBudget* budget = nullptr);
 
     // Writes by extension (.exr, .png, .jpg/.jpeg, .tif/.tiff, .hdr, .pfm, anything else OIIO
     // writes). Raw values are written as they are (no display transform): EXR keeps every

@@ -15,6 +15,8 @@
 #include "core/base/file_reading.h"
 #include "core/base/system_memory.h"
 #include "core/image/image.h"
+
+#include "core/base/memory_budget.h"
 #include "spectral/color.h"
 
 namespace kiln {
@@ -95,7 +97,7 @@ void RemovePendingTemporaryFile() noexcept {
 
 // Image Reading
 Image Image::Read(const std::string& filename, ImageMetadata* metadata,
-                  std::optional<ColorEncoding> encoding) {
+                  std::optional<ColorEncoding> encoding, MemoryBudget* budget) {
     std::string notRegular;
     if (!IsRegularFile(filename, &notRegular)) Fail(filename, notRegular);  // e.g. /dev/zero
     auto in = OIIO::ImageInput::open(filename);
@@ -105,7 +107,11 @@ Image Image::Read(const std::string& filename, ImageMetadata* metadata,
     if (spec.width <= 0 || spec.height <= 0 || nc <= 0) Fail(filename, "empty image");
     // A header may claim any size: check what the pixels would take before reading them
     double bytes = double(spec.width) * spec.height * nc * sizeof(float);
-    if (double memory = PhysicalMemoryBytes(); memory > 0 && bytes > memory / 2)
+    if (budget)
+        budget->Charge(bytes, "image \"" + filename + "\" (" + std::to_string(spec.width) + " x " +
+                                  std::to_string(spec.height) + " pixels, " + std::to_string(nc) +
+                                  " channels)");
+    else if (double memory = PhysicalMemoryBytes(); memory > 0 && bytes > memory / 2)
         Fail(filename, std::to_string(spec.width) + " x " + std::to_string(spec.height) +
                            " pixels would take " + FormatBytes(bytes) + " of memory");
     std::vector<std::string> names;

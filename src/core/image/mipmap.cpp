@@ -80,9 +80,13 @@ MIPMap::MIPMap(Image image, const RGBColorSpace* colorSpace, WrapMode wrapMode,
 MIPMap* MIPMap::CreateFromFile(const std::string& filename, MIPMapFilterOptions options,
                                WrapMode wrap, ColorEncoding encoding, ObjectArena& arena) {
     ImageMetadata metadata;
-    Image image = Image::Read(filename, &metadata, encoding);
+    Image image = Image::Read(filename, &metadata, encoding, &arena.Budget());
     if (image.Format() == PixelFormat::U256 && !(image.Encoding() == encoding))
         image = image.ConvertToFormat(PixelFormat::U256, encoding);
+    // The pyramid's coarser levels: a third more
+    Point2i res = image.Resolution();
+    arena.Budget().Charge(double(res.x) * res.y * image.NChannels() * sizeof(float) / 3,
+                          "the MIP map of \"" + filename + "\"");
     return arena.New<MIPMap>(std::move(image), metadata.colorSpace, wrap, options);
 }
 

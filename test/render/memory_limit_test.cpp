@@ -1,0 +1,84 @@
+// kiln --memory-limit (SceneOverrides::memoryLimitBytes): a film, mesh, PLY file, curve or image
+// that would pass the limit is an error at its directive naming the object and its estimate,
+// raised before the memory is taken; scenes within the limit render as before.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "render_test_util.h"
+
+namespace kiln {
+namespace {
+
+// The error creating `scene` under `limit` bytes, or "" if it was created.
+std::string ErrorUnderLimit(const std::string& scene, double limit) {
+    Diagnostics diag(nullptr);
+    SceneOverrides o;
+    o.memoryLimitBytes = limit;
+    try {
+        testing::BuildScene(scene, diag, o);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+const std::string kSmallFilm =
+    "Film \"rgb\" \"integer xresolution\" 16 \"integer yresolution\" 16\n"
+    "Camera \"perspective\"\nWorldBegin\nLightSource \"distant\"\n";
+
+TEST(MemoryLimit, FilmsOverTheLimitAreLocatedErrors) {
+    std::string big =
+        "Film \"rgb\" \"integer xresolution\" 4000 \"integer yresolution\" 3000\n"
+        "Camera \"perspective\"\nWorldBegin\n";
+    std::string e = ErrorUnderLimit(big, 100e6);
+    EXPECT_NE(e.find("<test>:1:"), std::string::npos) << e;
+    EXPECT_NE(e.find("a film of 4000 x 3000 pixels needs"), std::string::npos) << e;
+    EXPECT_NE(e.find("memory limit of 100 MB"), std::string::npos) << e;
+    EXPECT_EQ(ErrorUnderLimit(big, 4e9), "");
+}
+
+TEST(MemoryLimit, MeshesAndCurvesAreChargedBeforeTheyAreMade) {
+    // Loop subdivision to level 8: 8 * 4^8 = 524288 triangles, about 100 MB
+    std::string loop = kSmallFilm +
+                       "Shape \"loopsubdiv\" \"integer levels\" 8 \"point3 P\" [1 0 0 -1 0 0 0 1 "
+                       "0 0 -1 0 0 0 1 0 0 -1] \"integer indices\" [0 2 4 2 1 4 1 3 4 3 0 4 2 0 "
+                       "5 1 2 5 3 1 5 0 3 5]\n";
+    std::string e = ErrorUnderLimit(loop, 50e6);
+    EXPECT_NE(e.find("loopsubdiv of 524288 triangles"), std::string::npos) << e;
+    EXPECT_NE(e.find("(at 'levels')"), std::string::npos) << e;
+    EXPECT_EQ(ErrorUnderLimit(loop, 1e9), "");
+    // A PLY header claiming 10^8 faces: refused from the header, before the data (which this
+    // file does not even have)
+    std::string ply = ::testing::TempDir() + "/kiln_claims_much.ply";
+    std::ofstream(ply) << "ply\nformat binary_little_endian 1.0\nelement vertex 50000000\n"
+                          "property float x\nproperty float y\nproperty float z\nelement face "
+                          "100000000\nproperty list uchar int vertex_indices\nend_header\n";
+    e = ErrorUnderLimit(kSmallFilm + "Shape \"plymesh\" \"string filename\" \"" + ply + "\"\n",
+                        1e9);
+    EXPECT_NE(e.find("50000000 vertices, 100000000 faces) needs"), std::string::npos) << e;
+    EXPECT_NE(e.find("<test>:5:"), std::string::npos) << e;
+    // A curve of 4000 segments (about 800 kB)
+    std::string curve = kSmallFilm + "Shape \"curve\" \"string basis\" \"bspline\" \"point3 P\" [";
+    for (int i = 0; i < 4003; ++i) curve += std::to_string(i) + " 0 0 ";
+    curve += "]\n";
+    e = ErrorUnderLimit(curve, 400e3);
+    EXPECT_NE(e.find("a curve of 4000 segments needs"), std::string::npos) << e;
+    EXPECT_EQ(ErrorUnderLimit(curve, 10e6), "");
+}
+
+TEST(MemoryLimit, ImagesAreChargedFromTheirHeader) {
+    // A PFM header claiming 30000 x 30000 RGB pixels (10.8 GB as floats) over 12 bytes of data
+    std::string pfm = ::testing::TempDir() + "/kiln_claims_much.pfm";
+    std::ofstream(pfm, std::ios::binary) << "PF\n30000 30000\n-1.0\n" << std::string(12, '\0');
+    std::string e = ErrorUnderLimit(kSmallFilm + "Texture \"t\" \"spectrum\" \"imagemap\" "
+                                                 "\"string filename\" \"" +
+                                        pfm + "\"\n",
+                                    2e9);
+    EXPECT_NE(e.find("30000 x 30000 pixels, 3 channels) needs"), std::string::npos) << e;
+    EXPECT_NE(e.find("--memory-limit"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace kiln
