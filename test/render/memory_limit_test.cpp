@@ -72,8 +72,9 @@ TEST(MemoryLimit, ImagesAreChargedFromTheirHeader) {
     // A PFM header claiming 30000 x 30000 RGB pixels (10.8 GB as floats) over 12 bytes of data
     std::string pfm = ::testing::TempDir() + "/kiln_claims_much.pfm";
     std::ofstream(pfm, std::ios::binary) << "PF\n30000 30000\n-1.0\n" << std::string(12, '\0');
-    std::string e = ErrorUnderLimit(kSmallFilm + "Texture \"t\" \"spectrum\" \"imagemap\" "
-                                                 "\"string filename\" \"" +
+    std::string e = ErrorUnderLimit(kSmallFilm +
+                                        "Texture \"t\" \"spectrum\" \"imagemap\" "
+                                        "\"string filename\" \"" +
                                         pfm + "\"\n",
                                     2e9);
     EXPECT_NE(e.find("30000 x 30000 pixels, 3 channels) needs"), std::string::npos) << e;
