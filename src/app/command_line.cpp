@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "app/image_diff.h"
+#include "app/merge.h"
 #include "app/progress.h"
 #include "core/film/film.h"
 #include "core/image/polarization_view.h"
@@ -91,7 +92,12 @@ std::string UsageText() {
            "  --spp N               samples per pixel (overrides the scene's sampler)\n"
            "  --threads N           worker threads (default: all cores)\n"
            "  --seed S              sampler seed\n"
-           "  --crop x0 x1 y0 y1    render only this window (NDC, as Film \"cropwindow\")\n"
+           "  --crop x0 x1 y0 y1    render only this window (NDC, as Film \"cropwindow\";\n"
+           "                        also --cropwindow)\n"
+           "  --pixelbounds x0 x1 y0 y1\n"
+           "                        render only pixels [x0, x1) x [y0, y1) of the image (as\n"
+           "                        pbrt-v4): a tile, bit-identical to the same pixels of a\n"
+           "                        full render, written as 32-bit float EXR for kiln merge\n"
            "  --emission MODEL      thermal emission model for every hot surface:\n"
            "                        kirchhoff (default), additive, diffuse or none\n"
            "  --frames A-B          render frames A..B of an animation (time = frame / fps);\n"
@@ -125,7 +131,9 @@ std::string UsageText() {
            "                        media), all\n"
            "  --quiet               no progress output\n"
            "  --help, --version\n"
-           "   or: kiln diff A B [--metric M] [--threshold X] [--out DIFF] (kiln diff --help)\n";
+           "   or: kiln diff A B [--metric M] [--threshold X] [--out DIFF] (kiln diff --help)\n"
+           "   or: kiln merge PART.exr... -o FULL.exr (tiles of one frame)\n"
+           "   or: kiln merge --samples RENDER.exr... -o OUT.exr (renders with other seeds)\n";
 }
 
 CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
@@ -161,6 +169,13 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             if (!(c[0] >= 0 && c[0] < c[1] && c[1] <= 1 && c[2] >= 0 && c[2] < c[3] && c[3] <= 1))
                 throw std::invalid_argument(a + " expects 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1");
             o.crop = Bounds2f{Point2f(c[0], c[2]), Point2f(c[1], c[3])};
+        } else if (a == "--pixelbounds") {
+            if (i + 4 >= args.size()) throw std::invalid_argument(a + " needs x0 x1 y0 y1");
+            int c[4];
+            for (int& v : c) v = ParseInt(a, args[++i], 0);
+            if (!(c[0] < c[1] && c[2] < c[3]))
+                throw std::invalid_argument(a + " expects 0 <= x0 < x1 and 0 <= y0 < y1 (pixels)");
+            o.pixelBounds = Bounds2i{Point2i(c[0], c[2]), Point2i(c[1], c[3])};
         } else if (a == "--frames") {
             const std::string& v = value();
             size_t dash = v.find('-', 1);
@@ -268,6 +283,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
         SceneBuilder builder(diag);
         ParseFile(builder, options.sceneFile, diag);
         SceneOverrides overrides{options.spp, options.seed, options.crop, std::nullopt};
+        overrides.pixelBounds = options.pixelBounds;
         overrides.genericFootprints = options.genericFootprints;
         overrides.genericAOVs = options.genericAOVs;
         overrides.genericVolumes = options.genericVolumes;
@@ -354,6 +370,10 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     metadata.renderTimeSeconds = float(stats.seconds);
     metadata.samplesPerPixel = stats.cancelled ? stats.completedSamples : stats.samplesPerPixel;
     if (stats.cancelled) metadata.strings["kiln:partial"] = "true";
+    // What kiln merge checks parts against: the same scene (its file's bytes), frame and seed
+    metadata.strings["kiln:seed"] = std::to_string(scene->sampler->Seed());
+    metadata.strings["kiln:scene"] = SceneFileHash(options.sceneFile);
+    if (frame) metadata.strings["kiln:frame"] = std::to_string(*frame);
     int status = 0;
     for (const std::string& out : outputs) {
         try {
@@ -391,6 +411,8 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
 int RunKiln(int argc, char** argv) {
     if (argc >= 2 && std::string(argv[1]) == "diff")
         return RunImageDiff(std::vector<std::string>(argv + 2, argv + argc));
+    if (argc >= 2 && std::string(argv[1]) == "merge")
+        return RunMerge(std::vector<std::string>(argv + 2, argv + argc));
     CommandLineOptions options;
     try {
         options = ParseCommandLine(std::vector<std::string>(argv + 1, argv + argc));

@@ -14,6 +14,7 @@ struct CommandLineOptions {
     std::vector<std::string> outputs;  // -o, may repeat: one render, several files
     std::optional<int> spp, threads, seed;
     std::optional<Bounds2f> crop;
+    std::optional<Bounds2i> pixelBounds;        // --pixelbounds x0 x1 y0 y1 (pbrt-v4)
     std::optional<std::string> emission;        // kirchhoff | additive | diffuse | none
     std::optional<std::pair<int, int>> frames;  // first and last frame, inclusive
     double fps = 24;

@@ -36,7 +36,10 @@ namespace kiln {
 struct SceneOverrides {
     std::optional<int> samplesPerPixel;
     std::optional<int> seed;
-    std::optional<Bounds2f> cropWindow;     // NDC [x0, x1] x [y0, y1], as Film "cropwindow"
+    std::optional<Bounds2f> cropWindow;  // NDC [x0, x1] x [y0, y1], as Film "cropwindow"
+    // Pixels [x0, x1) x [y0, y1) of the full image, as Film "pixelbounds" (pbrt-v4's
+    // --pixelbounds; replaces the scene's crop window and pixel bounds)
+    std::optional<Bounds2i> pixelBounds;
     std::optional<EmissionModel> emission;  // thermal emission model for every hot surface
     // Animation: the frame being rendered and its time in seconds. Textures that change over
     // time ("cooling" and "keyframes": "float time"; "heatmap" sequences: "float frame") get

@@ -84,6 +84,15 @@ void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const SceneOverri
         crop.floats = {c.pMin.x, c.pMax.x, c.pMin.y, c.pMax.y};
         desc.film.parameters.Set(crop);
     }
+    if (overrides.pixelBounds) {
+        ParsedParameter bounds;
+        bounds.type = "integer";
+        bounds.name = "pixelbounds";
+        const Bounds2i& b = *overrides.pixelBounds;
+        bounds.ints = {b.pMin.x, b.pMax.x, b.pMin.y, b.pMax.y};
+        desc.film.parameters.Erase("cropwindow");
+        desc.film.parameters.Set(bounds);
+    }
     if (overrides.stokes) {
         ParsedParameter stokes;
         stokes.type = "bool";

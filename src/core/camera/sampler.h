@@ -25,6 +25,10 @@ class Sampler {
     template <typename T>
     requires(!std::is_same_v<std::decay_t<T>, Sampler>) Sampler(T s) : v(std::move(s)) {}
 
+    // The seed its sample streams are drawn with.
+    int Seed() const {
+        return std::visit([](const auto& s) { return s.Seed(); }, v);
+    }
     int SamplesPerPixel() const {
         return std::visit([](const auto& s) { return s.SamplesPerPixel(); }, v);
     }

@@ -21,6 +21,7 @@ class IndependentSampler {
     IndependentSampler(int samplesPerPixel, int seed = 0)
         : samplesPerPixel(samplesPerPixel), seed(seed) {}
     int SamplesPerPixel() const { return samplesPerPixel; }
+    int Seed() const { return seed; }
     void StartPixelSample(Point2i p, int sampleIndex, int dimension) {
         rng.SetSequence(Hash(p.x, p.y, seed));
         rng.Advance(int64_t(sampleIndex) * 65536 + dimension);
@@ -44,6 +45,7 @@ class StratifiedSampler {
     StratifiedSampler(int xPixelSamples, int yPixelSamples, bool jitter, int seed = 0)
         : xPixelSamples(xPixelSamples), yPixelSamples(yPixelSamples), seed(seed), jitter(jitter) {}
     int SamplesPerPixel() const { return xPixelSamples * yPixelSamples; }
+    int Seed() const { return seed; }
     void StartPixelSample(Point2i p, int index, int dim) {
         pixel = p;
         sampleIndex = index;
@@ -71,6 +73,7 @@ class PaddedSobolSampler {
     PaddedSobolSampler(int samplesPerPixel, RandomizeStrategy randomize, int seed = 0)
         : samplesPerPixel(samplesPerPixel), seed(seed), randomize(randomize) {}
     int SamplesPerPixel() const { return samplesPerPixel; }
+    int Seed() const { return seed; }
     void StartPixelSample(Point2i p, int index, int dim) {
         pixel = p;
         sampleIndex = index;
@@ -99,6 +102,7 @@ class ZSobolSampler {
                   int seed = 0);
     // Rounded up to a power of two.
     int SamplesPerPixel() const { return 1 << log2SamplesPerPixel; }
+    int Seed() const { return seed; }
     void StartPixelSample(Point2i p, int index, int dim) {
         dimension = dim;
         uint64_t pixelMorton = EncodeMorton2(uint32_t(p.x), uint32_t(p.y));

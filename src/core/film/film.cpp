@@ -270,8 +270,15 @@ void RGBFilm::WriteImage(const std::string& filename, ImageMetadata metadata,
                          const std::string& viewOverride, Diagnostics* diag) const {
     Image image = GetImage(&metadata);
     std::string ext = FileExtension(filename);
+    // A part of the frame (crop window, pixel bounds: a tile for kiln merge) is written in
+    // 32-bit float, so that merging loses nothing; the film's choice goes with it, for the merge
+    // to apply to the whole frame
+    const Bounds2i& b = opts.pixelBounds;
+    const bool part = b.pMin.x != 0 || b.pMin.y != 0 || b.pMax.x != opts.fullResolution.x ||
+                      b.pMax.y != opts.fullResolution.y;
+    metadata.strings["kiln:savefp16"] = opts.savefp16 ? "true" : "false";
     if (ext == "exr") {
-        if (opts.savefp16) {
+        if (opts.savefp16 && !part) {
             // Half floats end at 65504, which absolute thermal radiance passes near 6000 K:
             // keep 32-bit floats rather than write infinities
             float largest = 0;

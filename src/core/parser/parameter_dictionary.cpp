@@ -305,6 +305,18 @@ const RGBColorSpace* ParameterDictionary::ColorSpace() const {
     return colorSpace ? colorSpace : &RGBColorSpace::sRGB();
 }
 
+void ParameterDictionary::Erase(const std::string& name) {
+    ParsedParameterVector kept;
+    size_t keptOwn = 0;
+    for (size_t i = 0; i < params.size(); ++i) {
+        if (params[i].name == name) continue;
+        kept.push_back(std::move(params[i]));
+        if (i < nOwn) ++keptOwn;
+    }
+    params = std::move(kept);
+    nOwn = keptOwn;
+}
+
 void ParameterDictionary::Set(ParsedParameter p) {
     ParsedParameterVector kept;
     size_t keptOwn = 0;

@@ -88,6 +88,8 @@ class ParameterDictionary {
     // Replaces (every parameter of that name) or adds a parameter, e.g. for command-line
     // overrides.
     void Set(ParsedParameter p);
+    // Removes every parameter of that name (a command-line override replacing another).
+    void Erase(const std::string& name);
 
     // Warns "unused parameter 'float foo'" at the parameter for every parameter never looked
     // up and not mayBeUnused (unless shadowed by a looked-up one of the same type and name).

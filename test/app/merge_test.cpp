@@ -1,0 +1,191 @@
+// Tiles and sample sets (issue 14): a tile (--pixelbounds) is bit-identical to the same pixels
+// of a full render at any thread count, and `kiln merge` of tiles is bit-identical to the full
+// render, in half and in float; merges that would be wrong are refused with nothing written;
+// `kiln merge --samples` weights renders by their samples.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "app/command_line.h"
+#include "app/merge.h"
+
+namespace kiln {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Dir {
+    fs::path path;
+    Dir() {
+        path = fs::path(::testing::TempDir()) / ("kiln_merge_" + std::to_string(::getpid()));
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~Dir() { fs::remove_all(path); }
+    std::string operator/(const std::string& name) const { return (path / name).string(); }
+};
+
+// A small scene with a diffuse floor, a glossy sphere, an area light and an environment.
+std::string WriteScene(const Dir& dir, bool savefp16, const std::string& name = "scene.pbrt") {
+    std::string file = dir / name;
+    std::ofstream(file)
+        << "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 20 "
+           "\"bool savefp16\" "
+        << (savefp16 ? "true" : "false") << "\n"
+        << "Sampler \"zsobol\" \"integer pixelsamples\" 8\n"
+           "LookAt 0 1 4  0 0.4 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
+           "WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.3 0.3 0.4]\n"
+           "AttributeBegin AreaLightSource \"diffuse\" \"rgb L\" [5 5 5]\n"
+           "Translate 0 2 0 ReverseOrientation Shape \"disk\" \"float radius\" 0.5\n"
+           "AttributeEnd\n"
+           "Material \"coateddiffuse\" \"rgb reflectance\" [0.6 0.3 0.2]\n"
+           "Shape \"bilinearmesh\" \"point3 P\" [-3 0 -3 3 0 -3 -3 0 3 3 0 3]\n"
+           "Material \"conductor\" \"float roughness\" 0.1\n"
+           "AttributeBegin Translate 0 0.5 0 Shape \"sphere\" \"float radius\" 0.5 "
+           "AttributeEnd\n";
+    return file;
+}
+
+int Kiln(std::vector<std::string> args) {
+    args.insert(args.begin(), "kiln");
+    args.push_back("--quiet");
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    return RunKiln(int(argv.size()), argv.data());
+}
+
+// Pixel values (all channels) of an image file, and its format.
+std::pair<std::vector<float>, PixelFormat> Pixels(const std::string& file) {
+    Image im = Image::Read(file);
+    std::vector<float> v;
+    for (int y = 0; y < im.Resolution().y; ++y)
+        for (int x = 0; x < im.Resolution().x; ++x)
+            for (int c = 0; c < im.NChannels(); ++c) v.push_back(im.GetChannel({x, y}, c));
+    return {v, im.Format()};
+}
+
+// Four tiles of 24 x 20 (uneven), each rendered with a different thread count.
+std::vector<std::string> RenderTiles(const Dir& dir, const std::string& scene,
+                                     const std::string& prefix, int seed = 3) {
+    const int bounds[4][4] = {{0, 10, 0, 7}, {10, 24, 0, 7}, {0, 17, 7, 20}, {17, 24, 7, 20}};
+    std::vector<std::string> files;
+    for (int t = 0; t < 4; ++t) {
+        std::string out = dir / (prefix + std::to_string(t) + ".exr");
+        std::vector<std::string> args = {scene, "--seed", std::to_string(seed), "--pixelbounds"};
+        for (int k = 0; k < 4; ++k) args.push_back(std::to_string(bounds[t][k]));
+        args.insert(args.end(), {"--nthreads", std::to_string(1 + t % 2), "-o", out});
+        EXPECT_EQ(Kiln(args), 0);
+        files.push_back(out);
+    }
+    return files;
+}
+
+TEST(Merge, TilesAreBitIdenticalToTheFullRender) {
+    Dir dir;
+    for (bool half : {false, true}) {
+        SCOPED_TRACE(half ? "savefp16" : "float");
+        std::string scene = WriteScene(dir, half);
+        std::string full = dir / "full.exr";
+        ASSERT_EQ(Kiln({scene, "--seed", "3", "-o", full}), 0);
+        std::vector<std::string> tiles = RenderTiles(dir, scene, "tile");
+        // A tile records the frame it belongs to, and is float whatever the film asks
+        ImageMetadata meta;
+        Image tile = Image::Read(tiles[3], &meta);
+        ASSERT_TRUE(meta.fullResolution && meta.pixelBounds);
+        EXPECT_EQ(*meta.fullResolution, Point2i(24, 20));
+        EXPECT_EQ(meta.pixelBounds->pMin, Point2i(17, 7));
+        EXPECT_EQ(tile.Format(), PixelFormat::Float);
+        // Its pixels are the full render's (exactly, when the full render is float)
+        if (!half) {
+            Image f = Image::Read(full);
+            for (int y = 0; y < 13; ++y)
+                for (int x = 0; x < 7; ++x)
+                    for (int c = 0; c < 3; ++c)
+                        ASSERT_EQ(tile.GetChannel({x, y}, c), f.GetChannel({17 + x, 7 + y}, c));
+        }
+        std::string merged = dir / "merged.exr";
+        std::vector<std::string> args = {"merge"};
+        args.insert(args.end(), tiles.begin(), tiles.end());
+        args.insert(args.end(), {"-o", merged});
+        ASSERT_EQ(Kiln(args), 0);
+        auto [a, fa] = Pixels(merged);
+        auto [b, fb] = Pixels(full);
+        EXPECT_EQ(fa, fb);
+        ASSERT_EQ(a.size(), b.size());
+        for (size_t i = 0; i < a.size(); ++i) ASSERT_EQ(a[i], b[i]) << i;
+        EXPECT_GT(b[100], 0);
+    }
+}
+
+TEST(Merge, WrongMergesAreRefusedAndWriteNothing) {
+    Dir dir;
+    std::string scene = WriteScene(dir, true);
+    std::vector<std::string> tiles = RenderTiles(dir, scene, "tile");
+    std::string out = dir / "out.exr";
+    auto merge = [&](const std::vector<std::string>& parts) {
+        std::vector<std::string> args = {"merge"};
+        args.insert(args.end(), parts.begin(), parts.end());
+        args.insert(args.end(), {"-o", out});
+        return Kiln(args);
+    };
+    // A missing tile, a tile twice, a tile with another seed, a tile of another scene
+    EXPECT_EQ(merge({tiles[0], tiles[1], tiles[2]}), 1);
+    EXPECT_EQ(merge({tiles[0], tiles[1], tiles[2], tiles[3], tiles[0]}), 1);
+    std::vector<std::string> seed4 = RenderTiles(dir, scene, "seed4_", 4);
+    EXPECT_EQ(merge({tiles[0], tiles[1], tiles[2], seed4[3]}), 1);
+    std::string other = WriteScene(dir, false, "other.pbrt");
+    std::vector<std::string> otherTiles = RenderTiles(dir, other, "other");
+    EXPECT_EQ(merge({tiles[0], tiles[1], tiles[2], otherTiles[3]}), 1);
+    EXPECT_FALSE(fs::exists(out));
+    // The library says what is wrong
+    std::vector<RenderPart> parts;
+    for (const std::string& f : {tiles[0], tiles[1], tiles[2]}) {
+        RenderPart p;
+        p.file = f;
+        p.image = Image::Read(f, &p.metadata);
+        parts.push_back(p);
+    }
+    ImageMetadata meta;
+    try {
+        MergeTiles(parts, &meta);
+        ADD_FAILURE() << "merged with a tile missing";
+    } catch (const std::runtime_error& e) {
+        // The missing tile: 7 x 13 pixels at (17, 7)
+        EXPECT_NE(std::string(e.what()).find("91 of the frame's 480 pixels are in no part (all "
+                                             "within [17, 24) x [7, 20))"),
+                  std::string::npos)
+            << e.what();
+    }
+    // Usage errors
+    EXPECT_EQ(Kiln({"merge", tiles[0]}), 2);
+}
+
+TEST(Merge, SamplesAreWeightedBySamplesPerPixel) {
+    Dir dir;
+    std::string scene = WriteScene(dir, false);
+    std::string a = dir / "a.exr", b = dir / "b.exr", out = dir / "ab.exr";
+    ASSERT_EQ(Kiln({scene, "--seed", "1", "--spp", "8", "-o", a}), 0);
+    ASSERT_EQ(Kiln({scene, "--seed", "2", "--spp", "32", "-o", b}), 0);
+    ASSERT_EQ(Kiln({"merge", "--samples", a, b, "-o", out}), 0);
+    ImageMetadata meta;
+    Image m = Image::Read(out, &meta);
+    EXPECT_EQ(meta.samplesPerPixel, 40);
+    Image ia = Image::Read(a), ib = Image::Read(b);
+    for (int y = 0; y < 20; ++y)
+        for (int x = 0; x < 24; ++x)
+            for (int c = 0; c < 3; ++c)
+                ASSERT_FLOAT_EQ(
+                    m.GetChannel({x, y}, c),
+                    float((8.0 * ia.GetChannel({x, y}, c) + 32.0 * ib.GetChannel({x, y}, c)) / 40));
+    // The same seed twice is the same samples
+    EXPECT_EQ(Kiln({"merge", "--samples", a, a, "-o", dir / "aa.exr"}), 1);
+    EXPECT_FALSE(fs::exists(dir / "aa.exr"));
+}
+
+}  // namespace
+}  // namespace kiln
