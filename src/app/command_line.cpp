@@ -12,6 +12,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "app/checkpoint.h"
 #include "app/image_diff.h"
 #include "app/merge.h"
 #include "app/progress.h"
@@ -94,6 +95,10 @@ std::string UsageText() {
            "  --seed S              sampler seed\n"
            "  --crop x0 x1 y0 y1    render only this window (NDC, as Film \"cropwindow\";\n"
            "                        also --cropwindow)\n"
+           "  --checkpoint SECONDS  write the film's state to OUT.checkpoint every SECONDS (0:\n"
+           "                        after every wave of samples); the same command run again\n"
+           "                        resumes from it and ends bit-identical to an uninterrupted\n"
+           "                        render; removed when the render is written\n"
            "  --pixelbounds x0 x1 y0 y1\n"
            "                        render only pixels [x0, x1) x [y0, y1) of the image (as\n"
            "                        pbrt-v4): a tile, bit-identical to the same pixels of a\n"
@@ -169,6 +174,10 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             if (!(c[0] >= 0 && c[0] < c[1] && c[1] <= 1 && c[2] >= 0 && c[2] < c[3] && c[3] <= 1))
                 throw std::invalid_argument(a + " expects 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1");
             o.crop = Bounds2f{Point2f(c[0], c[2]), Point2f(c[1], c[3])};
+        } else if (a == "--checkpoint") {
+            o.checkpointSeconds = ParseFloat(a, value());
+            if (!(*o.checkpointSeconds >= 0) || !std::isfinite(*o.checkpointSeconds))
+                throw std::invalid_argument("--checkpoint expects seconds >= 0");
         } else if (a == "--pixelbounds") {
             if (i + 4 >= args.size()) throw std::invalid_argument(a + " needs x0 x1 y0 y1");
             int c[4];
@@ -347,6 +356,31 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     settings.cancel = &interruptRequested;
     ProgressReporter progress(options.quiet ? nullptr : &std::cerr, isatty(STDERR_FILENO));
     settings.observer = &progress;
+    // --checkpoint: resume from this render's checkpoint, and write one periodically
+    std::string checkpoint;
+    CheckpointIdentity identity{SceneFileHash(options.sceneFile),
+                                frame ? std::to_string(*frame) : "", scene->sampler->Seed(),
+                                scene->sampler->SamplesPerPixel(), scene->film->PixelBounds()};
+    if (options.checkpointSeconds && !outputs.empty()) {
+        checkpoint = CheckpointFile(outputs[0]);
+        std::string why;
+        settings.startSample = ReadCheckpoint(checkpoint, identity, *scene->film, &why);
+        if (!why.empty()) std::cerr << "kiln: warning: ignoring " << why << "\n";
+        if (settings.startSample > 0 && !options.quiet)
+            std::cerr << "kiln: resuming from " << checkpoint << " at " << settings.startSample
+                      << " spp\n";
+        settings.checkpointSeconds = *options.checkpointSeconds;
+        settings.checkpoint = [&](int completed) {
+            try {
+                WriteCheckpoint(checkpoint, identity, completed, *scene->film);
+                if (options.verbose)
+                    std::cerr << "kiln: checkpoint at " << completed << " spp in " << checkpoint
+                              << "\n";
+            } catch (const std::exception& e) {
+                std::cerr << "kiln: warning: " << e.what() << "\n";
+            }
+        };
+    }
     RenderStats stats = Render(*scene, settings);
 
     if (int64_t bad = scene->film->NonFiniteSampleCount(); bad > 0) {
@@ -383,6 +417,8 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
             status = 1;
         }
     }
+    // A finished render needs its checkpoint no more (an interrupted one resumes from it)
+    if (!checkpoint.empty() && status == 0 && !stats.cancelled) RemoveCheckpoint(checkpoint);
     // --polarisation: pictures of the degree and angle of polarisation beside each output
     if (options.polarisation)
         for (const std::string& out : outputs) {

@@ -27,10 +27,11 @@ struct CommandLineOptions {
     std::optional<std::string> emitterSampling;  // power | shape
     // --generic footprints,aovs: run those generic code paths (measuring specialisation)
     bool genericFootprints = false, genericAOVs = false, genericVolumes = false;
-    std::optional<int> wavelengths;     // 1 | 4
-    std::optional<double> memoryLimit;  // --memory-limit, bytes
-    bool stokes = false;                // --stokes: polarised rendering with Stokes layers
-    bool polarisation = false;          // --polarisation: also degree/angle pictures
+    std::optional<int> wavelengths;           // 1 | 4
+    std::optional<double> memoryLimit;        // --memory-limit, bytes
+    std::optional<double> checkpointSeconds;  // --checkpoint SECONDS
+    bool stokes = false;                      // --stokes: polarised rendering with Stokes layers
+    bool polarisation = false;                // --polarisation: also degree/angle pictures
     bool help = false, version = false;
 };
 

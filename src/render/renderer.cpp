@@ -125,11 +125,16 @@ RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
     std::atomic<int64_t> pathsTraced{0};
     const auto start = std::chrono::steady_clock::now();
 
-    // Waves of 1, 2, 4, ... samples per pixel (at most 64), as pbrt-v4
+    // Waves of 1, 2, 4, ... samples per pixel (at most 64), as pbrt-v4; with checkpoints,
+    // small enough that a wave takes at most a quarter of the checkpoint interval
     constexpr int tileSize = 16;
-    int waveStart = 0, waveSize = 1;
+    int waveStart = std::clamp(settings.startSample, 0, spp), waveSize = 1;
+    if (observer && waveStart > 0) observer->Advanced(int64_t(res.x) * res.y * waveStart);
+    stats.completedSamples = waveStart;
+    auto lastCheckpoint = start;
     while (waveStart < spp) {
         int waveEnd = std::min(spp, waveStart + waveSize);
+        const auto waveBegan = std::chrono::steady_clock::now();
         tbb::parallel_for(
             tbb::blocked_range2d<int>(pixelBounds.pMin.y, pixelBounds.pMax.y, tileSize,
                                       pixelBounds.pMin.x, pixelBounds.pMax.x, tileSize),
@@ -150,8 +155,22 @@ RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
             break;
         }
         stats.completedSamples = waveEnd;
+        const auto now = std::chrono::steady_clock::now();
+        if (settings.checkpoint && waveEnd < spp &&
+            std::chrono::duration<double>(now - lastCheckpoint).count() >=
+                settings.checkpointSeconds) {
+            settings.checkpoint(waveEnd);
+            lastCheckpoint = std::chrono::steady_clock::now();
+        }
+        int next = std::min(2 * waveSize, 64);
+        if (settings.checkpoint) {
+            double perSample = std::chrono::duration<double>(now - waveBegan).count() /
+                               double(waveEnd - waveStart);
+            if (perSample > 0)
+                next = std::clamp(int(0.25 * settings.checkpointSeconds / perSample), 1, next);
+        }
         waveStart = waveEnd;
-        waveSize = std::min(2 * waveSize, 64);
+        waveSize = next;
     }
     if (observer) observer->Finished();
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

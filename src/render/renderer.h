@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "render/scene.h"
@@ -29,6 +30,15 @@ struct RenderSettings {
     int threads = 0;                            // 0: all hardware threads
     const std::atomic<bool>* cancel = nullptr;  // set (e.g. by Ctrl-C) to stop after the tile
     RenderObserver* observer = nullptr;         // progress reports; nullptr = none
+    // Resuming from a checkpoint: the film already holds samples [0, startSample) of every
+    // pixel. Each pixel's samples are added in index order whatever the waves and threads, so
+    // a resumed render ends bit-identical to an uninterrupted one.
+    int startSample = 0;
+    // Called between waves (the film then holds samples [0, completed) of every pixel) once
+    // checkpointSeconds have passed since the start or the last call; waves are kept short
+    // enough (measured) that one takes at most a quarter of that.
+    std::function<void(int completed)> checkpoint;
+    double checkpointSeconds = 0;
 };
 
 struct RenderStats {

@@ -1,6 +1,8 @@
 // SIGTERM (what Slurm and other schedulers send) and SIGINT stop the kiln command cleanly: the
 // image rendered so far is written atomically, marked partial with the samples it holds, the
-// exit status is 128 + the signal, and no temporary file is left behind. Runs the kiln binary.
+// exit status is 128 + the signal, and no temporary file is left behind. A render with
+// --checkpoint killed outright (SIGKILL, as a preempted job) and started again with the same
+// command resumes and ends bit-identical to an uninterrupted render. Runs the kiln binary.
 #include <gtest/gtest.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -137,6 +139,60 @@ INSTANTIATE_TEST_SUITE_P(TermAndInt, Signals, ::testing::Values(SIGTERM, SIGINT)
                          [](const auto& info) {
                              return std::string(info.param == SIGTERM ? "SIGTERM" : "SIGINT");
                          });
+
+// Pixel values (all channels) of an image file.
+std::vector<float> Pixels(const std::string& file) {
+    Image im = Image::Read(file);
+    std::vector<float> v;
+    for (int y = 0; y < im.Resolution().y; ++y)
+        for (int x = 0; x < im.Resolution().x; ++x)
+            for (int c = 0; c < im.NChannels(); ++c) v.push_back(im.GetChannel({x, y}, c));
+    return v;
+}
+
+TEST(Checkpoints, AKilledRenderResumesBitIdentical) {
+    SceneDir dir;
+    std::string scene = (dir.path / "scene.pbrt").string();
+    std::string ref = (dir.path / "ref.exr").string(), out = (dir.path / "out.exr").string();
+    const std::vector<std::string> common = {scene, "--spp", "96", "--seed", "7", "--threads", "2"};
+    auto run = [&](std::vector<std::string> extra) {
+        std::vector<std::string> args = common;
+        args.insert(args.end(), extra.begin(), extra.end());
+        Child c = Spawn(args);
+        std::string seen;
+        ReadUntil(c.stderrFd, "\x04", &seen);
+        EXPECT_EQ(ExitStatus(c), 0) << seen;
+        return seen;
+    };
+    run({"-o", ref, "--quiet"});
+    // Killed after some checkpoints (a different number each time), then resumed
+    for (int kills : {1, 5}) {
+        Child c = Spawn([&] {
+            std::vector<std::string> args = common;
+            args.insert(args.end(), {"-o", out, "--checkpoint", "0", "--verbose"});
+            return args;
+        }());
+        std::string seen;
+        for (int k = 0; k < kills; ++k) ASSERT_TRUE(ReadUntil(c.stderrFd, "checkpoint at", &seen));
+        seen.clear();
+        kill(c.pid, SIGKILL);
+        int status = 0;
+        waitpid(c.pid, &status, 0);
+        close(c.stderrFd);
+        ASSERT_TRUE(fs::exists(out + ".checkpoint"));
+        std::string resumed = run({"-o", out, "--checkpoint", "0"});
+        EXPECT_NE(resumed.find("resuming from"), std::string::npos) << resumed;
+        EXPECT_EQ(Pixels(out), Pixels(ref)) << kills;
+        // Done: no checkpoint is left
+        EXPECT_EQ(dir.Files(), (std::vector<std::string>{"out.exr", "ref.exr", "scene.pbrt"}));
+    }
+    // A damaged checkpoint, or one of another render, is ignored (with a warning): the render
+    // starts over and still ends the same
+    std::ofstream(out + ".checkpoint") << "kiln checkpoint 1\nscene 0\n\ngarbage";
+    std::string again = run({"-o", out, "--checkpoint", "0"});
+    EXPECT_NE(again.find("ignoring"), std::string::npos) << again;
+    EXPECT_EQ(Pixels(out), Pixels(ref));
+}
 
 }  // namespace
 }  // namespace kiln

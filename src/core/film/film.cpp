@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "core/base/system_memory.h"
@@ -300,6 +301,57 @@ void RGBFilm::WriteImage(const std::string& filename, ImageMetadata metadata,
         settings.view = viewOverride.empty() ? opts.view : viewOverride;
         ToDisplayImage(image, *colorSpace, settings).Write(filename, metadata);
     }
+}
+
+// Checkpoint state
+namespace {
+constexpr char kStateMagic[8] = {'k', 'f', 'i', 'l', 'm', 0, 0, 1};
+
+template <typename T>
+void AppendRaw(std::string& out, const T* data, size_t count) {
+    out.append(reinterpret_cast<const char*>(data), count * sizeof(T));
+}
+}  // namespace
+
+std::string RGBFilm::SaveState() const {
+    std::string out(kStateMagic, sizeof(kStateMagic));
+    const int64_t header[7] = {opts.pixelBounds.pMin.x,     opts.pixelBounds.pMin.y,
+                               opts.pixelBounds.pMax.x,     opts.pixelBounds.pMax.y,
+                               int64_t(pixels.size()),      int64_t(aovs.size()),
+                               int64_t(stokesPixels.size())};
+    AppendRaw(out, header, 7);
+    AppendRaw(out, pixels.data(), pixels.size());
+    AppendRaw(out, aovs.data(), aovs.size());
+    AppendRaw(out, stokesPixels.data(), stokesPixels.size());
+    const int64_t counters[2] = {nonFiniteCount.load(), firstNonFinite.load()};
+    AppendRaw(out, counters, 2);
+    return out;
+}
+
+bool RGBFilm::LoadState(std::string_view state) {
+    const int64_t expect[7] = {opts.pixelBounds.pMin.x,     opts.pixelBounds.pMin.y,
+                               opts.pixelBounds.pMax.x,     opts.pixelBounds.pMax.y,
+                               int64_t(pixels.size()),      int64_t(aovs.size()),
+                               int64_t(stokesPixels.size())};
+    size_t size = sizeof(kStateMagic) + sizeof(expect) + pixels.size() * sizeof(Pixel) +
+                  aovs.size() * sizeof(AOVPixel) + stokesPixels.size() * sizeof(StokesPixel) +
+                  2 * sizeof(int64_t);
+    if (state.size() != size || std::memcmp(state.data(), kStateMagic, sizeof(kStateMagic)) != 0 ||
+        std::memcmp(state.data() + sizeof(kStateMagic), expect, sizeof(expect)) != 0)
+        return false;
+    const char* p = state.data() + sizeof(kStateMagic) + sizeof(expect);
+    auto take = [&](void* to, size_t bytes) {
+        std::memcpy(to, p, bytes);
+        p += bytes;
+    };
+    take(pixels.data(), pixels.size() * sizeof(Pixel));
+    take(aovs.data(), aovs.size() * sizeof(AOVPixel));
+    take(stokesPixels.data(), stokesPixels.size() * sizeof(StokesPixel));
+    int64_t counters[2];
+    take(counters, sizeof(counters));
+    nonFiniteCount = counters[0];
+    firstNonFinite = counters[1];
+    return true;
 }
 
 void RGBFilm::Clear() {

@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/base/object_arena.h"
@@ -172,6 +173,12 @@ class RGBFilm {
 
     // Resets all pixels to black and the non-finite counters to zero.
     void Clear();
+
+    // The accumulated state (pixel sums, AOV and Stokes sums, non-finite counters) as bytes,
+    // for checkpoints; LoadState takes what SaveState of a film with the same pixel bounds and
+    // layers wrote, and returns false (the film unchanged) for anything else.
+    std::string SaveState() const;
+    bool LoadState(std::string_view state);
 
   private:
     // RGBFilm Private Members

@@ -1,0 +1,39 @@
+// Checkpoints (kiln --checkpoint SECONDS): the film's state after a whole number of samples per
+// pixel, with what identifies the render it belongs to (scene file hash, frame, seed, spp,
+// pixel bounds), so that a render killed at any moment and started again with the same command
+// resumes and ends bit-identical to an uninterrupted one (render/renderer.h, startSample).
+// Written atomically: to FILE.writing, renamed to FILE (a kill leaves the previous checkpoint
+// whole; a stale FILE.writing is overwritten by the next write and removed at the end).
+#pragma once
+
+#include <string>
+
+#include "core/base/vecmath.h"
+
+namespace kiln {
+
+class RGBFilm;
+
+struct CheckpointIdentity {
+    std::string scene;  // SceneFileHash of the scene file
+    std::string frame;  // "" for a still
+    int seed = 0, spp = 0;
+    Bounds2i pixelBounds;
+};
+
+// The checkpoint file of an output image: OUTPUT.checkpoint.
+std::string CheckpointFile(const std::string& output);
+
+// Writes the film's state after `completed` samples per pixel; throws std::runtime_error.
+void WriteCheckpoint(const std::string& file, const CheckpointIdentity& id, int completed,
+                     const RGBFilm& film);
+
+// Restores a checkpoint of this render into film and returns its samples per pixel; 0 when
+// there is none, or (with the reason in *why) when the file is of another render or damaged.
+int ReadCheckpoint(const std::string& file, const CheckpointIdentity& id, RGBFilm& film,
+                   std::string* why);
+
+// Removes the checkpoint and any temporary file of it (after the output is written).
+void RemoveCheckpoint(const std::string& file);
+
+}  // namespace kiln
