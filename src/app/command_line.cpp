@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "app/checkpoint.h"
+#include "app/farm.h"
 #include "app/image_diff.h"
 #include "app/merge.h"
 #include "app/progress.h"
@@ -138,7 +139,9 @@ std::string UsageText() {
            "  --help, --version\n"
            "   or: kiln diff A B [--metric M] [--threshold X] [--out DIFF] (kiln diff --help)\n"
            "   or: kiln merge PART.exr... -o FULL.exr (tiles of one frame)\n"
-           "   or: kiln merge --samples RENDER.exr... -o OUT.exr (renders with other seeds)\n";
+           "   or: kiln merge --samples RENDER.exr... -o OUT.exr (renders with other seeds)\n"
+           "   or: kiln farm SCENE [--tiles N] [--frames A-B] [--spp N] [-o OUT] [--dry-run]\n"
+           "                 [--status] [-- SBATCH OPTIONS] (a Slurm job array, then merges)\n";
 }
 
 CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
@@ -447,6 +450,8 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
 int RunKiln(int argc, char** argv) {
     if (argc >= 2 && std::string(argv[1]) == "diff")
         return RunImageDiff(std::vector<std::string>(argv + 2, argv + argc));
+    if (argc >= 2 && std::string(argv[1]) == "farm")
+        return RunFarm(std::vector<std::string>(argv + 2, argv + argc));
     if (argc >= 2 && std::string(argv[1]) == "merge")
         return RunMerge(std::vector<std::string>(argv + 2, argv + argc));
     CommandLineOptions options;

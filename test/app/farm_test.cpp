@@ -1,0 +1,116 @@
+// kiln farm (app/farm.h): tiles cover the film exactly; the submission calls sbatch with the
+// array, the user's options and an afterok dependency (checked with a stand-in sbatch that
+// records its arguments); and the batch scripts it writes, run as Slurm would run them (each
+// array index, then the merge), give frames bit-identical to single-process renders. (A real
+// Slurm cluster is not started here.)
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/farm.h"
+#include "core/image/image.h"
+
+namespace kiln {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(Farm, TilesCoverTheFilmOnce) {
+    for (Point2i res : {Point2i(24, 20), Point2i(1920, 1080), Point2i(3, 700), Point2i(1, 1)})
+        for (int n : {1, 2, 3, 4, 6, 7, 12, 64}) {
+            std::vector<Bounds2i> tiles = TileGrid(res, n);
+            std::vector<int> count(size_t(res.x) * res.y, 0);
+            for (const Bounds2i& b : tiles)
+                for (int y = b.pMin.y; y < b.pMax.y; ++y)
+                    for (int x = b.pMin.x; x < b.pMax.x; ++x) ++count[size_t(y) * res.x + x];
+            for (int c : count) ASSERT_EQ(c, 1) << res.x << "x" << res.y << " in " << n;
+            if (res.x >= n && res.y >= n) EXPECT_EQ(int(tiles.size()), n);
+        }
+    // About square: 16:9 in 4 tiles is 2 x 2, in 2 tiles two halves side by side
+    std::vector<Bounds2i> two = TileGrid({1920, 1080}, 2);
+    EXPECT_EQ(two[0].pMax, Point2i(960, 1080));
+}
+
+std::string ReadAll(const std::string& file) {
+    std::ifstream in(file);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::vector<float> Pixels(const std::string& file) {
+    Image im = Image::Read(file);
+    std::vector<float> v;
+    for (int y = 0; y < im.Resolution().y; ++y)
+        for (int x = 0; x < im.Resolution().x; ++x)
+            for (int c = 0; c < im.NChannels(); ++c) v.push_back(im.GetChannel({x, y}, c));
+    return v;
+}
+
+TEST(Farm, ScriptsRunAsSlurmWouldGiveTheSingleProcessRender) {
+    fs::path dir = fs::path(::testing::TempDir()) / ("kiln_farm_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir / "bin");
+    const std::string kiln = std::string(KILN_BINARY_DIR) + "/kiln";
+    const std::string scene = (dir / "scene.pbrt").string();
+    std::ofstream(scene) << "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 20\n"
+                            "Sampler \"zsobol\" \"integer pixelsamples\" 8\n"
+                            "LookAt 0 1 4  0 0.4 0  0 1 0\nCamera \"perspective\"\nWorldBegin\n"
+                            "LightSource \"infinite\" \"rgb L\" [0.4 0.4 0.5]\n"
+                            "Material \"coateddiffuse\" \"rgb reflectance\" [0.7 0.3 0.2]\n"
+                            "Shape \"sphere\" \"float radius\" 0.8\n";
+    // A stand-in sbatch: records its arguments, answers job ids 100, 101, ...
+    const std::string log = (dir / "sbatch.log").string();
+    {
+        std::ofstream fake(dir / "bin" / "sbatch");
+        fake << "#!/bin/bash\necho \"$@\" >> '" << log << "'\n"
+             << "n=$(wc -l < '" << log << "')\necho $((99 + n))\n";
+    }
+    fs::permissions(dir / "bin" / "sbatch", fs::perms::owner_all);
+    const std::string env = "PATH='" + (dir / "bin").string() + "':\"$PATH\" ";
+    const std::string out = (dir / "out#.exr").string();
+    const std::string farm =
+        env + "'" + kiln + "' farm '" + scene + "' --tiles 4 --frames 0-1 --spp 8 -o '" + out + "'";
+    const std::string stdoutFile = (dir / "stdout.txt").string();
+    ASSERT_EQ(std::system((farm + " -- --partition=test > '" + stdoutFile + "'").c_str()), 0);
+    EXPECT_NE(ReadAll(stdoutFile).find("render job 100 (8 tasks), merge job 101"),
+              std::string::npos)
+        << ReadAll(stdoutFile);
+    std::string calls = ReadAll(log);
+    EXPECT_NE(calls.find("--parsable --array=0-7 --partition=test"), std::string::npos) << calls;
+    EXPECT_NE(calls.find("--dependency=afterok:100 --partition=test"), std::string::npos) << calls;
+    // Nothing rendered yet: --status lists the 8 parts
+    EXPECT_NE(std::system((farm + " --status > '" + stdoutFile + "'").c_str()), 0);
+    EXPECT_NE(ReadAll(stdoutFile).find("8 parts missing"), std::string::npos);
+    // What Slurm would run: every array index, then the merge
+    const std::string farmDir = (dir / "out.exr.farm").string();
+    for (int i = 0; i < 8; ++i)
+        ASSERT_EQ(std::system(("SLURM_ARRAY_TASK_ID=" + std::to_string(i) + " bash '" + farmDir +
+                               "/render.sbatch'")
+                                  .c_str()),
+                  0)
+            << i;
+    ASSERT_EQ(std::system(("bash '" + farmDir + "/merge.sbatch'").c_str()), 0);
+    EXPECT_EQ(std::system((farm + " --status > '" + stdoutFile + "'").c_str()), 0);
+    // Each frame as one process renders it
+    for (int f = 0; f < 2; ++f) {
+        std::string single = (dir / ("single" + std::to_string(f) + ".exr")).string();
+        ASSERT_EQ(std::system(("'" + kiln + "' '" + scene + "' --frames " + std::to_string(f) +
+                               "-" + std::to_string(f) + " --spp 8 --quiet -o '" + single + "'")
+                                  .c_str()),
+                  0);
+        EXPECT_EQ(Pixels((dir / ("out" + std::to_string(f) + ".exr")).string()), Pixels(single))
+            << "frame " << f;
+    }
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace kiln
