@@ -76,30 +76,25 @@ void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const SceneOverri
     Float shutterClose = desc.camera.parameters.GetOneFloat("shutterclose", 1);
     if (shutterClose < shutterOpen)
         throw SceneError(desc.camera.loc, "shutterclose is before shutteropen", "shutterclose");
-    if (overrides.cropWindow) {
-        ParsedParameter crop;
-        crop.type = "float";
-        crop.name = "cropwindow";
-        const Bounds2f& c = *overrides.cropWindow;
-        crop.floats = {c.pMin.x, c.pMax.x, c.pMin.y, c.pMax.y};
-        desc.film.parameters.Set(crop);
-    }
-    if (overrides.pixelBounds) {
-        ParsedParameter bounds;
-        bounds.type = "integer";
-        bounds.name = "pixelbounds";
-        const Bounds2i& b = *overrides.pixelBounds;
-        bounds.ints = {b.pMin.x, b.pMax.x, b.pMin.y, b.pMax.y};
+    // Command-line overrides become film parameters
+    auto set = [&](const char* type, const char* name, auto fill) {
+        ParsedParameter p;
+        p.type = type;
+        p.name = name;
+        fill(p);
+        desc.film.parameters.Set(p);
+    };
+    if (const std::optional<Bounds2f>& c = overrides.cropWindow)
+        set("float", "cropwindow", [&](ParsedParameter& p) {
+            p.floats = {c->pMin.x, c->pMax.x, c->pMin.y, c->pMax.y};
+        });
+    if (const std::optional<Bounds2i>& b = overrides.pixelBounds) {
         desc.film.parameters.Erase("cropwindow");
-        desc.film.parameters.Set(bounds);
+        set("integer", "pixelbounds", [&](ParsedParameter& p) {
+            p.ints = {b->pMin.x, b->pMax.x, b->pMin.y, b->pMax.y};
+        });
     }
-    if (overrides.stokes) {
-        ParsedParameter stokes;
-        stokes.type = "bool";
-        stokes.name = "stokes";
-        stokes.bools = {true};
-        desc.film.parameters.Set(stokes);
-    }
+    if (overrides.stokes) set("bool", "stokes", [](ParsedParameter& p) { p.bools = {true}; });
     scene.autoExposure = desc.film.parameters.GetOneBool("autoexposure", false);
     scene.film = RGBFilm::Create(desc.film.name, desc.film.parameters, shutterClose - shutterOpen,
                                  *scene.filter, desc.filmColorSpace, desc.film.loc, arena, diag);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "app/farm.h"
+#include "app_test_util.h"
 #include "core/image/image.h"
 
 namespace kiln {
@@ -43,15 +44,6 @@ std::string ReadAll(const std::string& file) {
     std::stringstream s;
     s << in.rdbuf();
     return s.str();
-}
-
-std::vector<float> Pixels(const std::string& file) {
-    Image im = Image::Read(file);
-    std::vector<float> v;
-    for (int y = 0; y < im.Resolution().y; ++y)
-        for (int x = 0; x < im.Resolution().x; ++x)
-            for (int c = 0; c < im.NChannels(); ++c) v.push_back(im.GetChannel({x, y}, c));
-    return v;
 }
 
 TEST(Farm, ScriptsRunAsSlurmWouldGiveTheSingleProcessRender) {
@@ -106,7 +98,8 @@ TEST(Farm, ScriptsRunAsSlurmWouldGiveTheSingleProcessRender) {
                                "-" + std::to_string(f) + " --spp 8 --quiet -o '" + single + "'")
                                   .c_str()),
                   0);
-        EXPECT_EQ(Pixels((dir / ("out" + std::to_string(f) + ".exr")).string()), Pixels(single))
+        EXPECT_EQ(testing::Pixels((dir / ("out" + std::to_string(f) + ".exr")).string()),
+                  testing::Pixels(single))
             << "frame " << f;
     }
     fs::remove_all(dir);

@@ -13,6 +13,7 @@
 
 #include "app/command_line.h"
 #include "app/merge.h"
+#include "app_test_util.h"
 
 namespace kiln {
 namespace {
@@ -59,16 +60,6 @@ int Kiln(std::vector<std::string> args) {
     return RunKiln(int(argv.size()), argv.data());
 }
 
-// Pixel values (all channels) of an image file, and its format.
-std::pair<std::vector<float>, PixelFormat> Pixels(const std::string& file) {
-    Image im = Image::Read(file);
-    std::vector<float> v;
-    for (int y = 0; y < im.Resolution().y; ++y)
-        for (int x = 0; x < im.Resolution().x; ++x)
-            for (int c = 0; c < im.NChannels(); ++c) v.push_back(im.GetChannel({x, y}, c));
-    return {v, im.Format()};
-}
-
 // Four tiles of 24 x 20 (uneven), each rendered with a different thread count.
 std::vector<std::string> RenderTiles(const Dir& dir, const std::string& scene,
                                      const std::string& prefix, int seed = 3) {
@@ -113,9 +104,8 @@ TEST(Merge, TilesAreBitIdenticalToTheFullRender) {
         args.insert(args.end(), tiles.begin(), tiles.end());
         args.insert(args.end(), {"-o", merged});
         ASSERT_EQ(Kiln(args), 0);
-        auto [a, fa] = Pixels(merged);
-        auto [b, fb] = Pixels(full);
-        EXPECT_EQ(fa, fb);
+        std::vector<float> a = testing::Pixels(merged), b = testing::Pixels(full);
+        EXPECT_EQ(Image::Read(merged).Format(), Image::Read(full).Format());
         ASSERT_EQ(a.size(), b.size());
         for (size_t i = 0; i < a.size(); ++i) ASSERT_EQ(a[i], b[i]) << i;
         EXPECT_GT(b[100], 0);

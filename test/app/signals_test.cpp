@@ -13,6 +13,7 @@
 #include <fstream>
 #include <random>
 
+#include "app_test_util.h"
 #include "core/image/image.h"
 
 extern char** environ;
@@ -140,16 +141,6 @@ INSTANTIATE_TEST_SUITE_P(TermAndInt, Signals, ::testing::Values(SIGTERM, SIGINT)
                              return std::string(info.param == SIGTERM ? "SIGTERM" : "SIGINT");
                          });
 
-// Pixel values (all channels) of an image file.
-std::vector<float> Pixels(const std::string& file) {
-    Image im = Image::Read(file);
-    std::vector<float> v;
-    for (int y = 0; y < im.Resolution().y; ++y)
-        for (int x = 0; x < im.Resolution().x; ++x)
-            for (int c = 0; c < im.NChannels(); ++c) v.push_back(im.GetChannel({x, y}, c));
-    return v;
-}
-
 TEST(Checkpoints, AKilledRenderResumesBitIdentical) {
     SceneDir dir;
     std::string scene = (dir.path / "scene.pbrt").string();
@@ -182,7 +173,7 @@ TEST(Checkpoints, AKilledRenderResumesBitIdentical) {
         ASSERT_TRUE(fs::exists(out + ".checkpoint"));
         std::string resumed = run({"-o", out, "--checkpoint", "0"});
         EXPECT_NE(resumed.find("resuming from"), std::string::npos) << resumed;
-        EXPECT_EQ(Pixels(out), Pixels(ref)) << kills;
+        EXPECT_EQ(testing::Pixels(out), testing::Pixels(ref)) << kills;
         // Done: no checkpoint is left
         EXPECT_EQ(dir.Files(), (std::vector<std::string>{"out.exr", "ref.exr", "scene.pbrt"}));
     }
@@ -191,7 +182,7 @@ TEST(Checkpoints, AKilledRenderResumesBitIdentical) {
     std::ofstream(out + ".checkpoint") << "kiln checkpoint 1\nscene 0\n\ngarbage";
     std::string again = run({"-o", out, "--checkpoint", "0"});
     EXPECT_NE(again.find("ignoring"), std::string::npos) << again;
-    EXPECT_EQ(Pixels(out), Pixels(ref));
+    EXPECT_EQ(testing::Pixels(out), testing::Pixels(ref));
 }
 
 }  // namespace

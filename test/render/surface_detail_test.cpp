@@ -34,7 +34,8 @@ std::string LitSquare(const std::string& material, const std::string& preamble =
     return s.str();
 }
 
-double MeanY(const std::string& scene) {
+// Mean pixel luminance and its standard error over pixels.
+std::pair<double, double> MeanAndError(const std::string& scene) {
     testing::RenderedScene r = testing::RenderText(scene);
     for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
     EXPECT_EQ(r.scene->film->NonFiniteSampleCount(), 0);
@@ -42,8 +43,10 @@ double MeanY(const std::string& scene) {
     Bounds2i b = r.scene->film->PixelBounds();
     for (int y = b.pMin.y; y < b.pMax.y; ++y)
         for (int x = b.pMin.x; x < b.pMax.x; ++x) s.Add(testing::PixelY(*r.scene, {x, y}));
-    return s.Mean();
+    return {s.Mean(), s.StandardError()};
 }
+
+double MeanY(const std::string& scene) { return MeanAndError(scene).first; }
 
 TEST(SurfaceDetailRender, NormalMapDimsByTheCosineOfItsTilt) {
     const double flat = MeanY(LitSquare(""));
@@ -95,18 +98,6 @@ std::string ShadowedFloor(const std::string& occluder, int spp) {
          "\"point3 P\" [-1 -1 0 2 -1 0 2 2 0 -1 2 0]\n"
       << occluder << "\n";
     return s.str();
-}
-
-// Mean pixel luminance and its standard error over pixels.
-std::pair<double, double> MeanAndError(const std::string& scene) {
-    testing::RenderedScene r = testing::RenderText(scene);
-    for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
-    EXPECT_EQ(r.scene->film->NonFiniteSampleCount(), 0);
-    RunningStats s;
-    Bounds2i b = r.scene->film->PixelBounds();
-    for (int y = b.pMin.y; y < b.pMax.y; ++y)
-        for (int x = b.pMin.x; x < b.pMax.x; ++x) s.Add(testing::PixelY(*r.scene, {x, y}));
-    return {s.Mean(), s.StandardError()};
 }
 
 TEST(AlphaRender, ShadowsPassOneMinusAlphaPerSurface) {

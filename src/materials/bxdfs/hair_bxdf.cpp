@@ -152,34 +152,27 @@ SampledSpectrum HairBxDF::f(Vector3f wo, Vector3f wi, TransportMode) const {
     Float sinThetaI = wi.x, cosThetaI = SafeSqrt(1 - sinThetaI * sinThetaI);
     Float phiI = std::atan2(wi.z, wi.y);
     if (cosThetaO == 0) return SampledSpectrum(0.f);
-    Float gammaT = GammaT(sinThetaO, cosThetaO);
-    std::array<SampledSpectrum, pMax + 1> ap = Attenuation(cosThetaO, sinThetaO);
-    Float phi = phiI - phiO;
-    SampledSpectrum fsum(0.f);
-    for (int p = 0; p < pMax; ++p) {
-        Float sinThetaOp, cosThetaOp;
-        TiltedThetaO(p, sinThetaO, cosThetaO, &sinThetaOp, &cosThetaOp);
-        fsum += Mp(cosThetaI, cosThetaOp, sinThetaI, sinThetaOp, v[p]) * ap[p] *
-                Np(phi, p, s, gammaO, gammaT);
-    }
-    fsum += Mp(cosThetaI, cosThetaO, sinThetaI, sinThetaO, v[pMax]) * ap[pMax] / (2 * Pi);
+    SampledSpectrum fsum = SumLobes(sinThetaO, cosThetaO, sinThetaI, cosThetaI, phiI - phiO,
+                                    Attenuation(cosThetaO, sinThetaO));
     // The model's lobes are per unit projected solid angle
     if (std::abs(wi.z) > 0) fsum /= std::abs(wi.z);
     return fsum;
 }
 
-Float HairBxDF::PDF(Float sinThetaO, Float cosThetaO, Float sinThetaI, Float cosThetaI, Float dphi,
-                    const std::array<Float, pMax + 1>& apPDF) const {
+template <typename W>
+W HairBxDF::SumLobes(Float sinThetaO, Float cosThetaO, Float sinThetaI, Float cosThetaI, Float dphi,
+                     const std::array<W, pMax + 1>& weights) const {
     Float gammaT = GammaT(sinThetaO, cosThetaO);
-    Float pdf = 0;
+    W sum(0.f);
     for (int p = 0; p < pMax; ++p) {
         Float sinThetaOp, cosThetaOp;
         TiltedThetaO(p, sinThetaO, cosThetaO, &sinThetaOp, &cosThetaOp);
-        pdf += Mp(cosThetaI, cosThetaOp, sinThetaI, sinThetaOp, v[p]) * apPDF[p] *
+        sum += Mp(cosThetaI, cosThetaOp, sinThetaI, sinThetaOp, v[p]) * weights[p] *
                Np(dphi, p, s, gammaO, gammaT);
     }
-    pdf += Mp(cosThetaI, cosThetaO, sinThetaI, sinThetaO, v[pMax]) * apPDF[pMax] / (2 * Pi);
-    return pdf;
+    // The remaining orders: untilted, uniform in azimuth
+    sum += Mp(cosThetaI, cosThetaO, sinThetaI, sinThetaO, v[pMax]) * weights[pMax] / (2 * Pi);
+    return sum;
 }
 
 Float HairBxDF::PDF(Vector3f wo, Vector3f wi, TransportMode, BxDFReflTransFlags) const {
@@ -187,7 +180,8 @@ Float HairBxDF::PDF(Vector3f wo, Vector3f wi, TransportMode, BxDFReflTransFlags)
     if (cosThetaO == 0) return 0;
     Float sinThetaI = wi.x, cosThetaI = SafeSqrt(1 - sinThetaI * sinThetaI);
     Float dphi = std::atan2(wi.z, wi.y) - std::atan2(wo.z, wo.y);
-    return PDF(sinThetaO, cosThetaO, sinThetaI, cosThetaI, dphi, LobePDF(cosThetaO, sinThetaO));
+    return SumLobes(sinThetaO, cosThetaO, sinThetaI, cosThetaI, dphi,
+                    LobePDF(cosThetaO, sinThetaO));
 }
 
 std::optional<BSDFSample> HairBxDF::Sample_f(Vector3f wo, Float uc, Point2f u, TransportMode mode,
@@ -219,7 +213,7 @@ std::optional<BSDFSample> HairBxDF::Sample_f(Vector3f wo, Float uc, Point2f u, T
         p < pMax ? PhiOf(p, gammaO, gammaT) + SampleTrimmedLogistic(uc, s, -Pi, Pi) : 2 * Pi * uc;
     Float phiI = phiO + dphi;
     Vector3f wi(sinThetaI, cosThetaI * std::cos(phiI), cosThetaI * std::sin(phiI));
-    Float pdf = PDF(sinThetaO, cosThetaO, sinThetaI, cosThetaI, dphi, apPDF);
+    Float pdf = SumLobes(sinThetaO, cosThetaO, sinThetaI, cosThetaI, dphi, apPDF);
     if (!(pdf > 0) || !std::isfinite(pdf)) return {};
     return BSDFSample(f(wo, wi, mode), wi, pdf, Flags());
 }

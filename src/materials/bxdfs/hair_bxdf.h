@@ -54,9 +54,11 @@ class HairBxDF {
     std::array<Float, pMax + 1> LobePDF(Float cosThetaO, Float sinThetaO) const;
     // The refracted ray's gamma_t.
     Float GammaT(Float sinThetaO, Float cosThetaO) const;
-    // Density of wi given wo's terms (the shared part of PDF and Sample_f).
-    Float PDF(Float sinThetaO, Float cosThetaO, Float sinThetaI, Float cosThetaI, Float dphi,
-              const std::array<Float, pMax + 1>& apPDF) const;
+    // sum over lobes p of Mp Np weights[p]: f |cos theta_i| with the attenuations as weights,
+    // the density with the lobe probabilities (dphi = phi_i - phi_o).
+    template <typename W>
+    W SumLobes(Float sinThetaO, Float cosThetaO, Float sinThetaI, Float cosThetaI, Float dphi,
+               const std::array<W, pMax + 1>& weights) const;
 
     Float h, gammaO, eta;
     SampledSpectrum sigma_a;

@@ -1,0 +1,21 @@
+// What the kiln command's tests share.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/image/image.h"
+
+namespace kiln::testing {
+
+// Every pixel value (all channels, row by row) of an image file, for bit-exact comparisons.
+inline std::vector<float> Pixels(const std::string& file) {
+    Image im = Image::Read(file);
+    std::vector<float> v;
+    for (int y = 0; y < im.Resolution().y; ++y)
+        for (int x = 0; x < im.Resolution().x; ++x)
+            for (int c = 0; c < im.NChannels(); ++c) v.push_back(im.GetChannel({x, y}, c));
+    return v;
+}
+
+}  // namespace kiln::testing
