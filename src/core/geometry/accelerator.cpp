@@ -110,7 +110,8 @@ void UserOccluded(const RTCOccludedFunctionNArguments* args) {
     if (hit) r->tfar = -std::numeric_limits<float>::infinity();
 }
 
-// The same for curves: the hit's interaction gives the texture context.
+// Embree's filter for curves with alpha (as TriangleAlphaFilter below for triangles): the
+// hit's interaction gives the texture context.
 void CurveAlphaFilter(const RTCFilterFunctionNArguments* args) {
     if (args->N != 1 || !args->valid[0]) return;
     auto* rec = static_cast<const GeomRecord*>(args->geometryUserPtr);

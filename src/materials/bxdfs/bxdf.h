@@ -30,9 +30,9 @@ namespace kiln {
 
 class BxDF {
   public:
-    using Variant = std::variant<DiffuseBxDF, ConductorBxDF, DielectricBxDF, ThinDielectricBxDF,
-                                 CoatedDiffuseBxDF, CoatedConductorBxDF, PolarizingFilterBxDF,
-                                 HairBxDF>;
+    using Variant =
+        std::variant<DiffuseBxDF, ConductorBxDF, DielectricBxDF, ThinDielectricBxDF,
+                     CoatedDiffuseBxDF, CoatedConductorBxDF, PolarizingFilterBxDF, HairBxDF>;
 
     BxDF() = default;  // a black DiffuseBxDF
     template <typename T>
