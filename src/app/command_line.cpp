@@ -359,7 +359,8 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     settings.cancel = &interruptRequested;
     ProgressReporter progress(options.quiet ? nullptr : &std::cerr, isatty(STDERR_FILENO));
     settings.observer = &progress;
-    // --checkpoint: resume from this render's checkpoint, and write one periodically
+    // What identifies this render (its output's metadata, its checkpoints); --checkpoint:
+    // resume from this render's checkpoint, and write one periodically
     std::string checkpoint;
     CheckpointIdentity identity{SceneFileHash(options.sceneFile),
                                 frame ? std::to_string(*frame) : "", scene->sampler->Seed(),
@@ -409,7 +410,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     if (stats.cancelled) metadata.strings["kiln:partial"] = "true";
     // What kiln merge checks parts against: the same scene (its file's bytes), frame and seed
     metadata.strings["kiln:seed"] = std::to_string(scene->sampler->Seed());
-    metadata.strings["kiln:scene"] = SceneFileHash(options.sceneFile);
+    metadata.strings["kiln:scene"] = identity.scene;
     if (frame) metadata.strings["kiln:frame"] = std::to_string(*frame);
     int status = 0;
     for (const std::string& out : outputs) {

@@ -309,7 +309,7 @@ constexpr char kStateMagic[8] = {'k', 'f', 'i', 'l', 'm', 0, 0, 1};
 
 template <typename T>
 void AppendRaw(std::string& out, const T* data, size_t count) {
-    out.append(reinterpret_cast<const char*>(data), count * sizeof(T));
+    if (count > 0) out.append(reinterpret_cast<const char*>(data), count * sizeof(T));
 }
 }  // namespace
 
@@ -341,6 +341,7 @@ bool RGBFilm::LoadState(std::string_view state) {
         return false;
     const char* p = state.data() + sizeof(kStateMagic) + sizeof(expect);
     auto take = [&](void* to, size_t bytes) {
+        if (bytes == 0) return;  // an empty layer's data() may be null
         std::memcpy(to, p, bytes);
         p += bytes;
     };
