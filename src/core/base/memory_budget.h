@@ -21,9 +21,10 @@ class MemoryLimitError : public std::runtime_error {
 class MemoryBudget {
   public:
     // Estimates per primitive, for charging before the primitives exist: bytes per triangle
-    // (kiln's Triangle and Shape, indices, Embree's BVH: 199 B/triangle measured on a 5-million-
-    // triangle mesh with the standard BVH, bench/README.md), per mesh vertex (position, normal,
-    // uv), per bilinear patch and per curve segment (control points and Embree's BVH).
+    // (kiln's Triangle and Shape, indices, Embree's BVH: a 5-million-triangle PLY peaked at 189
+    // bytes per triangle with Embree's standard BVH and 128 with the compact one that large
+    // scenes get, bench/README.md), per mesh vertex (position, normal, uv), per bilinear patch
+    // and per curve segment (control points and Embree's BVH; not measured separately).
     static constexpr double kBytesPerTriangle = 200, kBytesPerVertex = 32, kBytesPerPatch = 200,
                             kBytesPerCurveSegment = 200;
 
