@@ -56,13 +56,18 @@ BSDF SceneShader::GetBSDF(SurfaceInteraction& si, SampledWavelengths& lambda) co
         si.dudy = finiteOr0((ata11 * atb0y - ata01 * atb1y) * invDet);
         si.dvdy = finiteOr0((ata00 * atb1y - ata01 * atb0y) * invDet);
     }
-    const Material* material = si.material->ChooseMaterial(MaterialEvalContext(si));
+    MaterialEvalContext ctx(si);
+    const Material* material = si.material->ChooseMaterial(ctx);
     si.material = material;
     if (!material || material->IsInterface()) return {};
-    // Bump or normal map: the shading frame the BSDF (and emission) is built in
-    if (const ShadingPerturbation& p = material->Perturbation(); p.Any())
+    // Bump or normal map: the shading frame the BSDF (and emission) is built in (only the
+    // shading frame changes; the geometric normal stays)
+    if (const ShadingPerturbation& p = material->Perturbation(); p.Any()) {
         ApplyShadingPerturbation(p, si);
-    return material->GetBSDF(MaterialEvalContext(si), lambda);
+        ctx.ns = si.shading.n;
+        ctx.dpdus = si.shading.dpdu;
+    }
+    return material->GetBSDF(ctx, lambda);
 }
 
 // Scene
