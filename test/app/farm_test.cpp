@@ -2,7 +2,7 @@
 // array, the user's options and an afterok dependency (checked with a stand-in sbatch that
 // records its arguments); and the batch scripts it writes, run as Slurm would run them (each
 // array index, then the merge), give frames bit-identical to single-process renders. (A real
-// Slurm cluster is not started here.)
+// Slurm cluster runs them in slurm_cluster_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -32,7 +32,9 @@ TEST(Farm, TilesCoverTheFilmOnce) {
                 for (int y = b.pMin.y; y < b.pMax.y; ++y)
                     for (int x = b.pMin.x; x < b.pMax.x; ++x) ++count[size_t(y) * res.x + x];
             for (int c : count) ASSERT_EQ(c, 1) << res.x << "x" << res.y << " in " << n;
-            if (res.x >= n && res.y >= n) EXPECT_EQ(int(tiles.size()), n);
+            if (res.x >= n && res.y >= n) {
+                EXPECT_EQ(int(tiles.size()), n);
+            }
         }
     // About square: 16:9 in 4 tiles is 2 x 2, in 2 tiles two halves side by side
     std::vector<Bounds2i> two = TileGrid({1920, 1080}, 2);
