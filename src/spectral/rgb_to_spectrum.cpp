@@ -45,9 +45,9 @@ RGBSigmoidPolynomial RGBToSpectrumTable::operator()(const RGB& in) const {
 
     // Cell and offsets (z through the smoothstep-remapped nodes)
     int xi = std::min(int(x), kRes - 2), yi = std::min(int(y), kRes - 2);
-    int zi = int(FindInterval(kRes, [&](size_t i) { return zNodes[i] < z; }));
+    int zi = int(FindInterval(kRes, [&](size_t i) { return ZNode(int(i)) < z; }));
     Float dx = x - Float(xi), dy = y - Float(yi);
-    Float dz = (z - zNodes[zi]) / (zNodes[zi + 1] - zNodes[zi]);
+    Float dz = (z - ZNode(zi)) / (ZNode(zi + 1) - ZNode(zi));
 
     // Trilinear interpolation of the coefficients
     std::array<Float, 3> c;
@@ -65,12 +65,12 @@ bool RGBToSpectrumTable::HasOwnTable(std::string_view name) {
 }
 
 const RGBToSpectrumTable* RGBToSpectrumTable::Get(std::string_view name) {
-    // One table object per known colour space, built once
+    // One table object per known colour space (two pointers into the embedded bytes)
     static const auto tables = [] {
         std::array<std::unique_ptr<RGBToSpectrumTable>, kColorSpaceDefinitions.size()> t;
-        const float* srgb = RGBToSpectrumTableData("srgb");
+        const unsigned char* srgb = RGBToSpectrumTableData("srgb");
         for (size_t i = 0; i < t.size(); ++i) {
-            const float* data = RGBToSpectrumTableData(kColorSpaceDefinitions[i].name);
+            const unsigned char* data = RGBToSpectrumTableData(kColorSpaceDefinitions[i].name);
             t[i] = std::make_unique<RGBToSpectrumTable>(data ? data : srgb);
         }
         return t;

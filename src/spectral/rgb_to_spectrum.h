@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstring>
 #include <string_view>
 
 #include "core/base/vecmath.h"
@@ -54,8 +55,10 @@ class RGBToSpectrumTable {
     // Floats in one table: kRes z nodes, then 3 x kRes^3 x 3 coefficients (c0, c1, c2).
     static constexpr int kNumFloats = kRes + 3 * kRes * kRes * kRes * 3;
 
-    // data points to kNumFloats floats (z nodes then coefficients); not owned.
-    explicit RGBToSpectrumTable(const float* data) : zNodes(data), coeffs(data + kRes) {}
+    // data points to the bytes of kNumFloats native floats (z nodes then coefficients), of
+    // any alignment; not owned. They are read in place.
+    explicit RGBToSpectrumTable(const unsigned char* data)
+        : zNodes(data), coeffs(data + kRes * sizeof(float)) {}
 
     // Sigmoid polynomial of an RGB with components in [0, 1] (clamped), trilinearly
     // interpolated in the table as pbrt-v4 does; greys use the exact closed form.
@@ -68,18 +71,27 @@ class RGBToSpectrumTable {
     static bool HasOwnTable(std::string_view colorSpaceName);
 
   private:
+    // Float i of an array of native float bytes (memcpy: no alignment or aliasing assumed;
+    // compiles to one load)
+    static float Load(const unsigned char* bytes, size_t i) {
+        float v;
+        std::memcpy(&v, bytes + i * sizeof(float), sizeof(float));
+        return v;
+    }
+    float ZNode(int i) const { return Load(zNodes, size_t(i)); }
     float Coeff(int maxc, int z, int y, int x, int c) const {
-        return coeffs[(((maxc * kRes + z) * kRes + y) * kRes + x) * 3 + c];
+        return Load(coeffs, size_t((((maxc * kRes + z) * kRes + y) * kRes + x) * 3 + c));
     }
 
-    const float* zNodes;
-    const float* coeffs;
+    const unsigned char* zNodes;
+    const unsigned char* coeffs;
 };
 
-// The embedded raw table of a colour space (RGBToSpectrumTable::kNumFloats floats), or nullptr
-// if it was not generated. Defined in the build-time generated rgb2spec_tables.cpp
-// (cmake/KilnRGB2Spec.cmake): the table's bytes are embedded as a string literal and copied into
-// floats on first use of the space (9.4 MB each, kept for the program's life).
-const float* RGBToSpectrumTableData(std::string_view colorSpaceName);
+// The embedded raw table of a colour space (the bytes of RGBToSpectrumTable::kNumFloats native
+// floats), or nullptr if it was not generated. Defined in the build-time generated
+// rgb2spec_tables.cpp (cmake/KilnRGB2Spec.cmake): the bytes are a string literal in the
+// executable's read-only data (9.4 MB per space), read in place, so only the pages of the
+// colours a scene uses are loaded.
+const unsigned char* RGBToSpectrumTableData(std::string_view colorSpaceName);
 
 }  // namespace kiln
