@@ -7,8 +7,8 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${KILN_BUILD_DIR:-$root/build}"
 
 packages=(build-essential cmake pkg-config libembree-dev libopenimageio-dev openimageio-tools
-          libopenexr-dev libopencolorio-dev libtbb-dev zlib1g-dev libgtest-dev libbenchmark-dev
-          libfmt-dev libopenvdb-dev libboost-dev clang-format
+          libopenexr-dev libpng-dev libopencolorio-dev libtbb-dev zlib1g-dev libgtest-dev
+          libbenchmark-dev libfmt-dev libopenvdb-dev libboost-dev clang-format
           munge slurmctld slurmd slurm-client)  # the last four: the Slurm cluster test
 source "$root/scripts/packages.sh"
 kiln_install_missing "${packages[@]}"

@@ -1,8 +1,5 @@
 #include "app/image_diff.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,32 +9,13 @@
 #include <stdexcept>
 
 #include "core/image/color_encoding.h"
+#include "core/image/image_codec.h"
 
 namespace kiln {
 
 namespace {
 
 constexpr float kRelEpsilon = 0.01f;  // pbrt-v4's MRSE epsilon
-
-// Copies a kiln image into a float ImageBuf; values of pixels flagged in `skip` become 0.
-OIIO::ImageBuf ToImageBuf(const Image& img, const std::vector<uint8_t>& skip) {
-    Point2i res = img.Resolution();
-    int nc = img.NChannels();
-    OIIO::ImageBuf buf(OIIO::ImageSpec(res.x, res.y, nc, OIIO::TypeDesc::FLOAT));
-    std::vector<float> data(size_t(res.x) * res.y * nc);
-    for (int y = 0; y < res.y; ++y)
-        for (int x = 0; x < res.x; ++x) {
-            size_t pi = size_t(y) * res.x + x;
-            for (int c = 0; c < nc; ++c)
-                data[pi * nc + c] = skip[pi] ? 0.f : float(img.GetChannel({x, y}, c));
-        }
-    buf.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, data.data());
-    return buf;
-}
-
-[[noreturn]] void Throw(const std::string& what, const OIIO::ImageBuf& b) {
-    throw std::runtime_error("image diff: " + what + ": " + b.geterror());
-}
 
 // RGB of a pixel for the perceptual metric (see the header): channels R, G, B, else the first
 // three, else channel 0 as grey.
@@ -116,29 +94,37 @@ ImageDiffMetrics CompareImages(const Image& a, const Image& b, Image* diffImage)
                     bad[size_t(y) * res.x + x] = 1;
     m.nonFinitePixels = std::count(bad.begin(), bad.end(), uint8_t(1));
 
-    namespace IBA = OIIO::ImageBufAlgo;
-    OIIO::ImageBuf A = ToImageBuf(a, bad), B = ToImageBuf(b, bad);
-    OIIO::ImageBufAlgo::CompareResults cr =
-        IBA::compare(A, B, std::numeric_limits<float>::max(), std::numeric_limits<float>::max());
-    if (cr.error) Throw("compare", A);
-    m.mae = cr.meanerror;
-    m.rmse = cr.rms_error;
-    // OIIO's PSNR takes the images' largest value as the peak; kiln's uses a fixed peak of 1
-    // so that a threshold means the same for every image.
+    // Per value: |A - B| (mae, the largest error and its pixel, the first in scanline order),
+    // (A - B)^2 (rmse) and the relative squared error (A - B)^2 / (|B| + eps)^2 (relmse);
+    // flagged pixels compare as 0 vs 0
+    double sumAbs = 0, sumSq = 0, sumRel = 0;
+    std::vector<float> pixelRel(nPixels, 0.f);  // mean relative squared error of each pixel
+    for (int y = 0; y < res.y; ++y)
+        for (int x = 0; x < res.x; ++x) {
+            size_t pi = size_t(y) * res.x + x;
+            if (bad[pi]) continue;
+            double rel = 0;
+            for (int c = 0; c < nc; ++c) {
+                double va = a.GetChannel({x, y}, c), vb = b.GetChannel({x, y}, c);
+                double d = va - vb, ad = std::abs(d), den = std::abs(vb) + kRelEpsilon;
+                sumAbs += ad;
+                sumSq += d * d;
+                rel += d * d / (den * den);
+                if (ad > m.maxError) {
+                    m.maxError = ad;
+                    m.maxErrorPixel = Point2i(x, y);
+                }
+            }
+            sumRel += rel;
+            pixelRel[pi] = float(rel / nc);
+        }
+    const double nValues = double(nPixels) * nc;
+    m.mae = sumAbs / nValues;
+    m.rmse = std::sqrt(sumSq / nValues);
+    m.relmse = sumRel / nValues;
+    // A fixed peak of 1 (not the images' largest value) so that a threshold means the same
+    // for every image.
     m.psnr = m.rmse > 0 ? 20 * std::log10(1 / m.rmse) : std::numeric_limits<double>::infinity();
-    m.maxError = cr.maxerror;
-    m.maxErrorPixel = Point2i(cr.maxx, cr.maxy);
-
-    // Relative squared error per value: (A - B)^2 / (|B| + eps)^2.
-    OIIO::ImageBuf d = IBA::sub(A, B);
-    OIIO::ImageBuf den = IBA::add(IBA::abs(B), kRelEpsilon);
-    OIIO::ImageBuf rel = IBA::div(IBA::mul(d, d), IBA::mul(den, den));
-    if (rel.has_error()) Throw("relative error", rel);
-    OIIO::ImageBufAlgo::PixelStats stats = IBA::computePixelStats(rel);
-    if (int(stats.avg.size()) != nc) Throw("statistics", rel);
-    double sum = 0;
-    for (int c = 0; c < nc; ++c) sum += stats.avg[c];
-    m.relmse = sum / nc;
 
     // flip-like: mean deltaE*ab after the display clamp (no OIIO operation does CIELAB).
     RGBChannels ca = PickRGB(a), cb = PickRGB(b);
@@ -162,26 +148,23 @@ ImageDiffMetrics CompareImages(const Image& a, const Image& b, Image* diffImage)
 
     if (diffImage) {
         // Per-pixel relative RMS error, log-mapped to [0, 1], through the "inferno" map.
-        std::vector<float> w(nc, 1.f / nc);
-        OIIO::ImageBuf meanRel = IBA::channel_sum(rel, w);
-        OIIO::ImageBuf t(OIIO::ImageSpec(res.x, res.y, 1, OIIO::TypeDesc::FLOAT));
-        for (int y = 0; y < res.y; ++y)
-            for (int x = 0; x < res.x; ++x) {
-                float e = std::sqrt(std::max(meanRel.getchannel(x, y, 0, 0), 0.f));
-                float v = e > 0 ? (std::log10(e) + 3) / 3 : 0;
-                t.setpixel(x, y, &(v = std::clamp(v, 0.f, 1.f)), 1);
-            }
-        OIIO::ImageBuf cm = IBA::color_map(t, 0, "inferno");
-        if (cm.has_error()) Throw("color_map", cm);
+        std::vector<float> t(nPixels);
+        for (size_t i = 0; i < nPixels; ++i) {
+            float e = std::sqrt(pixelRel[i]);
+            float v = e > 0 ? (std::log10(e) + 3) / 3 : 0;
+            t[i] = std::clamp(v, 0.f, 1.f);
+        }
+        std::vector<float> cm = NamedColorMap("inferno", t);
         Image out(PixelFormat::Float, res, {"R", "G", "B"});
         for (int y = 0; y < res.y; ++y)
-            for (int x = 0; x < res.x; ++x)
+            for (int x = 0; x < res.x; ++x) {
+                size_t pi = size_t(y) * res.x + x;
                 for (int c = 0; c < 3; ++c) {
                     // Colour-map values are display (sRGB-encoded) values; store linear.
-                    float v = bad[size_t(y) * res.x + x] ? (c == 1 ? 1.f : 0.f)
-                                                         : SRGBToLinear(cm.getchannel(x, y, 0, c));
+                    float v = bad[pi] ? (c == 1 ? 1.f : 0.f) : SRGBToLinear(cm[3 * pi + c]);
                     out.SetChannel({x, y}, c, v);
                 }
+            }
         *diffImage = std::move(out);
     }
     return m;

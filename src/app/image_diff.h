@@ -1,13 +1,13 @@
 // `kiln diff`: numerical and perceptual comparison of two images (a test image A and a
-// reference B) on OpenImageIO's ImageBufAlgo, with a false-colour difference image.
+// reference B), with a false-colour difference image.
 //
 // Pixel values are compared as kiln reads them (Image::Read): linear for float/half files,
 // 8- and 16-bit files decoded with their transfer function (sRGB unless declared linear).
 // Every metric is a mean over all pixels and, except flip-like, all channels; A and B must
 // have the same resolution, channel count and channel names (in order).
 //
-//   mae        mean |A - B|                                  (ImageBufAlgo::compare)
-//   rmse       sqrt(mean (A - B)^2)                          (ImageBufAlgo::compare)
+//   mae        mean |A - B|
+//   rmse       sqrt(mean (A - B)^2)
 //   psnr       20 log10(1 / rmse), dB, peak value 1 (fixed, unlike OIIO's image maximum)
 //   relmse     mean (A - B)^2 / (|B| + 0.01)^2               (pbrt-v4's Image::MRSE / imgtool
 //                                                             "MRSE": same epsilon 0.01)
@@ -23,9 +23,10 @@
 //
 // The difference image shows the per-pixel relative RMS error
 //   e = sqrt(mean_c (A - B)^2 / (|B| + 0.01)^2)
-// on a log scale, e <= 1e-3 -> 0 and e >= 1 -> 1, through OIIO's perceptually uniform
-// "inferno" colour map (black: identical, yellow-white: 100 % error or more); NaN/Inf pixels of
-// either image are shown in pure green. It is written through Image::Write (atomic).
+// on a log scale, e <= 1e-3 -> 0 and e >= 1 -> 1, through OpenImageIO's perceptually uniform
+// "inferno" colour map (black: identical, yellow-white: 100 % error or more; the OpenImageIO
+// plugin is loaded for it); NaN/Inf pixels of either image are shown in pure green. It is
+// written through Image::Write (atomic).
 #pragma once
 
 #include <cstdint>

@@ -1,38 +1,18 @@
 #include "media/vdb_file.h"
 
+#include <memory>
+#include <stdexcept>
+
 #include "core/base/memory_budget.h"
-
-#include <openvdb/openvdb.h>
-#include <openvdb/tools/Interpolation.h>
-
-#include <mutex>
-#include <optional>
-
+#include "core/base/plugin.h"
 #include "core/parser/diagnostics.h"
+#include "media/vdb_reader.h"
 
 namespace kiln {
-
-namespace {
-
-openvdb::FloatGrid::Ptr ReadFloatGrid(openvdb::io::File& file, const std::string& name,
-                                      const std::string& filename, const FileLoc& loc) {
-    openvdb::GridBase::Ptr base = file.readGrid(name);
-    openvdb::FloatGrid::Ptr grid = openvdb::gridPtrCast<openvdb::FloatGrid>(base);
-    if (!grid)
-        throw SceneError(loc, filename + ": grid \"" + name + "\" is not a float grid", name);
-    if (!grid->transform().isLinear())
-        throw SceneError(loc, filename + ": grid \"" + name + "\" has a non-linear transform",
-                         name);
-    return grid;
-}
-
-}  // namespace
 
 VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityName,
                         const std::string& temperatureName, const FileLoc& loc, size_t maxVoxels,
                         MemoryBudget* budget) {
-    static std::once_flag initialized;
-    std::call_once(initialized, [] { openvdb::initialize(); });
     if (filename.size() >= 5 && filename.compare(filename.size() - 5, 5, ".nvdb") == 0)
         throw SceneError(loc,
                          filename +
@@ -43,32 +23,24 @@ VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityN
                          filename);
     VDBVolume v;
     try {
-        openvdb::io::File file(filename);
-        file.open();
-        if (!file.hasGrid(densityName))
-            throw SceneError(loc, filename + ": no \"" + densityName + "\" grid", densityName);
-        openvdb::FloatGrid::Ptr density = ReadFloatGrid(file, densityName, filename, loc);
-        openvdb::FloatGrid::Ptr temperature;
-        if (!temperatureName.empty() && file.hasGrid(temperatureName))
-            temperature = ReadFloatGrid(file, temperatureName, filename, loc);
-        file.close();
-
-        openvdb::CoordBBox box = density->evalActiveVoxelBoundingBox();
-        if (box.empty())
-            throw SceneError(loc, filename + ": grid \"" + densityName + "\" has no active voxels",
-                             densityName);
-        openvdb::Coord dim = box.dim();
-        size_t n = size_t(dim.x()) * size_t(dim.y()) * size_t(dim.z());
+        using Open = VDBFileReader* (*)(const char*, const char*, const char*);
+        auto open = reinterpret_cast<Open>(PluginSymbol("libkiln_openvdb.so", kOpenVDBFileSymbol));
+        std::unique_ptr<VDBFileReader> file(
+            open(filename.c_str(), densityName.c_str(), temperatureName.c_str()));
+        const std::array<int, 6> box = file->ActiveBox();
+        const int nx = box[3] - box[0] + 1, ny = box[4] - box[1] + 1, nz = box[5] - box[2] + 1;
+        size_t n = size_t(nx) * size_t(ny) * size_t(nz);
         if (n > maxVoxels)
             throw SceneError(loc,
                              filename + ": the density grid spans " + std::to_string(n) +
                                  " voxels; kiln resamples volumes densely and allows at most " +
                                  std::to_string(maxVoxels),
                              densityName);
+        const bool hasTemperature = file->HasTemperature();
         if (budget) {
             try {
                 budget->Charge(
-                    double(n) * sizeof(Float) * (temperature ? 2 : 1),
+                    double(n) * sizeof(Float) * (hasTemperature ? 2 : 1),
                     "the dense grids of \"" + filename + "\" (" + std::to_string(n) + " voxels)");
             } catch (const MemoryLimitError& e) {
                 throw SceneError(loc, e.what(), filename);
@@ -76,33 +48,19 @@ VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityN
         }
         // Dense copies over the density's active box; temperatures sampled (trilinearly) at
         // the density's voxel centres
-        std::vector<Float> d(n), t(temperature ? n : 0);
-        auto densityAccess = density->getConstAccessor();
-        using Sampler = openvdb::tools::GridSampler<openvdb::FloatGrid, openvdb::tools::BoxSampler>;
-        std::optional<Sampler> tSampler;
-        if (temperature) tSampler.emplace(*temperature);
-        size_t i = 0;
-        for (int z = box.min().z(); z <= box.max().z(); ++z)
-            for (int y = box.min().y(); y <= box.max().y(); ++y)
-                for (int x = box.min().x(); x <= box.max().x(); ++x, ++i) {
-                    openvdb::Coord ijk(x, y, z);
-                    d[i] = std::max(0.f, densityAccess.getValue(ijk));
-                    if (tSampler)
-                        t[i] = Float(tSampler->wsSample(density->transform().indexToWorld(ijk)));
-                }
-        v.density = SampledGrid<Float>(std::move(d), dim.x(), dim.y(), dim.z());
-        if (temperature)
-            v.temperature = SampledGrid<Float>(std::move(t), dim.x(), dim.y(), dim.z());
-        v.indexBounds =
-            Bounds3f(Point3f(box.min().x() - 0.5f, box.min().y() - 0.5f, box.min().z() - 0.5f),
-                     Point3f(box.max().x() + 0.5f, box.max().y() + 0.5f, box.max().z() + 0.5f));
-        // OpenVDB multiplies row vectors (world = index * M); kiln column vectors
-        openvdb::math::Mat4d m = density->transform().baseMap()->getAffineMap()->getMat4();
+        std::vector<Float> d(n), t(hasTemperature ? n : 0);
+        file->ReadDense(d.data(), hasTemperature ? t.data() : nullptr);
+        v.density = SampledGrid<Float>(std::move(d), nx, ny, nz);
+        if (hasTemperature) v.temperature = SampledGrid<Float>(std::move(t), nx, ny, nz);
+        v.indexBounds = Bounds3f(Point3f(box[0] - 0.5f, box[1] - 0.5f, box[2] - 0.5f),
+                                 Point3f(box[3] + 0.5f, box[4] + 0.5f, box[5] + 0.5f));
+        const std::array<double, 16> m = file->IndexToWorld();
         Float c[16];
-        for (int r = 0; r < 4; ++r)
-            for (int k = 0; k < 4; ++k) c[4 * r + k] = Float(m[k][r]);
+        for (int i = 0; i < 16; ++i) c[i] = Float(m[i]);
         v.mediumFromIndex = Transform(SquareMatrix4(c));
-    } catch (const openvdb::Exception& e) {
+    } catch (const SceneError&) {
+        throw;
+    } catch (const std::runtime_error& e) {  // the file, a grid or the plugin
         throw SceneError(loc, filename + ": " + e.what(), filename);
     }
     return v;

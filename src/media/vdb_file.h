@@ -1,5 +1,6 @@
-// Sparse volumes from OpenVDB files (.vdb, through Debian's libopenvdb): the float grids a
-// medium reads, resampled onto a dense SampledGrid over the density grid's active voxels.
+// Sparse volumes from OpenVDB files (.vdb, through Debian's libopenvdb in the OpenVDB plugin,
+// vdb_reader.h): the float grids a medium reads, resampled onto a dense SampledGrid over the
+// density grid's active voxels.
 // NanoVDB files (.nvdb, pbrt-v4's "nanovdb" medium) cannot be read: no Debian 12 package
 // provides NanoVDB, and ReadVDBVolume says so.
 #pragma once

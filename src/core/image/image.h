@@ -1,5 +1,6 @@
 // Images: pixel storage (8-bit, half or float) with any number of named channels, wrap modes
-// for lookups outside the image, and reading/writing through OpenImageIO.
+// for lookups outside the image, and reading/writing (EXR through OpenEXR, every other format
+// through the OpenImageIO plugin: image_codec.h).
 //
 // Conventions (pbrt-v4's): pixel (0, 0) is the top-left pixel of the file; rows go down.
 // Continuous lookups take st in [0,1]^2 with st = (0, 0) at the top-left corner of the image
@@ -76,7 +77,7 @@ class Image {
     Image(PixelFormat format, Point2i resolution, std::vector<std::string> channelNames,
           ColorEncoding encoding = ColorEncoding::Linear());
 
-    // Reads any format OpenImageIO reads. 8-bit data are kept as U256 and decoded with
+    // Reads EXR and any format OpenImageIO reads. 8-bit data are kept as U256 and decoded with
     // `encoding` (default: sRGB for 8-bit files unless the file says it is linear); 16-bit
     // integer data are decoded with the same encoding into Float; half stays Half, float and
     // everything else become Float (linear). For files whose data window is smaller than the

@@ -1,8 +1,6 @@
-// Image input and output through OpenImageIO; atomic writes.
-#include <OpenImageIO/imageio.h>
+// Image input and output: EXR through kiln's OpenEXR codec, PNG without transparency through
+// libpng, everything else through the OpenImageIO plugin (image_codec.h); atomic writes.
 #include <unistd.h>
-
-#include <Imath/half.h>
 
 #include <algorithm>
 #include <atomic>
@@ -13,10 +11,12 @@
 #include <random>
 
 #include "core/base/file_reading.h"
+#include "core/base/memory_budget.h"
+#include "core/base/plugin.h"
 #include "core/base/system_memory.h"
 #include "core/image/image.h"
-
-#include "core/base/memory_budget.h"
+#include "core/image/image_codec.h"
+#include "core/image/png_codec.h"
 #include "spectral/color.h"
 
 namespace kiln {
@@ -27,14 +27,21 @@ namespace {
     throw std::runtime_error(filename + ": " + reason);
 }
 
-std::string OIIOError(const std::string& fallback) {
-    std::string e = OIIO::geterror();
-    return e.empty() ? fallback : e;
+// An EXR file: named .exr, or starting with OpenEXR's magic number (76 2f 31 01)
+bool IsExrFile(const std::string& filename) {
+    if (FileExtension(filename) == "exr") return true;
+    unsigned char magic[4] = {};
+    if (FILE* f = std::fopen(filename.c_str(), "rb")) {
+        size_t n = std::fread(magic, 1, 4, f);
+        std::fclose(f);
+        return n == 4 && magic[0] == 0x76 && magic[1] == 0x2f && magic[2] == 0x31 &&
+               magic[3] == 0x01;
+    }
+    return false;
 }
 
 // Encoding an 8-bit file declares through OIIO's "oiio:ColorSpace" (sRGB if none).
-ColorEncoding FileEncoding(const OIIO::ImageSpec& spec) {
-    std::string cs = spec.get_string_attribute("oiio:ColorSpace");
+ColorEncoding FileEncoding(const std::string& cs) {
     std::string lower = cs;
     for (char& c : lower) c = char(std::tolower((unsigned char)c));
     if (lower == "linear" || lower == "lin_srgb" || lower == "scene_linear")
@@ -95,15 +102,38 @@ void RemovePendingTemporaryFile() noexcept {
     if (hasPendingTemporary.load()) unlink(pendingTemporary);
 }
 
+const ImageCodec& OIIOCodec() {
+    static const ImageCodec* const codec = [] {
+        using Factory = const ImageCodec* (*)();
+        return reinterpret_cast<Factory>(PluginSymbol("libkiln_oiio.so", kOIIOCodecSymbol))();
+    }();
+    return *codec;
+}
+
+std::vector<float> NamedColorMap(const std::string& name, const std::vector<float>& values) {
+    using ColorMap = void (*)(const char*, const float*, size_t, float*);
+    auto map = reinterpret_cast<ColorMap>(PluginSymbol("libkiln_oiio.so", kOIIOColorMapSymbol));
+    std::vector<float> rgb(3 * values.size());
+    map(name.c_str(), values.data(), values.size(), rgb.data());
+    return rgb;
+}
+
 // Image Reading
 Image Image::Read(const std::string& filename, ImageMetadata* metadata,
                   std::optional<ColorEncoding> encoding, MemoryBudget* budget) {
     std::string notRegular;
     if (!IsRegularFile(filename, &notRegular)) Fail(filename, notRegular);  // e.g. /dev/zero
-    auto in = OIIO::ImageInput::open(filename);
-    if (!in) Fail(filename, OIIOError("cannot open"));
-    const OIIO::ImageSpec& spec = in->spec();
-    int nc = spec.nchannels;
+    std::unique_ptr<ImageFileReader> in;
+    try {
+        if (IsExrFile(filename))
+            in = ExrCodec().Open(filename);
+        else if (!(in = OpenPng(filename)))
+            in = OIIOCodec().Open(filename);
+    } catch (const std::runtime_error& e) {
+        Fail(filename, e.what());
+    }
+    const ImageFileSpec& spec = in->Spec();
+    int nc = int(spec.channelNames.size());
     if (spec.width <= 0 || spec.height <= 0 || nc <= 0) Fail(filename, "empty image");
     // A header may claim any size: check what the pixels would take before reading them
     double bytes = double(spec.width) * spec.height * nc * sizeof(float);
@@ -114,58 +144,40 @@ Image Image::Read(const std::string& filename, ImageMetadata* metadata,
     else if (double memory = PhysicalMemoryBytes(); memory > 0 && bytes > memory / 2)
         Fail(filename, std::to_string(spec.width) + " x " + std::to_string(spec.height) +
                            " pixels would take " + FormatBytes(bytes) + " of memory");
-    std::vector<std::string> names;
-    for (int c = 0; c < nc; ++c) {
-        std::string n = c < int(spec.channelnames.size()) ? spec.channelnames[c] : "";
-        if (n.empty()) n = std::string("C").append(std::to_string(c));
-        names.push_back(n);
-    }
     Point2i res(spec.width, spec.height);
-    OIIO::TypeDesc::BASETYPE bt = OIIO::TypeDesc::BASETYPE(spec.format.basetype);
-    ColorEncoding enc = encoding ? *encoding : FileEncoding(spec);
+    ColorEncoding enc = encoding ? *encoding : FileEncoding(spec.colorSpace);
     Image image;
     size_t n = size_t(res.x) * res.y * nc;
-    if (bt == OIIO::TypeDesc::UINT8) {
-        image = Image(PixelFormat::U256, res, names, enc);
-        if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::UINT8, image.p8.data()))
-            Fail(filename, in->geterror());
-    } else if (bt == OIIO::TypeDesc::HALF) {
-        image = Image(PixelFormat::Half, res, names);
-        if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::HALF, image.p16.data()))
-            Fail(filename, in->geterror());
-    } else if (bt == OIIO::TypeDesc::UINT16 || bt == OIIO::TypeDesc::INT8 ||
-               bt == OIIO::TypeDesc::INT16) {
-        // Integer data other than 8 bit: normalised by OIIO to [0, 1], then decoded.
-        image = Image(PixelFormat::Float, res, names);
-        if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, image.p32.data()))
-            Fail(filename, in->geterror());
-        for (size_t i = 0; i < n; ++i) image.p32[i] = enc.ToLinear(image.p32[i]);
-    } else {
-        image = Image(PixelFormat::Float, res, names);
-        if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, image.p32.data()))
-            Fail(filename, in->geterror());
+    try {
+        if (spec.type == SampleType::U8) {
+            image = Image(PixelFormat::U256, res, spec.channelNames, enc);
+            in->Read(SampleType::U8, image.p8.data());
+        } else if (spec.type == SampleType::Half) {
+            image = Image(PixelFormat::Half, res, spec.channelNames);
+            in->Read(SampleType::Half, image.p16.data());
+        } else {
+            image = Image(PixelFormat::Float, res, spec.channelNames);
+            in->Read(SampleType::Float, image.p32.data());
+            // Integer data other than 8 bit: normalised to [0, 1] by the reader, then decoded
+            if (spec.type == SampleType::U16)
+                for (size_t i = 0; i < n; ++i) image.p32[i] = enc.ToLinear(image.p32[i]);
+        }
+    } catch (const std::runtime_error& e) {
+        Fail(filename, e.what());
     }
 
     if (metadata) {
         *metadata = ImageMetadata();
-        if (float t; spec.getattribute("renderTimeSeconds", OIIO::TypeFloat, &t))
-            metadata->renderTimeSeconds = t;
-        if (int spp; spec.getattribute("samplesPerPixel", OIIO::TypeInt, &spp))
-            metadata->samplesPerPixel = spp;
-        metadata->fullResolution = Point2i(spec.full_width, spec.full_height);
-        metadata->pixelBounds = Bounds2i{
-            Point2i(spec.x - spec.full_x, spec.y - spec.full_y),
-            Point2i(spec.x - spec.full_x + spec.width, spec.y - spec.full_y + spec.height)};
-        if (float c[8];
-            spec.getattribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), c))
-            metadata->colorSpace = MatchColorSpace(c);
-        std::array<float, 16> m;
-        if (spec.getattribute("worldToCamera", OIIO::TypeMatrix44, m.data()))
-            metadata->cameraFromWorld = m;
-        if (spec.getattribute("worldToNDC", OIIO::TypeMatrix44, m.data()))
-            metadata->NDCFromWorld = m;
-        for (const OIIO::ParamValue& p : spec.extra_attribs)
-            if (p.type() == OIIO::TypeString) metadata->strings[p.name().string()] = p.get_string();
+        metadata->renderTimeSeconds = spec.renderTimeSeconds;
+        metadata->samplesPerPixel = spec.samplesPerPixel;
+        metadata->fullResolution = Point2i(spec.fullWidth, spec.fullHeight);
+        metadata->pixelBounds =
+            Bounds2i{Point2i(spec.x, spec.y), Point2i(spec.x + spec.width, spec.y + spec.height)};
+        if (spec.chromaticities)
+            metadata->colorSpace = MatchColorSpace(spec.chromaticities->data());
+        metadata->cameraFromWorld = spec.worldToCamera;
+        metadata->NDCFromWorld = spec.worldToNDC;
+        metadata->strings = spec.strings;
     }
     return image;
 }
@@ -176,14 +188,14 @@ void Image::Write(const std::string& filename, const ImageMetadata& metadata) co
     if (ext.empty()) Fail(filename, "no file extension to choose the format");
     if (!*this) Fail(filename, "empty image");
     Image out = *this;
-    OIIO::TypeDesc type = OIIO::TypeDesc::UINT8;
+    SampleType type = SampleType::U8;
     bool isExr = ext == "exr";
     if (isExr) {
         if (format == PixelFormat::Float) {
-            type = OIIO::TypeDesc::FLOAT;
+            type = SampleType::Float;
         } else {
             out = ConvertToFormat(PixelFormat::Half);
-            type = OIIO::TypeDesc::HALF;
+            type = SampleType::Half;
         }
     } else if (ext == "hdr" || ext == "pfm") {
         // RGB (or a single channel) as float.
@@ -193,80 +205,69 @@ void Image::Write(const std::string& filename, const ImageMetadata& metadata) co
             out = SelectChannels({"R", "G", "B"});
         }
         out = out.ConvertToFormat(PixelFormat::Float);
-        type = OIIO::TypeDesc::FLOAT;
+        type = SampleType::Float;
     } else if ((ext == "tif" || ext == "tiff") && format != PixelFormat::U256) {
         out = ConvertToFormat(PixelFormat::Float);
-        type = OIIO::TypeDesc::FLOAT;
+        type = SampleType::Float;
     } else {
         // 8-bit formats: floating-point data are sRGB encoded.
         if (format != PixelFormat::U256) out = ConvertToFormat(PixelFormat::U256);
-        type = OIIO::TypeDesc::UINT8;
+        type = SampleType::U8;
     }
 
-    OIIO::ImageSpec spec(out.resolution.x, out.resolution.y, out.NChannels(), type);
-    spec.channelnames = out.channelNames;
-    spec.alpha_channel = out.ChannelIndex("A");
-    spec.z_channel = out.ChannelIndex("Z");
-    if (type == OIIO::TypeDesc::UINT8) {
+    ImageFileSpec spec;
+    spec.width = out.resolution.x;
+    spec.height = out.resolution.y;
+    spec.channelNames = out.channelNames;
+    spec.type = type;
+    if (type == SampleType::U8) {
         const ColorEncoding& e = out.encoding;
         if (e.GetKind() == ColorEncoding::Kind::Linear)
-            spec.attribute("oiio:ColorSpace", "Linear");
+            spec.colorSpace = "Linear";
         else if (e.GetKind() == ColorEncoding::Kind::SRGB)
-            spec.attribute("oiio:ColorSpace", "sRGB");
+            spec.colorSpace = "sRGB";
         else
-            spec.attribute("oiio:ColorSpace", "Gamma" + std::to_string(e.GammaValue()));
+            spec.colorSpace = "Gamma" + std::to_string(e.GammaValue());
     }
     if (isExr) {
-        spec.attribute("compression", "zip");
         if (metadata.fullResolution) {
-            spec.full_width = metadata.fullResolution->x;
-            spec.full_height = metadata.fullResolution->y;
+            spec.fullWidth = metadata.fullResolution->x;
+            spec.fullHeight = metadata.fullResolution->y;
         }
         if (metadata.pixelBounds) {
             spec.x = metadata.pixelBounds->pMin.x;
             spec.y = metadata.pixelBounds->pMin.y;
         }
     }
-    if (metadata.renderTimeSeconds)
-        spec.attribute("renderTimeSeconds", *metadata.renderTimeSeconds);
-    if (metadata.samplesPerPixel) spec.attribute("samplesPerPixel", *metadata.samplesPerPixel);
+    spec.renderTimeSeconds = metadata.renderTimeSeconds;
+    spec.samplesPerPixel = metadata.samplesPerPixel;
     if (metadata.colorSpace) {
         const RGBColorSpace& cs = *metadata.colorSpace;
-        float c[8] = {cs.r.x, cs.r.y, cs.g.x, cs.g.y, cs.b.x, cs.b.y, cs.w.x, cs.w.y};
-        spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), c);
+        spec.chromaticities = {cs.r.x, cs.r.y, cs.g.x, cs.g.y, cs.b.x, cs.b.y, cs.w.x, cs.w.y};
     }
-    if (metadata.cameraFromWorld)
-        spec.attribute("worldToCamera", OIIO::TypeMatrix44, metadata.cameraFromWorld->data());
-    if (metadata.NDCFromWorld)
-        spec.attribute("worldToNDC", OIIO::TypeMatrix44, metadata.NDCFromWorld->data());
-    for (const auto& [k, v] : metadata.strings) spec.attribute(k, v);
+    spec.worldToCamera = metadata.cameraFromWorld;
+    spec.worldToNDC = metadata.NDCFromWorld;
+    spec.strings = metadata.strings;
 
-    auto output = OIIO::ImageOutput::create(ext);
-    if (!output) Fail(filename, OIIOError("no writer for ." + ext + " files"));
-    const void* data = type == OIIO::TypeDesc::UINT8  ? (const void*)out.p8.data()
-                       : type == OIIO::TypeDesc::HALF ? (const void*)out.p16.data()
-                                                      : (const void*)out.p32.data();
+    const void* data = type == SampleType::U8     ? (const void*)out.p8.data()
+                       : type == SampleType::Half ? (const void*)out.p16.data()
+                                                  : (const void*)out.p32.data();
     std::string tmp = TemporaryName(filename);
     std::error_code ec;
     SetPendingTemporary(tmp);
     struct Done {
         ~Done() { hasPendingTemporary.store(false); }
     } done;
-    if (!output->open(tmp, spec)) {
-        std::string err = output->geterror();
+    try {
+        if (isExr)
+            ExrCodec().Write(tmp, ext, spec, data);
+        else if (ext == "png" && PngWriterHandles(spec))
+            WritePng(tmp, spec, data);
+        else
+            OIIOCodec().Write(tmp, ext, spec, data);
+    } catch (const std::runtime_error& e) {
         std::filesystem::remove(tmp, ec);
-        Fail(filename, err.empty() ? "cannot open for writing" : err);
-    }
-    bool ok = output->write_image(type, data);
-    std::string err = ok ? "" : output->geterror();
-    if (!output->close() && ok) {
-        ok = false;
-        err = output->geterror();
-    }
-    output.reset();
-    if (!ok) {
-        std::filesystem::remove(tmp, ec);
-        Fail(filename, err.empty() ? "write failed" : err);
+        Fail(filename, e.what());
     }
     std::filesystem::rename(tmp, filename, ec);
     if (ec) {

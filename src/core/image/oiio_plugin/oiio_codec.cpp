@@ -1,0 +1,154 @@
+// The OpenImageIO plugin (libkiln_oiio.so): every image format but EXR, read and written
+// through OpenImageIO (see ../image_codec.h). Loaded by OIIOCodec() on first use; it uses
+// nothing of kiln but the plain types of image_codec.h.
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
+#include <stdexcept>
+
+#include "core/image/image_codec.h"
+
+namespace kiln {
+
+namespace {
+
+std::string OIIOError(const std::string& error, const std::string& fallback) {
+    return error.empty() ? fallback : error;
+}
+
+OIIO::TypeDesc ToOIIO(SampleType t) {
+    switch (t) {
+        case SampleType::U8:
+            return OIIO::TypeDesc::UINT8;
+        case SampleType::U16:
+            return OIIO::TypeDesc::UINT16;
+        case SampleType::Half:
+            return OIIO::TypeDesc::HALF;
+        case SampleType::Float:
+            return OIIO::TypeDesc::FLOAT;
+    }
+    return OIIO::TypeDesc::FLOAT;
+}
+
+class OIIOReader final : public ImageFileReader {
+  public:
+    explicit OIIOReader(std::unique_ptr<OIIO::ImageInput> in) : in(std::move(in)) {
+        const OIIO::ImageSpec& s = this->in->spec();
+        spec.width = s.width;
+        spec.height = s.height;
+        for (int c = 0; c < s.nchannels; ++c) {
+            std::string n = c < int(s.channelnames.size()) ? s.channelnames[c] : "";
+            if (n.empty()) n = "C" + std::to_string(c);
+            spec.channelNames.push_back(n);
+        }
+        switch (OIIO::TypeDesc::BASETYPE(s.format.basetype)) {
+            case OIIO::TypeDesc::UINT8:
+                spec.type = SampleType::U8;
+                break;
+            case OIIO::TypeDesc::HALF:
+                spec.type = SampleType::Half;
+                break;
+            case OIIO::TypeDesc::UINT16:
+            case OIIO::TypeDesc::INT8:
+            case OIIO::TypeDesc::INT16:
+                spec.type = SampleType::U16;
+                break;
+            default:
+                spec.type = SampleType::Float;
+        }
+        spec.fullWidth = s.full_width;
+        spec.fullHeight = s.full_height;
+        spec.x = s.x - s.full_x;
+        spec.y = s.y - s.full_y;
+        spec.colorSpace = s.get_string_attribute("oiio:ColorSpace");
+        if (float t; s.getattribute("renderTimeSeconds", OIIO::TypeFloat, &t))
+            spec.renderTimeSeconds = t;
+        if (int spp; s.getattribute("samplesPerPixel", OIIO::TypeInt, &spp))
+            spec.samplesPerPixel = spp;
+        if (std::array<float, 8> c;
+            s.getattribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), c.data()))
+            spec.chromaticities = c;
+        if (std::array<float, 16> m; s.getattribute("worldToCamera", OIIO::TypeMatrix44, m.data()))
+            spec.worldToCamera = m;
+        if (std::array<float, 16> m; s.getattribute("worldToNDC", OIIO::TypeMatrix44, m.data()))
+            spec.worldToNDC = m;
+        for (const OIIO::ParamValue& p : s.extra_attribs)
+            if (p.type() == OIIO::TypeString) spec.strings[p.name().string()] = p.get_string();
+    }
+
+    const ImageFileSpec& Spec() const override { return spec; }
+
+    void Read(SampleType type, void* data) override {
+        // Integer data other than 8 bit are normalised by OpenImageIO to [0, 1] as floats
+        if (!in->read_image(0, 0, 0, int(spec.channelNames.size()), ToOIIO(type), data))
+            throw std::runtime_error(OIIOError(in->geterror(), "read failed"));
+    }
+
+  private:
+    std::unique_ptr<OIIO::ImageInput> in;
+    ImageFileSpec spec;
+};
+
+class OIIOImageCodec final : public ImageCodec {
+  public:
+    std::unique_ptr<ImageFileReader> Open(const std::string& filename) const override {
+        auto in = OIIO::ImageInput::open(filename);
+        if (!in) throw std::runtime_error(OIIOError(OIIO::geterror(), "cannot open"));
+        return std::make_unique<OIIOReader>(std::move(in));
+    }
+
+    void Write(const std::string& filename, const std::string& format, const ImageFileSpec& spec,
+               const void* data) const override {
+        const int nc = int(spec.channelNames.size());
+        OIIO::ImageSpec s(spec.width, spec.height, nc, ToOIIO(spec.type));
+        s.channelnames = spec.channelNames;
+        for (int c = 0; c < nc; ++c) {
+            if (spec.channelNames[c] == "A") s.alpha_channel = c;
+            if (spec.channelNames[c] == "Z") s.z_channel = c;
+        }
+        if (!spec.colorSpace.empty()) s.attribute("oiio:ColorSpace", spec.colorSpace);
+        if (spec.renderTimeSeconds) s.attribute("renderTimeSeconds", *spec.renderTimeSeconds);
+        if (spec.samplesPerPixel) s.attribute("samplesPerPixel", *spec.samplesPerPixel);
+        if (spec.chromaticities)
+            s.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8),
+                        spec.chromaticities->data());
+        if (spec.worldToCamera)
+            s.attribute("worldToCamera", OIIO::TypeMatrix44, spec.worldToCamera->data());
+        if (spec.worldToNDC) s.attribute("worldToNDC", OIIO::TypeMatrix44, spec.worldToNDC->data());
+        for (const auto& [k, v] : spec.strings) s.attribute(k, v);
+
+        auto out = OIIO::ImageOutput::create(format);
+        if (!out)
+            throw std::runtime_error(
+                OIIOError(OIIO::geterror(), "no writer for ." + format + " files"));
+        if (!out->open(filename, s))
+            throw std::runtime_error(OIIOError(out->geterror(), "cannot open for writing"));
+        bool ok = out->write_image(ToOIIO(spec.type), data);
+        std::string err = ok ? "" : out->geterror();
+        if (!out->close() && ok) {
+            ok = false;
+            err = out->geterror();
+        }
+        if (!ok) throw std::runtime_error(OIIOError(err, "write failed"));
+    }
+};
+
+}  // namespace
+
+}  // namespace kiln
+
+extern "C" const kiln::ImageCodec* KilnOIIOImageCodec() {
+    static const kiln::OIIOImageCodec codec;
+    return &codec;
+}
+
+extern "C" void KilnOIIOColorMap(const char* name, const float* values, size_t n, float* rgb) {
+    if (n == 0) return;
+    OIIO::ImageBuf in(OIIO::ImageSpec(int(n), 1, 1, OIIO::TypeDesc::FLOAT));
+    in.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, values);
+    OIIO::ImageBuf out = OIIO::ImageBufAlgo::color_map(in, 0, name);
+    if (out.has_error() || out.nchannels() != 3)
+        throw std::runtime_error(std::string("colour map \"") + name + "\": " + out.geterror());
+    out.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, rgb);
+}

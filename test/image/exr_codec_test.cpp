@@ -1,0 +1,172 @@
+// kiln's OpenEXR codec (core/image/exr_codec.cpp) against OpenImageIO, which read and wrote
+// kiln's EXR files before: the same channel order on reading, the same pixels, and the same
+// metadata both ways (OpenImageIO reads what kiln writes; kiln reads what OpenImageIO writes).
+// A file named otherwise is still recognised as EXR by its magic number.
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/image/image.h"
+#include "spectral/color.h"
+
+namespace kiln {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string TempFile(const std::string& name) {
+    return (fs::temp_directory_path() / ("kiln_exr_" + std::to_string(getpid()) + "_" + name))
+        .string();
+}
+
+// Pixel (x, y), channel c: a value that identifies all three
+float Value(int x, int y, int c) { return float(x + 10 * y + 100 * c) + 0.25f; }
+
+Image Labelled(const std::vector<std::string>& names, PixelFormat format) {
+    Image im(format, {5, 3}, names);
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 5; ++x)
+            for (int c = 0; c < int(names.size()); ++c) im.SetChannel({x, y}, c, Value(x, y, c));
+    return im;
+}
+
+TEST(ExrCodec, ChannelsAndPixelsAsOpenImageIOReadsThem) {
+    const std::vector<std::vector<std::string>> sets = {
+        {"R", "G", "B"},
+        {"B", "G", "R", "A"},
+        {"Z", "N.X", "albedo.R", "R", "G", "B", "N.Y", "albedo.G", "A", "N.Z", "albedo.B", "Y"},
+        {"V", "U", "Zback", "imag", "real", "Depth", "Alpha", "Red", "x.Z", "x.A", "x.U", "x.R"},
+        {"b", "Z", "a", "AR", "RA"},
+        {"Z", "A", "X"},
+        {"N.Z", "N.A", "N.X", "N.Y", "N.R", "N.U"},
+        {"real", "Z", "Y", "X", "Depth", "Zback"},
+        {"x", "Z", "A"},
+        {"B", "G", "R", "X", "x", "y", "z"},
+        {"S0.R", "S0.G", "S0.B", "S1.R", "S1.G", "S1.B", "R", "G", "B"}};
+    for (PixelFormat format : {PixelFormat::Half, PixelFormat::Float})
+        for (const std::vector<std::string>& names : sets) {
+            const std::string file = TempFile("order.exr");
+            Image written = Labelled(names, format);
+            written.Write(file);
+            Image kiln = Image::Read(file);
+            auto in = OIIO::ImageInput::open(file);
+            ASSERT_TRUE(in) << OIIO::geterror();
+            const OIIO::ImageSpec& spec = in->spec();
+            ASSERT_EQ(kiln.ChannelNames(), spec.channelnames) << names[0];
+            EXPECT_EQ(kiln.Format(), format);
+            std::vector<float> oiio(size_t(spec.width) * spec.height * spec.nchannels);
+            ASSERT_TRUE(
+                in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, oiio.data()));
+            size_t i = 0;
+            for (int y = 0; y < 3; ++y)
+                for (int x = 0; x < 5; ++x)
+                    for (int c = 0; c < kiln.NChannels(); ++c, ++i) {
+                        EXPECT_EQ(kiln.GetChannel({x, y}, c), oiio[i]);
+                        // and each channel holds what was written under its name
+                        int w = written.ChannelIndex(kiln.ChannelNames()[c]);
+                        EXPECT_EQ(kiln.GetChannel({x, y}, c), written.GetChannel({x, y}, w));
+                    }
+            fs::remove(file);
+        }
+}
+
+TEST(ExrCodec, OpenImageIOReadsKilnsMetadata) {
+    const std::string file = TempFile("meta.exr");
+    ImageMetadata md;
+    md.renderTimeSeconds = 12.5f;
+    md.samplesPerPixel = 64;
+    md.fullResolution = Point2i(10, 8);
+    md.pixelBounds = Bounds2i{{2, 4}, {7, 7}};
+    md.colorSpace = &RGBColorSpace::sRGB();
+    md.cameraFromWorld = std::array<float, 16>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 0, 0, 0, 1};
+    md.strings["kiln:scene"] = "cornell.pbrt";
+    Labelled({"R", "G", "B"}, PixelFormat::Float).Write(file, md);
+
+    auto in = OIIO::ImageInput::open(file);
+    ASSERT_TRUE(in) << OIIO::geterror();
+    const OIIO::ImageSpec& s = in->spec();
+    EXPECT_EQ(s.full_width, 10);
+    EXPECT_EQ(s.full_height, 8);
+    EXPECT_EQ(s.x, 2);
+    EXPECT_EQ(s.y, 4);
+    EXPECT_EQ(s.get_float_attribute("renderTimeSeconds"), 12.5f);
+    EXPECT_EQ(s.get_int_attribute("samplesPerPixel"), 64);
+    EXPECT_EQ(s.get_string_attribute("kiln:scene"), "cornell.pbrt");
+    EXPECT_EQ(s.get_string_attribute("compression"), "zip");
+    float m[16];
+    ASSERT_TRUE(s.getattribute("worldToCamera", OIIO::TypeMatrix44, m));
+    for (int i = 0; i < 16; ++i) EXPECT_EQ(m[i], (*md.cameraFromWorld)[i]);
+    float c[8];
+    ASSERT_TRUE(s.getattribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), c));
+    EXPECT_FLOAT_EQ(c[0], RGBColorSpace::sRGB().r.x);
+    EXPECT_FLOAT_EQ(c[7], RGBColorSpace::sRGB().w.y);
+    fs::remove(file);
+}
+
+TEST(ExrCodec, KilnReadsOpenImageIOsMetadata) {
+    const std::string file = TempFile("oiio.exr");
+    OIIO::ImageSpec s(3, 2, 3, OIIO::TypeDesc::HALF);
+    s.full_width = 9;
+    s.full_height = 7;
+    s.x = 4;
+    s.y = 5;
+    s.attribute("renderTimeSeconds", 3.5f);
+    s.attribute("samplesPerPixel", 16);
+    s.attribute("kiln:seed", "42");
+    float w2c[16] = {0, 1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    s.attribute("worldToNDC", OIIO::TypeMatrix44, w2c);
+    std::vector<float> px(3 * 2 * 3);
+    for (size_t i = 0; i < px.size(); ++i) px[i] = float(i) * 0.5f;
+    {
+        auto out = OIIO::ImageOutput::create("exr");
+        ASSERT_TRUE(out && out->open(file, s));
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
+        ASSERT_TRUE(out->close());
+    }
+    ImageMetadata md;
+    Image im = Image::Read(file, &md);
+    EXPECT_EQ(im.Format(), PixelFormat::Half);
+    ASSERT_EQ(im.Resolution(), Point2i(3, 2));
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 3; ++x)
+            for (int c = 0; c < 3; ++c)
+                EXPECT_EQ(im.GetChannel({x, y}, c), px[size_t(3 * (3 * y + x) + c)]);
+    EXPECT_EQ(md.fullResolution, Point2i(9, 7));
+    ASSERT_TRUE(md.pixelBounds);
+    EXPECT_EQ(md.pixelBounds->pMin, Point2i(4, 5));
+    EXPECT_EQ(md.pixelBounds->pMax, Point2i(7, 7));
+    EXPECT_EQ(md.renderTimeSeconds, 3.5f);
+    EXPECT_EQ(md.samplesPerPixel, 16);
+    EXPECT_EQ(md.strings["kiln:seed"], "42");
+    ASSERT_TRUE(md.NDCFromWorld);
+    for (int i = 0; i < 16; ++i) EXPECT_EQ((*md.NDCFromWorld)[i], w2c[i]);
+
+    // The same file under another name is still read as EXR (by its magic number)
+    const std::string renamed = TempFile("oiio.data");
+    fs::rename(file, renamed);
+    EXPECT_EQ(Image::Read(renamed).Resolution(), Point2i(3, 2));
+    fs::remove(renamed);
+}
+
+TEST(ExrCodec, DamagedFilesAreErrorsNamingTheFile) {
+    const std::string file = TempFile("cut.exr");
+    Labelled({"R", "G", "B"}, PixelFormat::Float).Write(file);
+    const auto size = fs::file_size(file);
+    for (auto keep : {size - 8, size / 2, decltype(size)(20)}) {
+        fs::resize_file(file, keep);
+        try {
+            Image::Read(file);
+            ADD_FAILURE() << "no error at " << keep << " bytes";
+        } catch (const std::runtime_error& e) {
+            EXPECT_EQ(std::string(e.what()).rfind(file + ": ", 0), 0u) << e.what();
+        }
+    }
+    fs::remove(file);
+}
+
+}  // namespace
+}  // namespace kiln
