@@ -59,8 +59,8 @@ Texture "negative" "float" "scale" "texture tex" "checks" "float scale" -2
     const char* roughness[] = {"\"float roughness\" 1e30 \"bool remaproughness\" false",
                                "\"float roughness\" 1e8", "\"float roughness\" 1e-30",
                                "\"texture roughness\" \"negative\"",
-                               "\"float uroughness\" 1e30 \"float vroughness\" 0 "
-                               "\"bool remaproughness\" false"};
+                               ("\"float uroughness\" 1e30 \"float vroughness\" 0 "
+                                "\"bool remaproughness\" false")};
     for (const char* material : {"dielectric", "conductor", "coateddiffuse"})
         for (const char* r : roughness) {
             std::string world = std::string(textures) + "Material \"" + material + "\" " + r +
