@@ -6,22 +6,19 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "core/image/image.h"
+#include "image_test_util.h"
 #include "spectral/color.h"
 
 namespace kiln {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string TempFile(const std::string& name) {
-    return (fs::temp_directory_path() / ("kiln_exr_" + std::to_string(getpid()) + "_" + name))
-        .string();
-}
 
 // Pixel (x, y), channel c: a value that identifies all three
 float Value(int x, int y, int c) { return float(x + 10 * y + 100 * c) + 0.25f; }
@@ -49,7 +46,7 @@ TEST(ExrCodec, ChannelsAndPixelsAsOpenImageIOReadsThem) {
         {"S0.R", "S0.G", "S0.B", "S1.R", "S1.G", "S1.B", "R", "G", "B"}};
     for (PixelFormat format : {PixelFormat::Half, PixelFormat::Float})
         for (const std::vector<std::string>& names : sets) {
-            const std::string file = TempFile("order.exr");
+            const std::string file = testing::TempFile("exr_order.exr");
             Image written = Labelled(names, format);
             written.Write(file);
             Image kiln = Image::Read(file);
@@ -75,7 +72,7 @@ TEST(ExrCodec, ChannelsAndPixelsAsOpenImageIOReadsThem) {
 }
 
 TEST(ExrCodec, OpenImageIOReadsKilnsMetadata) {
-    const std::string file = TempFile("meta.exr");
+    const std::string file = testing::TempFile("exr_meta.exr");
     ImageMetadata md;
     md.renderTimeSeconds = 12.5f;
     md.samplesPerPixel = 64;
@@ -108,7 +105,7 @@ TEST(ExrCodec, OpenImageIOReadsKilnsMetadata) {
 }
 
 TEST(ExrCodec, KilnReadsOpenImageIOsMetadata) {
-    const std::string file = TempFile("oiio.exr");
+    const std::string file = testing::TempFile("exr_oiio.exr");
     OIIO::ImageSpec s(3, 2, 3, OIIO::TypeDesc::HALF);
     s.full_width = 9;
     s.full_height = 7;
@@ -146,17 +143,17 @@ TEST(ExrCodec, KilnReadsOpenImageIOsMetadata) {
     for (int i = 0; i < 16; ++i) EXPECT_EQ((*md.NDCFromWorld)[i], w2c[i]);
 
     // The same file under another name is still read as EXR (by its magic number)
-    const std::string renamed = TempFile("oiio.data");
+    const std::string renamed = testing::TempFile("exr_oiio.data");
     fs::rename(file, renamed);
     EXPECT_EQ(Image::Read(renamed).Resolution(), Point2i(3, 2));
     fs::remove(renamed);
 }
 
 TEST(ExrCodec, DamagedFilesAreErrorsNamingTheFile) {
-    const std::string file = TempFile("cut.exr");
+    const std::string file = testing::TempFile("exr_cut.exr");
     Labelled({"R", "G", "B"}, PixelFormat::Float).Write(file);
-    const auto size = fs::file_size(file);
-    for (auto keep : {size - 8, size / 2, decltype(size)(20)}) {
+    const std::uintmax_t size = fs::file_size(file);
+    for (std::uintmax_t keep : {size - 8, size / 2, std::uintmax_t(20)}) {
         fs::resize_file(file, keep);
         try {
             Image::Read(file);

@@ -19,16 +19,12 @@
 #include <vector>
 
 #include "core/image/image.h"
+#include "image_test_util.h"
 
 namespace kiln {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string TempFile(const std::string& name) {
-    return (fs::temp_directory_path() / ("kiln_png_" + std::to_string(getpid()) + "_" + name))
-        .string();
-}
 
 struct Read {
     std::vector<unsigned char> pixels;
@@ -108,7 +104,7 @@ void ExpectSameAsOpenImageIO(const std::string& file, const std::string& what) {
 
 TEST(PngCodec, ReadsEveryOpaquePngAsOpenImageIODoes) {
     const int w = 9, h = 7;
-    const std::string file = TempFile("read.png");
+    const std::string file = testing::TempFile("png_read.png");
     // Written by OpenImageIO: grey and RGB, 8 and 16 bits, sRGB, linear and gamma 2.2
     for (int nc : {1, 3})
         for (OIIO::TypeDesc type : {OIIO::TypeDesc::UINT8, OIIO::TypeDesc::UINT16})
@@ -147,7 +143,7 @@ TEST(PngCodec, ReadsEveryOpaquePngAsOpenImageIODoes) {
     WriteRawPng(file, w, h, PNG_COLOR_TYPE_RGBA, 8, false, false, rgba);
     EXPECT_FALSE(OpenPng(file));
     // Not a PNG at all: nullptr (another reader's business); a damaged PNG: an error
-    EXPECT_FALSE(OpenPng(TempFile("missing.png")));
+    EXPECT_FALSE(OpenPng(testing::TempFile("png_missing.png")));
     WriteRawPng(file, w, h, PNG_COLOR_TYPE_PALETTE, 8, false, false, indices);
     fs::resize_file(file, fs::file_size(file) - 30);
     EXPECT_THROW(
@@ -175,7 +171,8 @@ TEST(PngCodec, OpenImageIOReadsWhatItWouldHaveWritten) {
             ASSERT_TRUE(PngWriterHandles(spec));
             std::vector<unsigned char> data(size_t(w) * h * nc);
             for (size_t i = 0; i < data.size(); ++i) data[i] = (unsigned char)(i * 37 % 256);
-            const std::string ours = TempFile("ours.png"), theirs = TempFile("theirs.png");
+            const std::string ours = testing::TempFile("png_ours.png"),
+                              theirs = testing::TempFile("png_theirs.png");
             WritePng(ours, spec, data.data());
             OIIOCodec().Write(theirs, "png", spec, data.data());
             Read a = ReadWithOIIO(ours), b = ReadWithOIIO(theirs);
@@ -213,7 +210,7 @@ TEST(PngCodec, ImagesWithAlphaAreWrittenThroughOpenImageIO) {
     for (int y = 0; y < 3; ++y)
         for (int x = 0; x < 4; ++x)
             for (int c = 0; c < 4; ++c) im.SetChannel({x, y}, c, c == 3 ? 1.f : 0.1f * (x + y));
-    const std::string file = TempFile("alpha.png");
+    const std::string file = testing::TempFile("png_alpha.png");
     im.Write(file);
     Image back = Image::Read(file);
     ASSERT_EQ(back.NChannels(), 4);
