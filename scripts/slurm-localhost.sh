@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # A single-node Slurm cluster on localhost, from Debian's packages (munge, slurmctld, slurmd),
 # with every file in one directory: a fresh munge key, its socket, slurm.conf, state, spool and
-# logs. Nothing in /etc is read or changed, so it runs beside a system Slurm. Ports are chosen free.
+# logs. Slurm's and munge's files in /etc are neither read nor changed, so it runs beside a
+# system Slurm. Ports are chosen free.
 #   scripts/slurm-localhost.sh start DIR   starts munged, slurmctld and slurmd; waits until the
 #                                          node is idle; prints "export SLURM_CONF=DIR/slurm.conf"
 #   scripts/slurm-localhost.sh stop DIR    stops them (and every job they run)
 # start fails (exit 1) with the daemons' own log lines when the cluster does not come up.
+# Run it as root (as CI does). Run as another user, the daemons and the jobs run as that user
+# (not tested here).
 # Installs the packages when missing (apt-get; .ci/run and the test set-up rely on this).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -85,7 +88,7 @@ SlurmctldHost=$node(127.0.0.1)
 SlurmctldPort=$ctld_port
 SlurmdPort=$slurmd_port
 SlurmUser=$user
-SlurmdUser=root
+SlurmdUser=$user
 AuthType=auth/munge
 CredType=cred/munge
 AuthInfo=socket=$dir/munge.socket
