@@ -106,6 +106,9 @@ std::string UsageText() {
            "                        full render, written as 32-bit float EXR for kiln merge\n"
            "  --emission MODEL      thermal emission model for every hot surface:\n"
            "                        kirchhoff (default), additive, diffuse or none\n"
+           "  --layered-mis W       MIS weights inside coateddiffuse and coatedconductor:\n"
+           "                        kiln (default: f agrees with sampling) or pbrt-v4 (as\n"
+           "                        pbrt-v4 renders them: 1-14 % brighter with rough coats)\n"
            "  --frames A-B          render frames A..B of an animation (time = frame / fps);\n"
            "                        '#'s in -o are replaced by the frame number (####: 0007)\n"
            "  --fps F               frames per second for --frames (default 24)\n"
@@ -206,6 +209,12 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
                     "--emission expects kirchhoff, additive, diffuse or "
                     "none, got '" +
                     *o.emission + "'");
+        } else if (a == "--layered-mis") {
+            const std::string& w = value();
+            if (w != "kiln" && w != "pbrt-v4")
+                throw std::invalid_argument("--layered-mis expects kiln or pbrt-v4, got '" + w +
+                                            "'");
+            o.pbrtv4LayeredMIS = w == "pbrt-v4";
         } else if (a == "--light-sampler") {
             o.lightSampler = value();
             if (*o.lightSampler != "bvh" && *o.lightSampler != "power" &&
@@ -302,6 +311,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
         overrides.stokes = options.stokes;
         overrides.memoryLimitBytes = options.memoryLimit;
         if (options.emission) overrides.emission = ParseEmissionModel(*options.emission);
+        if (options.pbrtv4LayeredMIS) overrides.layeredMIS = LayeredMIS::PbrtV4;
         if (frame) {
             overrides.frame = *frame;
             overrides.timeSeconds = Float(*frame / options.fps);

@@ -16,6 +16,7 @@ struct CommandLineOptions {
     std::optional<Bounds2f> crop;
     std::optional<Bounds2i> pixelBounds;        // --pixelbounds x0 x1 y0 y1 (pbrt-v4)
     std::optional<std::string> emission;        // kirchhoff | additive | diffuse | none
+    bool pbrtv4LayeredMIS = false;              // --layered-mis pbrt-v4 (else kiln)
     std::optional<std::pair<int, int>> frames;  // first and last frame, inclusive
     double fps = 24;
     bool quiet = false;

@@ -110,7 +110,7 @@ ConductorSpec GetConductor(const TextureParameterDictionary& params, const std::
 
 Material Material::Create(const std::string& type, const TextureParameterDictionary& params,
                           const std::map<std::string, Material>& namedMaterials, const FileLoc& loc,
-                          ObjectArena& arena, Diagnostics& diag) {
+                          ObjectArena& arena, Diagnostics& diag, LayeredMIS layeredMIS) {
     // The material's heat (its own property), then its scattering
     ThermalProperties thermal = ReadThermalProperties(params, false, arena);
     ShadingPerturbation perturbation;
@@ -175,7 +175,7 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
         SpectrumTexture albedo =
             params.GetSpectrumTexture("albedo", Constant(0), SpectrumType::Albedo, arena);
         return make(arena.New<CoatedDiffuseMaterial>(reflectance, albedo, u, v, thickness, g, eta,
-                                                     maxDepth, nSamples, remap()));
+                                                     maxDepth, nSamples, remap(), layeredMIS));
     }
     if (type == "coatedconductor") {
         auto [iu, iv] = GetRoughness(params, "interface.", arena);
@@ -195,7 +195,8 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
             params.GetSpectrumTexture("albedo", Constant(0), SpectrumType::Albedo, arena),
             params.GetOneInt("maxdepth", 10),
             params.GetOneInt("nsamples", 1),
-            remap()};
+            remap(),
+            layeredMIS};
         return make(arena.New<CoatedConductorMaterial>(std::move(p)));
     }
     if (type == "polarizer" || type == "retarder") {

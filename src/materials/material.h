@@ -89,9 +89,11 @@ class Material {
     // plate), see bxdfs/polarizing_filter_bxdf.h.
     // Other pbrt-v4 types are replaced by diffuse with a warning at loc; unknown types throw
     // SceneError. namedMaterials resolves the components of "mix".
+    // layeredMIS: the MIS weights of the coated materials' layered walk (LayeredMIS)
     static Material Create(const std::string& type, const TextureParameterDictionary& params,
                            const std::map<std::string, Material>& namedMaterials,
-                           const FileLoc& loc, ObjectArena& arena, Diagnostics& diag);
+                           const FileLoc& loc, ObjectArena& arena, Diagnostics& diag,
+                           LayeredMIS layeredMIS = LayeredMIS::Kiln);
 
   private:
     Kind v;

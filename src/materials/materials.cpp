@@ -109,7 +109,7 @@ CoatedDiffuseBxDF CoatedDiffuseMaterial::GetBxDF(const MaterialEvalContext& ctx,
     SampledSpectrum a = Clamp(albedo.Evaluate(ctx, lambda), Float(0), Float(1));
     Float gg = Clamp(g.Evaluate(ctx), Float(-1), Float(1));
     return CoatedDiffuseBxDF(DielectricBxDF(sampledEta, distrib), DiffuseBxDF(r), thick, a, gg,
-                             maxDepth, nSamples);
+                             maxDepth, nSamples, mis);
 }
 
 // CoatedConductorMaterial Method Definitions
@@ -130,7 +130,7 @@ CoatedConductorBxDF CoatedConductorMaterial::GetBxDF(const MaterialEvalContext& 
     Float gg = Clamp(p.g.Evaluate(ctx), Float(-1), Float(1));
     return CoatedConductorBxDF(DielectricBxDF(ieta, interfaceDistrib),
                                ConductorBxDF(conductorDistrib, ce, ck), thick, a, gg, p.maxDepth,
-                               p.nSamples);
+                               p.nSamples, p.mis);
 }
 
 // MixMaterial Method Definitions

@@ -122,7 +122,7 @@ class CoatedDiffuseMaterial : public MaterialBase {
     CoatedDiffuseMaterial(SpectrumTexture reflectance, SpectrumTexture albedo,
                           FloatTexture uRoughness, FloatTexture vRoughness, FloatTexture thickness,
                           FloatTexture g, Spectrum eta, int maxDepth, int nSamples,
-                          bool remapRoughness)
+                          bool remapRoughness, LayeredMIS mis = LayeredMIS::Kiln)
         : reflectance(reflectance),
           albedo(albedo),
           uRoughness(uRoughness),
@@ -132,7 +132,8 @@ class CoatedDiffuseMaterial : public MaterialBase {
           eta(eta),
           maxDepth(maxDepth),
           nSamples(nSamples),
-          remapRoughness(remapRoughness) {}
+          remapRoughness(remapRoughness),
+          mis(mis) {}
     CoatedDiffuseBxDF GetBxDF(const MaterialEvalContext& ctx, SampledWavelengths& lambda) const;
 
     const SpectrumTexture& Reflectance() const { return reflectance; }
@@ -152,6 +153,7 @@ class CoatedDiffuseMaterial : public MaterialBase {
     Spectrum eta;
     int maxDepth, nSamples;
     bool remapRoughness;
+    LayeredMIS mis;
 };
 
 // CoatedConductorMaterial Definition
@@ -167,6 +169,7 @@ class CoatedConductorMaterial : public MaterialBase {
         SpectrumTexture albedo;
         int maxDepth, nSamples;
         bool remapRoughness;
+        LayeredMIS mis = LayeredMIS::Kiln;
     };
     explicit CoatedConductorMaterial(Params p) : p(std::move(p)) {}
     CoatedConductorBxDF GetBxDF(const MaterialEvalContext& ctx, SampledWavelengths& lambda) const;

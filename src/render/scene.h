@@ -41,6 +41,8 @@ struct SceneOverrides {
     // --pixelbounds; replaces the scene's crop window and pixel bounds)
     std::optional<Bounds2i> pixelBounds;
     std::optional<EmissionModel> emission;  // thermal emission model for every hot surface
+    // kiln --layered-mis: the coated materials' MIS weights (materials/bxdfs/layered_bxdf.h)
+    LayeredMIS layeredMIS = LayeredMIS::Kiln;
     // Animation: the frame being rendered and its time in seconds. Textures that change over
     // time ("cooling" and "keyframes": "float time"; "heatmap" sequences: "float frame") get
     // these unless the scene sets them explicitly.

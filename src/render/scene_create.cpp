@@ -189,7 +189,7 @@ struct SceneMaterials {
 };
 
 SceneMaterials CreateMaterials(SceneDescription& desc, const NamedTextures& textures,
-                               ObjectArena& arena, Diagnostics& diag) {
+                               ObjectArena& arena, Diagnostics& diag, LayeredMIS layeredMIS) {
     std::map<std::string, Material> named;
     std::vector<std::pair<std::string, SceneEntity>*> pending;
     for (auto& nm : desc.namedMaterials) pending.push_back(&nm);
@@ -213,7 +213,8 @@ SceneMaterials CreateMaterials(SceneDescription& desc, const NamedTextures& text
                 }
             }
             TextureParameterDictionary params(&e.parameters, &textures);
-            named.emplace(nm->first, Material::Create(type, params, named, e.loc, arena, diag));
+            named.emplace(nm->first,
+                          Material::Create(type, params, named, e.loc, arena, diag, layeredMIS));
             e.parameters.ReportUnused(diag);
         }
         if (deferred.size() == pending.size()) {
@@ -232,8 +233,8 @@ SceneMaterials CreateMaterials(SceneDescription& desc, const NamedTextures& text
     for (auto& [name, m] : named) materials.named[name] = arena.New<Material>(m);
     for (SceneEntity& e : desc.materials) {
         TextureParameterDictionary params(&e.parameters, &textures);
-        materials.anonymous.push_back(
-            arena.New<Material>(Material::Create(e.name, params, named, e.loc, arena, diag)));
+        materials.anonymous.push_back(arena.New<Material>(
+            Material::Create(e.name, params, named, e.loc, arena, diag, layeredMIS)));
         e.parameters.ReportUnused(diag);
     }
     return materials;
@@ -477,7 +478,8 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const SceneOverrid
                         Diagnostics& diag) {
     CreateCameraAndFilm(scene, desc, overrides, diag);
     NamedTextures& textures = CreateTextures(desc, overrides, scene, diag);
-    SceneMaterials materials = CreateMaterials(desc, textures, scene.arena, diag);
+    SceneMaterials materials =
+        CreateMaterials(desc, textures, scene.arena, diag, overrides.layeredMIS);
     MediumIndices media = CreateMedia(
         desc, textures, [&](const ShapeSceneEntity& s) { return materials.Of(s); },
         overrides.emission, scene.media, scene.arena, diag);

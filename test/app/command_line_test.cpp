@@ -26,6 +26,9 @@ TEST(CommandLineTest, ParsesOptions) {
     EXPECT_EQ(o.frames->second, 7);
     EXPECT_DOUBLE_EQ(o.fps, 12);
     EXPECT_TRUE(o.quiet);
+    EXPECT_FALSE(o.pbrtv4LayeredMIS);
+    EXPECT_TRUE(ParseCommandLine({"s.pbrt", "--layered-mis", "pbrt-v4"}).pbrtv4LayeredMIS);
+    EXPECT_FALSE(ParseCommandLine({"s.pbrt", "--layered-mis", "kiln"}).pbrtv4LayeredMIS);
 }
 
 TEST(CommandLineTest, RejectsBadArguments) {
@@ -33,6 +36,7 @@ TEST(CommandLineTest, RejectsBadArguments) {
                                           {"s.pbrt", "--spp", "ten"},
                                           {"s.pbrt", "--crop", "0.5", "0.2", "0", "1"},
                                           {"s.pbrt", "--emission", "glow"},
+                                          {"s.pbrt", "--layered-mis", "pbrt"},
                                           {"s.pbrt", "--bogus"},
                                           {"a.pbrt", "b.pbrt"},
                                           {"s.pbrt", "-o"},

@@ -7,7 +7,9 @@
 // direction, PDF(wi, -w, !mode), so its weights do not sum to one. With pbrt-v4's weight in
 // kiln's layered_bxdf.cpp, f came out brighter than the walk by 1-2 % (alpha 0.05 coat),
 // 6-8 % (alpha 0.3 over a 0.8 base), 9-12 % (alpha 0.8) and 10-14 % (the coated conductor),
-// and 20 of these 24 cases failed; kiln's weight passes them all.
+// and 20 of these 24 cases failed; kiln's weight passes them all. pbrt-v4's weight stays
+// available (LayeredMIS::PbrtV4, kiln --layered-mis pbrt-v4) for images that match pbrt-v4's:
+// the second test checks that it reproduces that bias, and only where MIS is involved.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -102,6 +104,57 @@ TEST(LayeredConsistency, EvaluationMatchesTheRandomWalkAtAllAngles) {
             // Precise enough to see pbrt-v4's bias (2.5 %, or 0.0025 of a dark base's albedo)
             EXPECT_LT(4 * sigma, std::max(0.025 * s, 0.0025)) << c.name << ", cos " << cosTheta;
         }
+}
+
+TEST(LayeredConsistency, PbrtV4WeightsAreAsBrightAsPbrtV4) {
+    SampledSpectrum one(1.f);
+    auto coat = [](Float alpha) {
+        return DielectricBxDF(1.5f, TrowbridgeReitzDistribution(alpha, alpha));
+    };
+    auto coated = [&](Float alpha, LayeredMIS mis) {
+        return CoatedDiffuseBxDF(coat(alpha), DiffuseBxDF(one * 0.8f), 0.01f, one * 0, 0, 10, 1,
+                                 mis);
+    };
+    auto coatedConductor = [&](LayeredMIS mis) {
+        return CoatedConductorBxDF(
+            coat(0.3f),
+            ConductorBxDF(TrowbridgeReitzDistribution(0.2f, 0.2f), one * 0.2f, one * 3.5f), 0.01f,
+            one * 0, 0, 10, 1, mis);
+    };
+    // f over the hemisphere against the walk's albedo, at cos 0.5: brighter by about what
+    // pbrt-v4 renders brighter (1-14 %, see above; measured here 8.0 %, 11.2 % and 14.6 %, each
+    // with sigma <= 0.6 %), with lower bounds and a 20 % upper bound at 4 sigma
+    struct Case {
+        const char* name;
+        BxDF bxdf;
+        DielectricBxDF coat;
+        double atLeast;  // ratio f / walk, lower bound
+    };
+    const Case cases[] = {
+        {"coateddiffuse, alpha 0.3, base 0.8", coated(0.3f, LayeredMIS::PbrtV4), coat(0.3f), 1.04},
+        {"coateddiffuse, alpha 0.8, base 0.8", coated(0.8f, LayeredMIS::PbrtV4), coat(0.8f), 1.06},
+        {"coatedconductor, alpha 0.3 over 0.2", coatedConductor(LayeredMIS::PbrtV4), coat(0.3f),
+         1.06}};
+    uint64_t seed = 1000;
+    for (const Case& c : cases) {
+        Estimates e = Compare(c.bxdf, c.coat, 0.5f, 100000, seed++);
+        double s = e.sampled.Mean(), f = e.integrated.Mean();
+        double sigma = std::hypot(e.sampled.StandardError(), e.integrated.StandardError());
+        std::printf(
+            "pbrt-v4 weights, %-40s: walk %.4f, f integrated %.4f (ratio %.4f, sigma %.4f)\n",
+            c.name, s, f, f / s, sigma);
+        EXPECT_GT(f - 4 * sigma, c.atLeast * s) << c.name;
+        EXPECT_LT(f + 4 * sigma, 1.2 * s) << c.name;
+    }
+    // A smooth coat: no MIS in the walk, so both weights give the same f, bit for bit
+    CoatedDiffuseBxDF kiln = coated(0, LayeredMIS::Kiln), pbrt = coated(0, LayeredMIS::PbrtV4);
+    RNG rng(7);
+    for (int i = 0; i < 1000; ++i) {
+        Vector3f wo = SampleUniformHemisphere({rng.UniformFloat(), rng.UniformFloat()});
+        Vector3f wi = SampleUniformHemisphere({rng.UniformFloat(), rng.UniformFloat()});
+        EXPECT_EQ(kiln.f(wo, wi, TransportMode::Radiance)[0],
+                  pbrt.f(wo, wi, TransportMode::Radiance)[0]);
+    }
 }
 
 }  // namespace

@@ -59,6 +59,13 @@ SampledSpectrum LayeredBxDF<TopBxDF, BottomBxDF, twoSided>::f(Vector3f wo, Vecto
         nonExitInterface = &bottom;
     }
     Float exitZ = exitBottom ? 0 : thickness;
+    // The virtual-light strategy's density for a direction wIn leaving through the exit
+    // interface towards wi (the MIS weight of that direction; see LayeredMIS)
+    auto exitPDF = [&](Vector3f wIn) {
+        return mis == LayeredMIS::Kiln
+                   ? exitInterface.PDF(wi, wIn, Flip(mode), BxDFReflTransFlags::Transmission)
+                   : exitInterface.PDF(wIn, wi, mode, BxDFReflTransFlags::Transmission);
+    };
 
     // Reflection at the entrance interface is evaluated directly.
     if (SameHemisphere(wo, wi)) f = Float(nSamples) * enterInterface.f(wo, wi, mode);
@@ -118,9 +125,7 @@ SampledSpectrum LayeredBxDF<TopBxDF, BottomBxDF, twoSided>::f(Vector3f wo, Vecto
                         !IsSpecular(exitInterface.Flags())) {
                         SampledSpectrum fExit = exitInterface.f(-w, wi, mode);
                         if (fExit) {
-                            Float exitPDF = exitInterface.PDF(wi, -w, Flip(mode),
-                                                              BxDFReflTransFlags::Transmission);
-                            Float wt2 = PowerHeuristic(1, ps->pdf, 1, exitPDF);
+                            Float wt2 = PowerHeuristic(1, ps->pdf, 1, exitPDF(-w));
                             f += beta * Tr(zp - exitZ, ps->wi) * fExit * wt2;
                         }
                     }
@@ -160,9 +165,7 @@ SampledSpectrum LayeredBxDF<TopBxDF, BottomBxDF, twoSided>::f(Vector3f wo, Vecto
                     if (fExit) {
                         Float wt = 1;
                         if (!IsSpecular(nonExitInterface.Flags())) {
-                            Float exitPDF = exitInterface.PDF(wi, -w, Flip(mode),
-                                                              BxDFReflTransFlags::Transmission);
-                            wt = PowerHeuristic(1, bs->pdf, 1, exitPDF);
+                            wt = PowerHeuristic(1, bs->pdf, 1, exitPDF(-w));
                         }
                         f += beta * Tr(thickness, bs->wi) * fExit * wt;
                     }
