@@ -14,8 +14,9 @@ namespace kiln {
 
 namespace {
 
-// libpng reports errors through longjmp: this function keeps no C++ object alive across its
-// setjmp (everything it needs is prepared by the caller) and returns the error message.
+// Writing. libpng reports errors through longjmp, so RunPngJob keeps no C++ object alive
+// across its setjmp: everything it needs is prepared by the caller in this plain struct, and
+// the error message comes back in it.
 struct PngJob {
     FILE* file;
     int width, height, channels;
