@@ -30,7 +30,10 @@ std::string Quote(const std::string& s) {
 
 std::string Join(const std::vector<std::string>& words) {
     std::string s;
-    for (const std::string& w : words) s += (s.empty() ? "" : " ") + Quote(w);
+    for (const std::string& w : words) {
+        if (!s.empty()) s += ' ';
+        s += Quote(w);
+    }
     return s;
 }
 
