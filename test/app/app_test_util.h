@@ -1,6 +1,8 @@
 // What the kiln command's tests share.
 #pragma once
 
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,14 @@ inline std::vector<float> Pixels(const std::string& file) {
         for (int x = 0; x < im.Resolution().x; ++x)
             for (int c = 0; c < im.NChannels(); ++c) v.push_back(im.GetChannel({x, y}, c));
     return v;
+}
+
+// The whole content of a file ("" if it cannot be read)
+inline std::string ReadAll(const std::string& file) {
+    std::ifstream in(file);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
 }
 
 }  // namespace kiln::testing

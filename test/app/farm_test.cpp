@@ -41,13 +41,6 @@ TEST(Farm, TilesCoverTheFilmOnce) {
     EXPECT_EQ(two[0].pMax, Point2i(960, 1080));
 }
 
-std::string ReadAll(const std::string& file) {
-    std::ifstream in(file);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 TEST(Farm, ScriptsRunAsSlurmWouldGiveTheSingleProcessRender) {
     fs::path dir = fs::path(::testing::TempDir()) / ("kiln_farm_" + std::to_string(getpid()));
     fs::remove_all(dir);
@@ -74,15 +67,15 @@ TEST(Farm, ScriptsRunAsSlurmWouldGiveTheSingleProcessRender) {
         env + "'" + kiln + "' farm '" + scene + "' --tiles 4 --frames 0-1 --spp 8 -o '" + out + "'";
     const std::string stdoutFile = (dir / "stdout.txt").string();
     ASSERT_EQ(std::system((farm + " -- --partition=test > '" + stdoutFile + "'").c_str()), 0);
-    EXPECT_NE(ReadAll(stdoutFile).find("render job 100 (8 tasks), merge job 101"),
+    EXPECT_NE(testing::ReadAll(stdoutFile).find("render job 100 (8 tasks), merge job 101"),
               std::string::npos)
-        << ReadAll(stdoutFile);
-    std::string calls = ReadAll(log);
+        << testing::ReadAll(stdoutFile);
+    std::string calls = testing::ReadAll(log);
     EXPECT_NE(calls.find("--parsable --array=0-7 --partition=test"), std::string::npos) << calls;
     EXPECT_NE(calls.find("--dependency=afterok:100 --partition=test"), std::string::npos) << calls;
     // Nothing rendered yet: --status lists the 8 parts
     EXPECT_NE(std::system((farm + " --status > '" + stdoutFile + "'").c_str()), 0);
-    EXPECT_NE(ReadAll(stdoutFile).find("8 parts missing"), std::string::npos);
+    EXPECT_NE(testing::ReadAll(stdoutFile).find("8 parts missing"), std::string::npos);
     // What Slurm would run: every array index, then the merge
     const std::string farmDir = (dir / "out.exr.farm").string();
     for (int i = 0; i < 8; ++i)

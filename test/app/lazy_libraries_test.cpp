@@ -11,6 +11,8 @@
 #include <fstream>
 #include <string>
 
+#include "app_test_util.h"
+
 namespace kiln {
 namespace {
 
@@ -23,8 +25,7 @@ std::string LoaderLog(const std::string& args, int* status) {
     const std::string command = "LD_DEBUG=files '" + std::string(KILN_BINARY_DIR) + "/kiln' " +
                                 args + " --quiet 2> '" + log + "'";
     *status = std::system(command.c_str());
-    std::ifstream in(log);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string text = testing::ReadAll(log);
     fs::remove(log);
     return text;
 }

@@ -37,19 +37,13 @@ Result Shell(const std::string& command) {
     return {pclose(p), out};
 }
 
-std::string ReadAll(const fs::path& file) {
-    std::ifstream in(file);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 // Every log the render and merge jobs wrote, for failure messages
 std::string JobLogs(const fs::path& farmDir) {
     std::string all;
     if (fs::is_directory(farmDir / "logs"))
         for (const fs::directory_entry& e : fs::directory_iterator(farmDir / "logs"))
-            all += "--- " + e.path().filename().string() + "\n" + ReadAll(e.path());
+            all +=
+                "--- " + e.path().filename().string() + "\n" + testing::ReadAll(e.path().string());
     return all;
 }
 

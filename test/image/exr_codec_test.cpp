@@ -73,14 +73,8 @@ TEST(ExrCodec, ChannelsAndPixelsAsOpenImageIOReadsThem) {
 
 TEST(ExrCodec, OpenImageIOReadsKilnsMetadata) {
     const std::string file = testing::TempFile("exr_meta.exr");
-    ImageMetadata md;
-    md.renderTimeSeconds = 12.5f;
-    md.samplesPerPixel = 64;
-    md.fullResolution = Point2i(10, 8);
-    md.pixelBounds = Bounds2i{{2, 4}, {7, 7}};
-    md.colorSpace = &RGBColorSpace::sRGB();
+    ImageMetadata md = testing::TileMetadata();
     md.cameraFromWorld = std::array<float, 16>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 0, 0, 0, 1};
-    md.strings["kiln:scene"] = "cornell.pbrt";
     Labelled({"R", "G", "B"}, PixelFormat::Float).Write(file, md);
 
     auto in = OIIO::ImageInput::open(file);

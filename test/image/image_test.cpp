@@ -7,6 +7,7 @@
 #include <fstream>
 #include <random>
 
+#include "image_test_util.h"
 #include "spectral/color.h"
 
 namespace kiln {
@@ -112,13 +113,7 @@ TEST(Image, ExrFloatRoundTripWithMetadata) {
     TempDir dir;
     Image im = Ramp(PixelFormat::Float, {5, 3}, {"R", "G", "B", "albedo.R", "Z"});
     im.SetChannel({0, 0}, 0, 1e6f);  // beyond half range: float keeps it
-    ImageMetadata md;
-    md.renderTimeSeconds = 12.5f;
-    md.samplesPerPixel = 64;
-    md.fullResolution = Point2i(10, 8);
-    md.pixelBounds = Bounds2i{{2, 4}, {7, 7}};
-    md.colorSpace = &RGBColorSpace::sRGB();
-    md.strings["kiln:scene"] = "cornell.pbrt";
+    ImageMetadata md = testing::TileMetadata();
     std::string f = dir.File("a.exr");
     im.Write(f, md);
     ImageMetadata rd;
