@@ -14,20 +14,31 @@ function(kiln_add_module name dir)
     endif()
 endfunction()
 
-# kiln_add_tests(NAME DIR DEPS...): one GoogleTest executable from DIR/*_test.cpp, registered
-# with ctest. KILN_SOURCE_DIR and KILN_SHARED_DIR (../shared beside the checkout) are defined.
+# kiln_add_tests(NAME DIR DEPS... [STATISTICAL FILTER]): one GoogleTest executable from
+# DIR/*_test.cpp, registered with ctest. KILN_SOURCE_DIR and KILN_SHARED_DIR (../shared beside
+# the checkout) are defined. STATISTICAL: a GoogleTest filter ("Suite.*:Other/*") of the tests
+# that are Monte Carlo renders taking seconds each; they are labelled `statistical`, which the
+# sanitizer stage leaves out (scripts/sanitize.sh: ctest -LE statistical).
 function(kiln_add_tests name dir)
+    cmake_parse_arguments(PARSE_ARGV 2 arg "" "STATISTICAL" "")
     file(GLOB srcs CONFIGURE_DEPENDS "${dir}/*_test.cpp")
     if(NOT srcs)
         return()
     endif()
     add_executable(${name} ${srcs})
-    target_link_libraries(${name} PRIVATE ${ARGN} GTest::gtest GTest::gtest_main)
+    target_link_libraries(${name} PRIVATE ${arg_UNPARSED_ARGUMENTS} GTest::gtest GTest::gtest_main)
     target_compile_definitions(${name} PRIVATE
         KILN_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
         KILN_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared"
         KILN_BINARY_DIR="${PROJECT_BINARY_DIR}")
-    gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600)
+    if(arg_STATISTICAL)
+        gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 TEST_FILTER "${arg_STATISTICAL}"
+                             PROPERTIES TIMEOUT 600 LABELS statistical)
+        gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 TEST_FILTER "-${arg_STATISTICAL}"
+                             PROPERTIES TIMEOUT 600)
+    else()
+        gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600)
+    endif()
 endfunction()
 
 # kiln_module_definitions(NAME DEFS...): private compile definitions of a module (public while

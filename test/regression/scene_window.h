@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -69,42 +70,43 @@ inline std::vector<std::string> OneScenePerFolder() {
     return files;
 }
 
-// Scenes rendered two ways and compared within the Monte Carlo noise: render(file, window,
+// The name of a scene file for a parameterised test: its path under scenes/ with every
+// character that is not a letter or digit replaced by '_' ("wilkie2011_fig5_pbrt").
+inline std::string SceneTestName(const ::testing::TestParamInfo<std::string>& info) {
+    std::string rel =
+        std::filesystem::relative(info.param, std::string(KILN_SOURCE_DIR) + "/scenes").string();
+    for (char& c : rel)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    return rel;
+}
+
+// A scene rendered two ways and compared within the Monte Carlo noise: render(file, window,
 // alternative, spp, seed) renders a window of a scene the plain way (alternative false) or the
 // way under test, or returns nothing to skip the scene. The plain render at referenceSpp is the
 // reference for `seeds` renders of the alternative at spp samples per pixel with independent seeds
 // (noise_comparison.h), over the centre of the image (or below it, where the centre is black).
 // Accepted within `sigmas` (noise_comparison.h); the comparison must also see a 10 % error.
-// Returns how many scenes were compared.
+// Returns whether the scene was compared (false: render skipped it).
 using WindowRenderer = std::function<std::optional<Image>(
     const std::string& file, const Bounds2f& window, bool alternative, int spp, int seed)>;
-inline int CompareScenes(const std::vector<std::string>& files, const WindowRenderer& render,
-                         int kSpp, int kSeeds, int kReferenceSpp, double sigmas = 4) {
-    int compared = 0;
-    for (const std::string& file : files) {
-        SCOPED_TRACE(file);
-        std::string name = std::filesystem::path(file).filename().string();
-        Bounds2f window{{0.45f, 0.45f}, {0.55f, 0.55f}};
-        std::optional<Image> reference = render(file, window, false, kReferenceSpp, 1000);
-        if (reference && IsBlack(*reference)) {
-            window = Bounds2f{{0.45f, 0.7f}, {0.55f, 0.8f}};
-            reference = render(file, window, false, kReferenceSpp, 1000);
-        }
-        if (!reference) {
-            std::printf("%s: skipped\n", name.c_str());
-            continue;
-        }
-        std::vector<Image> renders;
-        for (int k = 0; k < kSeeds; ++k)
-            renders.push_back(*render(file, window, true, kSpp, k + 1));
-        NoiseComparison c = CompareWithNoise(renders, *reference, kSpp, kReferenceSpp, sigmas);
-        EXPECT_TRUE(c.Pass()) << c;
-        EXPECT_FALSE(
-            CompareWithNoise(renders, *reference, kSpp, kReferenceSpp, sigmas, 1.1).Pass());
-        std::printf("%s: %s\n", name.c_str(), ::testing::PrintToString(c).c_str());
-        ++compared;
+inline bool CompareScene(const std::string& file, const WindowRenderer& render, int kSpp,
+                         int kSeeds, int kReferenceSpp, double sigmas = 4) {
+    SCOPED_TRACE(file);
+    std::string name = std::filesystem::path(file).filename().string();
+    Bounds2f window{{0.45f, 0.45f}, {0.55f, 0.55f}};
+    std::optional<Image> reference = render(file, window, false, kReferenceSpp, 1000);
+    if (reference && IsBlack(*reference)) {
+        window = Bounds2f{{0.45f, 0.7f}, {0.55f, 0.8f}};
+        reference = render(file, window, false, kReferenceSpp, 1000);
     }
-    return compared;
+    if (!reference) return false;
+    std::vector<Image> renders;
+    for (int k = 0; k < kSeeds; ++k) renders.push_back(*render(file, window, true, kSpp, k + 1));
+    NoiseComparison c = CompareWithNoise(renders, *reference, kSpp, kReferenceSpp, sigmas);
+    EXPECT_TRUE(c.Pass()) << c;
+    EXPECT_FALSE(CompareWithNoise(renders, *reference, kSpp, kReferenceSpp, sigmas, 1.1).Pass());
+    std::printf("%s: %s\n", name.c_str(), ::testing::PrintToString(c).c_str());
+    return true;
 }
 
 }  // namespace kiln::testing
