@@ -19,16 +19,16 @@
 #include <string>
 #include <vector>
 
-#include "core/base/rng.h"
-#include "core/base/sampling.h"
+#include "base/rng.h"
+#include "base/sampling.h"
 #include "core/geometry/accelerator.h"
 #include "core/parser/parser.h"
-#include "render/renderer.h"
-#include "render/scene.h"
-#include "render/scene_builder.h"
 #include "materials/bxdfs/bsdf.h"
 #include "materials/bxdfs/fresnel.h"
 #include "materials/bxdfs/microfacet.h"
+#include "render/renderer.h"
+#include "render/scene.h"
+#include "render/scene_builder.h"
 #include "spectral/color.h"
 #include "spectral/named_spectra.h"
 #include "spectral/planck.h"

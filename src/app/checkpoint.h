@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

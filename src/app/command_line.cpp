@@ -1,6 +1,6 @@
 #include "app/command_line.h"
 
-#include "core/base/memory_budget.h"
+#include "base/memory_budget.h"
 
 #include <unistd.h>
 

@@ -34,7 +34,7 @@
 #include <string>
 #include <vector>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 #include "core/image/image.h"
 
 namespace kiln {

@@ -6,8 +6,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "core/base/file_reading.h"
-#include "core/base/rng.h"
+#include "base/file_reading.h"
+#include "base/rng.h"
 
 namespace kiln {
 

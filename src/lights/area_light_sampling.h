@@ -6,7 +6,7 @@
 #include <cmath>
 #include <optional>
 
-#include "core/base/rng.h"
+#include "base/rng.h"
 #include "core/geometry/alpha_mask.h"
 #include "core/geometry/shape.h"
 #include "lights/light_sample.h"
@@ -30,7 +30,7 @@ std::optional<LightLiSample> SampleAreaLi(const Shape& shape, const LightSampleC
 // Whether a light's sampled point p (leaving towards w) is cut out of its shape (pbrt-v4's
 // AreaLight::AlphaMasked, the uniform number a hash of p).
 inline bool IsCutOut(const Shape& shape, const AlphaMask& alpha, Point3f p, Vector3f w) {
-    return alpha.Masked(TextureEvalContext(shape.InteractionAt(p, 0, w)), HashToUniform(Hash(p)));
+    return alpha.Masked(shape.InteractionAt(p, 0, w), HashToUniform(Hash(p)));
 }
 
 // Solid-angle density of SampleAreaLi choosing direction wi (0 where it is not finite).

@@ -5,7 +5,7 @@
 
 #include <optional>
 
-#include "core/base/transform.h"
+#include "base/transform.h"
 #include "core/image/image.h"
 #include "lights/light_sample.h"
 #include "materials/bxdfs/bsdf.h"

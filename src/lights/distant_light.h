@@ -5,7 +5,7 @@
 
 #include <optional>
 
-#include "core/base/transform.h"
+#include "base/transform.h"
 #include "lights/light_sample.h"
 #include "spectral/spectrum.h"
 

@@ -18,8 +18,8 @@
 #include <optional>
 #include <string>
 
-#include "core/base/sampling.h"
-#include "core/base/transform.h"
+#include "base/sampling.h"
+#include "base/transform.h"
 #include "core/image/image.h"
 #include "lights/light_sample.h"
 #include "spectral/spectrum.h"

@@ -17,8 +17,8 @@
 #include <type_traits>
 #include <variant>
 
-#include "core/base/object_arena.h"
-#include "core/base/transform.h"
+#include "base/object_arena.h"
+#include "base/transform.h"
 #include "lights/diffuse_area_light.h"
 #include "lights/distant_light.h"
 #include "lights/image_infinite_light.h"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/base/transform.h"
+#include "base/transform.h"
 
 namespace kiln {
 

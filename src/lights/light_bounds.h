@@ -2,7 +2,7 @@
 // (pbrt-v4's DirectionCone and LightBounds, Sec. 12.6.3), for the BVH light sampler.
 #pragma once
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

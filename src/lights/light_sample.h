@@ -7,8 +7,8 @@
 // value that cancels against the delta distribution).
 #pragma once
 
-#include "core/base/interaction.h"
-#include "core/base/vecmath.h"
+#include "base/interaction.h"
+#include "base/vecmath.h"
 #include "spectral/sampled_spectrum.h"
 
 namespace kiln {

@@ -7,7 +7,7 @@
 #include <variant>
 #include <vector>
 
-#include "core/base/sampling.h"
+#include "base/sampling.h"
 #include "lights/bvh_light_sampler.h"
 #include "lights/light.h"
 

@@ -11,7 +11,7 @@
 // unit (u, v) area is 2 pi^2 sin(theta).
 #pragma once
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

@@ -1,6 +1,6 @@
 #include "lights/thermal_area_light.h"
 
-#include "core/base/rng.h"
+#include "base/rng.h"
 #include "core/geometry/alpha_mask.h"
 
 #include <cmath>
@@ -175,7 +175,7 @@ Radiance ThermalAreaLight::EmissionAt(Point3f p, Vector3f w, const SampledWavele
     // all of its own)
     SurfaceInteraction si = InteractionAt(p, 0, w);
     // Cut out of the shape: nothing there to emit (rays never hit such points)
-    if (alpha && alpha->Masked(TextureEvalContext(si), HashToUniform(Hash(p)))) return {};
+    if (alpha && alpha->Masked(si, HashToUniform(Hash(p)))) return {};
     SampledWavelengths l = lambda;
     BSDF bsdf = shader->GetBSDF(si, l);
     if (interaction) *interaction = si;

@@ -14,9 +14,9 @@
 
 #include <optional>
 
-#include "core/base/sampling.h"
+#include "base/sampling.h"
 #include "lights/light_sample.h"
-#include "lights/thermal_emission.h"
+#include "thermal/thermal_emission.h"
 
 namespace kiln {
 

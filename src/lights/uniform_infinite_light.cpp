@@ -1,6 +1,6 @@
 #include "lights/uniform_infinite_light.h"
 
-#include "core/base/sampling.h"
+#include "base/sampling.h"
 
 namespace kiln {
 

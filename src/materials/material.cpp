@@ -30,10 +30,6 @@ BSDF Material::GetBSDF(const MaterialEvalContext& ctx, SampledWavelengths& lambd
         m->Variant());
 }
 
-const ThermalProperties& Material::Thermal() const {
-    return std::visit([](const auto* m) -> const ThermalProperties& { return m->thermal; }, v);
-}
-
 const ShadingPerturbation& Material::Perturbation() const {
     return std::visit([](const auto* m) -> const ShadingPerturbation& { return m->perturbation; },
                       v);
@@ -111,11 +107,8 @@ ConductorSpec GetConductor(const TextureParameterDictionary& params, const std::
 Material Material::Create(const std::string& type, const TextureParameterDictionary& params,
                           const std::map<std::string, Material>& namedMaterials, const FileLoc& loc,
                           ObjectArena& arena, Diagnostics& diag, LayeredMIS layeredMIS) {
-    // The material's heat (its own property), then its scattering
-    ThermalProperties thermal = ReadThermalProperties(params, false, arena);
     ShadingPerturbation perturbation;
     auto make = [&](auto* m) {
-        m->thermal = thermal;
         m->perturbation = perturbation;
         Material material(m);
         m->usesFootprint = ComputeUsesFootprint(material);

@@ -7,7 +7,7 @@
 #include <string>
 #include <variant>
 
-#include "core/base/object_arena.h"
+#include "base/object_arena.h"
 #include "core/parser/diagnostics.h"
 #include "materials/bxdfs/bsdf.h"
 #include "spectral/sampled_spectrum.h"
@@ -27,7 +27,6 @@ class InterfaceMaterial;
 class PolarizingFilterMaterial;
 class HairMaterial;
 class TextureParameterDictionary;
-struct ThermalProperties;
 struct ShadingPerturbation;
 
 // Material Definition
@@ -53,8 +52,6 @@ class Material {
     // material for non-mix materials.
     const Material* ChooseMaterial(const MaterialEvalContext& ctx) const;
 
-    // The material's own temperature and emission model (thermal_properties.h).
-    const ThermalProperties& Thermal() const;
     // Whether the BSDF depends on the screen-space footprint (a texture filters with it):
     // shading computes footprints only then (decided at creation).
     bool UsesFootprint() const;
@@ -82,7 +79,6 @@ class Material {
     const Kind& Variant() const { return v; }
 
     // Creates a material of pbrt-v4 type `type` ("diffuse", "conductor", "dielectric",
-    // with kiln's "temperature" and "emission" (thermal_properties.h) read into it
     // "thindielectric", "coateddiffuse", "coatedconductor", "mix", "interface"; "" and "none"
     // give interface), and kiln's polarising filters "polarizer" ("float angle", degrees) and
     // "retarder" ("float angle", "float retardance" in degrees, default 90: a quarter-wave

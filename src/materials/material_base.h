@@ -2,13 +2,12 @@
 #pragma once
 
 #include "materials/shading_perturbation.h"
-#include "materials/thermal_properties.h"
 
 namespace kiln {
 
-// Its heat (thermal_properties.h), and what its textures need, decided at creation.
+// What its textures need, decided at creation, and its bump or normal map. (A material's heat,
+// kiln's "temperature" and "emission", is the thermal module's: thermal/thermal_properties.h.)
 struct MaterialBase {
-    ThermalProperties thermal;
     bool usesFootprint = false;        // a texture filters or antialiases with the footprint
     ShadingPerturbation perturbation;  // bump or normal map (none for mix and interface)
 };

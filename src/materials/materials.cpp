@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-#include "core/base/rng.h"
+#include "base/rng.h"
 #include "textures/basic_textures.h"
 
 namespace kiln {

@@ -7,8 +7,8 @@
 
 #include <optional>
 
-#include "core/base/interaction.h"
-#include "core/base/object_arena.h"
+#include "base/interaction.h"
+#include "base/object_arena.h"
 #include "textures/texture.h"
 
 namespace kiln {

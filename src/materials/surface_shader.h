@@ -4,7 +4,7 @@
 // a point emits the same radiance however a path finds it.
 #pragma once
 
-#include "core/base/interaction.h"
+#include "base/interaction.h"
 #include "materials/bxdfs/bsdf.h"
 #include "spectral/sampled_spectrum.h"
 

@@ -3,8 +3,8 @@
 // One majorant, sigma_t, over the whole box (the density is at most 1).
 #pragma once
 
-#include "core/base/object_arena.h"
-#include "core/base/transform.h"
+#include "base/object_arena.h"
+#include "base/transform.h"
 #include "core/parser/diagnostics.h"
 #include "media/majorant_grid.h"
 #include "media/medium_emission.h"

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "materials/thermal_properties.h"
 #include "media/vdb_file.h"
+#include "thermal/thermal_properties.h"
 
 namespace kiln {
 

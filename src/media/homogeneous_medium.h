@@ -1,7 +1,7 @@
 // "homogeneous" (pbrt-v4's HomogeneousMedium): the same coefficients everywhere.
 #pragma once
 
-#include "core/base/object_arena.h"
+#include "base/object_arena.h"
 #include "core/parser/diagnostics.h"
 #include "media/majorant_grid.h"
 #include "media/medium_emission.h"

@@ -7,8 +7,8 @@
 #include <optional>
 #include <vector>
 
-#include "core/base/transform.h"
-#include "core/base/vecmath.h"
+#include "base/transform.h"
+#include "base/vecmath.h"
 #include "spectral/sampled_spectrum.h"
 
 namespace kiln {

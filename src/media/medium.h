@@ -11,9 +11,9 @@
 #include <string>
 #include <variant>
 
-#include "core/base/rng.h"
-#include "core/base/sampling.h"
-#include "core/base/transform.h"
+#include "base/rng.h"
+#include "base/sampling.h"
+#include "base/transform.h"
 #include "core/parser/diagnostics.h"
 #include "media/cloud_medium.h"
 #include "media/grid_medium.h"

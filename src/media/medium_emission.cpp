@@ -2,6 +2,7 @@
 
 #include "spectral/planck.h"
 #include "textures/texture_eval_context.h"
+#include "thermal/volume_emission.h"
 
 namespace kiln {
 
@@ -75,26 +76,9 @@ void MediumEmission::Apply(MediumProperties& mp, Point3f pRender, Point3f pUnit,
         T = (temperatureGrid.Lookup(pUnit) - temperatureOffset) * temperatureScale;
     }
     if (!(T > 0)) return;  // 0 K, and NaN from a hostile texture, emit nothing
-    SampledSpectrum B = planck_radiance(lambda, T);
-    if (eta) {
-        SampledSpectrum n = eta->Sample(lambda);
-        B *= n * n;
-    }
-    switch (model) {
-        case EmissionModel::Kirchhoff:
-            mp.emission = mp.sigma_a * B;
-            break;
-        case EmissionModel::Additive:
-            mp.emission = (mp.sigma_a + mp.sigma_s) * B;
-            break;
-        case EmissionModel::Diffuse:
-            mp.sigma_a += mp.sigma_s;
-            mp.sigma_s = SampledSpectrum(0.f);
-            mp.emission = mp.sigma_a * B;
-            break;
-        case EmissionModel::None:
-            break;
-    }
+    std::optional<SampledSpectrum> n;
+    if (eta) n = eta->Sample(lambda);
+    mp.emission = VolumeEmission(model, T, n ? &*n : nullptr, mp.sigma_a, mp.sigma_s, lambda);
 }
 
 }  // namespace kiln

@@ -6,23 +6,18 @@
 //
 // kiln's thermal emission (Kirchhoff inside matter): a medium at temperature T (kelvin: "float
 // temperature", any float texture evaluated at render-space points, or a temperature grid with
-// "string emission" given) inside a body of refractive index n emits, per unit length,
-//   "kirchhoff" (default)  sigma_a n^2 B(lambda, T)          (absolute units, planck.h)
-//   "additive"             (sigma_a + sigma_s) n^2 B(lambda, T): B added on all extinction
-//   "diffuse"              a blackbody medium: scattering becomes absorption, sigma_t n^2 B
-//   "none"                 nothing.
-// n^2 B is the equilibrium radiance inside matter of index n: with it a hot body behind a
-// dielectric boundary radiates (1 - R) B through it and a closed cavity stays at B(T). n is
-// that of the dielectric bounding the medium (set by the scene), 1 otherwise.
+// "string emission" given) emits per unit length as the thermal module's VolumeEmission says
+// (thermal/volume_emission.h: sigma_a n^2 B(lambda, T) by default), n the refractive index of
+// the dielectric bounding the medium (set by the scene), 1 otherwise.
 #pragma once
 
 #include <optional>
 
-#include "materials/emission_model.h"
 #include "media/medium_properties.h"
 #include "media/sampled_grid.h"
 #include "spectral/spectrum.h"
 #include "textures/texture.h"
+#include "thermal/emission_model.h"
 
 namespace kiln {
 

@@ -4,9 +4,9 @@
 #include <string_view>
 
 #include "core/parser/diagnostics.h"
-#include "materials/thermal_properties.h"
 #include "spectral/cie.h"
 #include "spectral/color.h"
+#include "thermal/thermal_properties.h"
 
 namespace kiln {
 

@@ -6,11 +6,11 @@
 #include <optional>
 #include <string>
 
-#include "core/base/object_arena.h"
-#include "materials/emission_model.h"
+#include "base/object_arena.h"
 #include "media/medium_emission.h"
 #include "spectral/spectrum.h"
 #include "textures/texture_parameter_dictionary.h"
+#include "thermal/emission_model.h"
 
 namespace kiln {
 

@@ -2,8 +2,8 @@
 // box [p0, p1] of the medium's space. Majorants per voxel of a 16^3 grid.
 #pragma once
 
-#include "core/base/object_arena.h"
-#include "core/base/transform.h"
+#include "base/object_arena.h"
+#include "base/transform.h"
 #include "core/parser/diagnostics.h"
 #include "media/majorant_grid.h"
 #include "media/medium_emission.h"

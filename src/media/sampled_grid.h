@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

@@ -3,8 +3,8 @@
 #include <memory>
 #include <stdexcept>
 
-#include "core/base/memory_budget.h"
-#include "core/base/plugin.h"
+#include "base/memory_budget.h"
+#include "base/plugin.h"
 #include "core/parser/diagnostics.h"
 #include "media/vdb_reader.h"
 

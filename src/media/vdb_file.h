@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "core/base/transform.h"
+#include "base/transform.h"
 #include "core/parser/file_loc.h"
 #include "media/sampled_grid.h"
 

@@ -3,8 +3,8 @@
 #include <array>
 #include <cstdio>
 
-#include "lights/thermal_emission.h"
 #include "materials/shading_perturbation.h"
+#include "thermal/thermal_emission.h"
 
 namespace kiln {
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/base/object_arena.h"
+#include "base/object_arena.h"
 #include "core/camera/camera.h"
 #include "core/camera/sampler.h"
 #include "core/film/film.h"
@@ -21,14 +21,14 @@
 #include "core/parser/diagnostics.h"
 #include "lights/light.h"
 #include "lights/light_sampler.h"
-#include "lights/thermal_emission.h"
 #include "materials/bxdfs/bsdf.h"
-#include "materials/emission_model.h"
-#include "materials/emissivity_tables.h"
 #include "materials/material.h"
 #include "materials/surface_shader.h"
 #include "media/medium.h"
 #include "render/scene_description.h"
+#include "thermal/emission_model.h"
+#include "thermal/emissivity_tables.h"
+#include "thermal/thermal_emission.h"
 
 namespace kiln {
 
@@ -57,7 +57,7 @@ struct SceneOverrides {
     bool genericVolumes = false;
     // kiln --stokes: the film records Stokes layers (Film "bool stokes" true).
     bool stokes = false;
-    // kiln --memory-limit: what the scene's objects may take (core/base/memory_budget.h);
+    // kiln --memory-limit: what the scene's objects may take (base/memory_budget.h);
     // default the machine's memory.
     std::optional<double> memoryLimitBytes;
 };

@@ -171,25 +171,53 @@ NamedTextures& CreateTextures(SceneDescription& desc, const SceneOverrides& over
 }
 
 // Materials: named (in dependency order: mix materials may refer to named materials defined
-// later in the file) and anonymous
+// later in the file) and anonymous, each with its heat (kiln's "temperature" and "emission",
+// thermal/thermal_properties.h; a mix without its own takes its first hot component's)
 struct SceneMaterials {
     std::map<std::string, const Material*> named;
     std::vector<const Material*> anonymous;
+    std::map<std::string, ThermalProperties> namedHeat;
+    std::vector<ThermalProperties> anonymousHeat;
 
     const Material* Of(const ShapeSceneEntity& s) const {
-        if (!s.materialName.empty()) {
-            auto it = named.find(s.materialName);
-            if (it == named.end())
-                throw SceneError(s.loc, "named material '" + s.materialName + "' not defined",
-                                 s.materialName);
-            return it->second;
-        }
+        if (!s.materialName.empty()) return named.at(CheckedName(s));
         return anonymous.at(size_t(s.materialIndex));
+    }
+    const ThermalProperties& HeatOf(const ShapeSceneEntity& s) const {
+        if (!s.materialName.empty()) return namedHeat.at(CheckedName(s));
+        return anonymousHeat.at(size_t(s.materialIndex));
+    }
+
+  private:
+    const std::string& CheckedName(const ShapeSceneEntity& s) const {
+        if (!named.count(s.materialName))
+            throw SceneError(s.loc, "named material '" + s.materialName + "' not defined",
+                             s.materialName);
+        return s.materialName;
     }
 };
 
+// A material's heat: its own, or for a mix without one its first hot component's (with the
+// mix's own emission model, if it has one)
+ThermalProperties ReadMaterialHeat(const std::string& type,
+                                   const TextureParameterDictionary& params,
+                                   const std::map<std::string, ThermalProperties>& namedHeat,
+                                   ObjectArena& arena) {
+    ThermalProperties own = ReadThermalProperties(params, false, arena);
+    if (own.temperature || type != "mix") return own;
+    for (const std::string& name : params.GetStringArray("materials")) {
+        auto it = namedHeat.find(name);
+        if (it == namedHeat.end() || !it->second.temperature) continue;
+        ThermalProperties c = it->second;
+        if (own.model) c.model = own.model;
+        return c;
+    }
+    return own;
+}
+
 SceneMaterials CreateMaterials(SceneDescription& desc, const NamedTextures& textures,
                                ObjectArena& arena, Diagnostics& diag, LayeredMIS layeredMIS) {
+    SceneMaterials materials;
     std::map<std::string, Material> named;
     std::vector<std::pair<std::string, SceneEntity>*> pending;
     for (auto& nm : desc.namedMaterials) pending.push_back(&nm);
@@ -213,6 +241,8 @@ SceneMaterials CreateMaterials(SceneDescription& desc, const NamedTextures& text
                 }
             }
             TextureParameterDictionary params(&e.parameters, &textures);
+            materials.namedHeat[nm->first] =
+                ReadMaterialHeat(type, params, materials.namedHeat, arena);
             named.emplace(nm->first,
                           Material::Create(type, params, named, e.loc, arena, diag, layeredMIS));
             e.parameters.ReportUnused(diag);
@@ -222,6 +252,8 @@ SceneMaterials CreateMaterials(SceneDescription& desc, const NamedTextures& text
             for (auto* nm : deferred) {
                 SceneEntity& e = nm->second;
                 TextureParameterDictionary params(&e.parameters, &textures);
+                materials.namedHeat[nm->first] =
+                    ReadMaterialHeat("mix", params, materials.namedHeat, arena);
                 named.emplace(nm->first,
                               Material::Create("mix", params, named, e.loc, arena, diag));
             }
@@ -229,10 +261,11 @@ SceneMaterials CreateMaterials(SceneDescription& desc, const NamedTextures& text
         }
         pending = std::move(deferred);
     }
-    SceneMaterials materials;
     for (auto& [name, m] : named) materials.named[name] = arena.New<Material>(m);
     for (SceneEntity& e : desc.materials) {
         TextureParameterDictionary params(&e.parameters, &textures);
+        materials.anonymousHeat.push_back(
+            ReadMaterialHeat(e.name, params, materials.namedHeat, arena));
         materials.anonymous.push_back(arena.New<Material>(
             Material::Create(e.name, params, named, e.loc, arena, diag, layeredMIS)));
         e.parameters.ReportUnused(diag);
@@ -269,7 +302,7 @@ SceneShapes CreateShapes(ShapeSceneEntity& s, const NamedTextures& textures,
             diag.Warn(s.loc,
                       "curves cannot be area lights (as in pbrt-v4); the AreaLightSource "
                       "is ignored");
-        result.heat = emitters.Heat(s, own, materials.Of(s), {}, false);
+        result.heat = emitters.Heat(s, own, materials.HeatOf(s), materials.Of(s), {}, false);
         if (result.heat.emission)
             diag.Warn(s.loc, "hot curves glow where rays hit them but are not sampled as lights");
         return result;
@@ -297,7 +330,8 @@ SceneShapes CreateShapes(ShapeSceneEntity& s, const NamedTextures& textures,
                       s.parameters, s.loc, arena, diag, displacement ? &*displacement : nullptr);
     s.parameters.ReportUnused(diag);
     if (!result.shapes.empty())
-        result.heat = emitters.Heat(s, own, materials.Of(s), result.shapes, s.areaLightIndex >= 0);
+        result.heat = emitters.Heat(s, own, materials.HeatOf(s), materials.Of(s), result.shapes,
+                                    s.areaLightIndex >= 0);
     return result;
 }
 

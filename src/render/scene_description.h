@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/base/transform.h"
+#include "base/transform.h"
 #include "core/camera/camera_transform.h"
 #include "core/parser/file_loc.h"
 #include "core/parser/parameter_dictionary.h"

@@ -13,31 +13,11 @@
 
 namespace kiln {
 
-namespace {
-
-// A material's heat; a mix material without its own takes its first hot component's.
-ThermalProperties MaterialHeat(const Material& m) {
-    const ThermalProperties& own = m.Thermal();
-    if (own.temperature) return own;
-    if (const MixMaterial* mix = m.GetIf<MixMaterial>())
-        for (int i = 0; i < 2; ++i) {
-            ThermalProperties c = MaterialHeat(mix->GetMaterial(i));
-            if (c.temperature) {
-                if (own.model) c.model = own.model;
-                return c;
-            }
-        }
-    return own;
-}
-
-}  // namespace
-
 ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalProperties& own,
-                                const Material* material, std::span<const Shape> shapes,
-                                bool hasAreaLight) {
+                                const ThermalProperties& fromMaterial, const Material* material,
+                                std::span<const Shape> shapes, bool hasAreaLight) {
     ShapeHeat heat;
     heat.material = material;
-    ThermalProperties fromMaterial = material ? MaterialHeat(*material) : ThermalProperties{};
     std::optional<FloatTexture> temperature =
         own.temperature ? own.temperature : fromMaterial.temperature;
     // Per-vertex temperatures of a mesh (PLY vertex property or one value per vertex)

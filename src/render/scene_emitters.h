@@ -1,10 +1,10 @@
 // Scene creation, thermal part: which shapes are hot, at what temperature and with which
-// emission model; their ThermalEmission (lights/thermal_emission.h) and, for shapes outside
+// emission model; their ThermalEmission (thermal/thermal_emission.h) and, for shapes outside
 // object instances, their ThermalAreaLights (one per shape; for meshes one per triangle).
 //
 // A shape is hot when its own parameters, an Attribute "shape", its material (a material
 // property; a mix material without one takes its first hot component's) or a per-vertex
-// "temperature" of its mesh give it a temperature (materials/thermal_properties.h). The shape's
+// "temperature" of its mesh give it a temperature (thermal/thermal_properties.h). The shape's
 // own temperature and model win over its material's; `kiln --emission` overrides every model.
 #pragma once
 
@@ -13,15 +13,15 @@
 #include <span>
 #include <vector>
 
-#include "core/base/object_arena.h"
+#include "base/object_arena.h"
 #include "core/geometry/shape.h"
 #include "core/parser/diagnostics.h"
 #include "lights/light.h"
-#include "lights/thermal_emission.h"
-#include "materials/emissivity.h"
 #include "materials/surface_shader.h"
-#include "materials/thermal_properties.h"
 #include "render/scene_description.h"
+#include "thermal/material_albedo.h"
+#include "thermal/thermal_emission.h"
+#include "thermal/thermal_properties.h"
 
 namespace kiln {
 
@@ -44,10 +44,12 @@ class ThermalEmitters {
           overrideModel(overrideModel),
           powerSampling(powerSampling) {}
 
-    // The heat of one shape directive: own = its thermal parameters, material = its material,
-    // shapes = what it created. A shape with an area light keeps the area light (warning).
+    // The heat of one shape directive: own = its thermal parameters, fromMaterial = its
+    // material's (scene creation resolves a mix's), material = its material, shapes = what it
+    // created. A shape with an area light keeps the area light (warning).
     ShapeHeat Heat(const ShapeSceneEntity& entity, const ThermalProperties& own,
-                   const Material* material, std::span<const Shape> shapes, bool hasAreaLight);
+                   const ThermalProperties& fromMaterial, const Material* material,
+                   std::span<const Shape> shapes, bool hasAreaLight);
     // One light per shape, appended to lights; returns their indices. alpha: the shapes'
     // cut-outs (nullptr: none).
     std::vector<int> CreateLights(std::span<const Shape> shapes, const ShapeHeat& heat,

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "core/base/interaction.h"
+#include "base/interaction.h"
 #include "materials/material.h"
 #include "media/medium.h"
 #include "render/scene_description.h"

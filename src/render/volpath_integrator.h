@@ -17,7 +17,7 @@
 
 #include <optional>
 
-#include "core/base/rng.h"
+#include "base/rng.h"
 #include "core/camera/sampler.h"
 #include "materials/bxdfs/hg_phase_function.h"
 #include "render/radiance.h"

@@ -5,7 +5,7 @@
 // their sources; the functions here interpolate them linearly in wavelength (nm).
 #pragma once
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 #include "spectral/rgb_to_spectrum.h"
 #include "spectral/sampled_spectrum.h"
 #include "spectral/spectrum.h"

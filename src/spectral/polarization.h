@@ -18,7 +18,7 @@
 
 #include <array>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 #include "spectral/sampled_spectrum.h"
 
 namespace kiln {

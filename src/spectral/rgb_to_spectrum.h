@@ -15,7 +15,7 @@
 #include <cstring>
 #include <string_view>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

@@ -9,7 +9,7 @@
 #include <array>
 #include <cmath>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

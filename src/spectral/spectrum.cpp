@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/base/file_reading.h"
+#include "base/file_reading.h"
 #include "spectral/cie.h"
 #include "spectral/color.h"
 #include "spectral/planck.h"

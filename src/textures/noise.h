@@ -3,7 +3,7 @@
 // lattice points.
 #pragma once
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

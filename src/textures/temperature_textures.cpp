@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "core/base/rng.h"
+#include "base/rng.h"
 #include "core/image/mipmap.h"
 // Only the inline parts of TriangleMesh are used (kiln_textures does not link kiln_geometry).
 #include "core/geometry/triangle.h"

@@ -13,7 +13,7 @@
 #include <array>
 #include <string>
 
-#include "core/base/transform.h"
+#include "base/transform.h"
 #include "textures/texture.h"
 #include "textures/texture_mapping.h"
 

@@ -12,8 +12,8 @@
 #include <string>
 #include <variant>
 
-#include "core/base/object_arena.h"
-#include "core/base/transform.h"
+#include "base/object_arena.h"
+#include "base/transform.h"
 #include "core/parser/diagnostics.h"
 #include "core/parser/parameter_dictionary.h"
 #include "spectral/sampled_spectrum.h"

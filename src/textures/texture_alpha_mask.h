@@ -1,7 +1,7 @@
 // A shape's "alpha" given by a float texture (core/geometry/alpha_mask.h), as pbrt-v4 reads it.
 #pragma once
 
-#include "core/base/object_arena.h"
+#include "base/object_arena.h"
 #include "core/geometry/alpha_mask.h"
 #include "textures/texture.h"
 
@@ -12,7 +12,9 @@ class TextureParameterDictionary;
 class TextureAlphaMask : public AlphaMask {
   public:
     explicit TextureAlphaMask(FloatTexture alpha) : alpha(alpha) {}
-    Float Alpha(const TextureEvalContext& ctx) const override { return alpha.Evaluate(ctx); }
+    Float Alpha(const SurfaceInteraction& si) const override {
+        return alpha.Evaluate(TextureEvalContext(si));
+    }
 
     // A shape's "float alpha" or "texture alpha" (SceneError for an undefined texture or a
     // non-finite value); nullptr when absent or a constant >= 1 (opaque, no test at all).

@@ -4,8 +4,8 @@
 
 #include <array>
 
-#include "core/base/interaction.h"
-#include "core/base/vecmath.h"
+#include "base/interaction.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

@@ -4,8 +4,8 @@
 
 #include <variant>
 
-#include "core/base/transform.h"
-#include "core/base/vecmath.h"
+#include "base/transform.h"
+#include "base/vecmath.h"
 #include "textures/texture_eval_context.h"
 
 namespace kiln {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/base/object_arena.h"
+#include "base/object_arena.h"
 #include "core/parser/parameter_dictionary.h"
 #include "spectral/spectrum.h"
 #include "textures/texture.h"

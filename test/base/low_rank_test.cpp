@@ -1,11 +1,11 @@
 // The eigen-solver and low-rank factorisation behind kiln's emissivity tables.
-#include "core/base/low_rank.h"
+#include "base/low_rank.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/base/rng.h"
+#include "base/rng.h"
 
 using namespace kiln;
 

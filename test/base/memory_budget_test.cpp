@@ -1,10 +1,10 @@
-// MemoryBudget (core/base/memory_budget.h): sizes as users write them, and charges that stop
+// MemoryBudget (base/memory_budget.h): sizes as users write them, and charges that stop
 // at the limit with a message naming what and how much.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/base/memory_budget.h"
+#include "base/memory_budget.h"
 
 namespace kiln {
 namespace {

@@ -1,6 +1,6 @@
-// Plugins (core/base/plugin.h): the build's plugins load and export what kiln calls; a missing
+// Plugins (base/plugin.h): the build's plugins load and export what kiln calls; a missing
 // library or symbol is an error that names what was tried.
-#include "core/base/plugin.h"
+#include "base/plugin.h"
 
 #include <gtest/gtest.h>
 

@@ -1,13 +1,13 @@
-// Chi-square tests of the warping functions in core/base/sampling.h: each sampler must draw
+// Chi-square tests of the warping functions in base/sampling.h: each sampler must draw
 // directions or points with exactly the density its *PDF function reports.
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <vector>
 
-#include "core/base/rng.h"
-#include "core/base/sampling.h"
-#include "core/base/statistics.h"
+#include "base/rng.h"
+#include "base/sampling.h"
+#include "base/statistics.h"
 
 using namespace kiln;
 

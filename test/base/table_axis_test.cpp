@@ -1,10 +1,10 @@
 // Table axes locate points (through their bins) as a linear scan does, for evenly and
 // unevenly spaced nodes.
-#include "core/base/table_axis.h"
+#include "base/table_axis.h"
 
 #include <gtest/gtest.h>
 
-#include "core/base/rng.h"
+#include "base/rng.h"
 
 using namespace kiln;
 

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "core/base/rng.h"
-#include "core/base/transform.h"
+#include "base/rng.h"
+#include "base/transform.h"
 
 using namespace kiln;
 

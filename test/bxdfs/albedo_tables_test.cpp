@@ -7,9 +7,9 @@
 #include <cmath>
 #include <complex>
 
-#include "core/base/quadrature.h"
-#include "core/base/rng.h"
-#include "core/base/statistics.h"
+#include "base/quadrature.h"
+#include "base/rng.h"
+#include "base/statistics.h"
 #include "materials/bxdfs/bxdf.h"
 #include "materials/bxdfs/conductor_albedo.h"
 #include "materials/bxdfs/fresnel.h"

@@ -4,9 +4,9 @@
 
 #include <vector>
 
-#include "core/base/rng.h"
-#include "core/base/sampling.h"
-#include "core/base/statistics.h"
+#include "base/rng.h"
+#include "base/sampling.h"
+#include "base/statistics.h"
 #include "materials/bxdfs/bsdf.h"
 #include "materials/bxdfs/fresnel.h"
 

@@ -14,9 +14,9 @@
 // at normal incidence: coated white is visibly darker than plain white, in pbrt-v4 too.)
 #include <gtest/gtest.h>
 
-#include "core/base/rng.h"
-#include "core/base/sampling.h"
-#include "core/base/statistics.h"
+#include "base/rng.h"
+#include "base/sampling.h"
+#include "base/statistics.h"
 #include "materials/bxdfs/bsdf.h"
 #include "materials/bxdfs/fresnel.h"
 

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "core/base/rng.h"
-#include "core/base/statistics.h"
+#include "base/rng.h"
+#include "base/statistics.h"
 #include "materials/bxdfs/bxdf.h"
 
 namespace kiln {

@@ -16,9 +16,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/base/rng.h"
-#include "core/base/sampling.h"
-#include "core/base/statistics.h"
+#include "base/rng.h"
+#include "base/sampling.h"
+#include "base/statistics.h"
 #include "materials/bxdfs/bxdf.h"
 
 namespace kiln {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/base/rng.h"
+#include "base/rng.h"
 #include "materials/bxdfs/bsdf.h"
 #include "materials/bxdfs/fresnel.h"
 #include "materials/bxdfs/fresnel_mueller.h"

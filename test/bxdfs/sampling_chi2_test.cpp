@@ -8,8 +8,8 @@
 #include <optional>
 #include <vector>
 
-#include "core/base/rng.h"
-#include "core/base/statistics.h"
+#include "base/rng.h"
+#include "base/statistics.h"
 #include "materials/bxdfs/bxdf.h"
 
 using namespace kiln;

@@ -8,8 +8,8 @@
 #include <functional>
 #include <vector>
 
-#include "core/base/rng.h"
-#include "core/base/statistics.h"
+#include "base/rng.h"
+#include "base/statistics.h"
 #include "core/parser/parameter_dictionary.h"
 
 namespace kiln {

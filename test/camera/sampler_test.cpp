@@ -7,7 +7,7 @@
 #include <set>
 #include <vector>
 
-#include "core/base/statistics.h"
+#include "base/statistics.h"
 #include "core/parser/parameter_dictionary.h"
 
 namespace kiln {

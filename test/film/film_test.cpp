@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <random>
 
-#include "core/base/statistics.h"
+#include "base/statistics.h"
 #include "core/parser/parameter_dictionary.h"
 #include "film_test_util.h"
 

@@ -6,9 +6,9 @@
 #include <functional>
 #include <vector>
 
-#include "core/base/rng.h"
-#include "core/base/sampling.h"
-#include "core/base/statistics.h"
+#include "base/rng.h"
+#include "base/sampling.h"
+#include "base/statistics.h"
 #include "core/geometry/shape.h"
 
 namespace kiln::test {

@@ -2,7 +2,7 @@
 // triangle, pbrt-v4's "power" normalisation, two-sidedness and zero-area robustness.
 #include <gtest/gtest.h>
 
-#include "core/base/object_arena.h"
+#include "base/object_arena.h"
 #include "core/geometry/shape.h"
 #include "core/parser/diagnostics.h"
 #include "light_test_util.h"

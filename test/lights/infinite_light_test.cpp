@@ -3,8 +3,8 @@
 // mappings (full and compensated distributions).
 #include <gtest/gtest.h>
 
-#include "core/base/object_arena.h"
-#include "core/base/sampling.h"
+#include "base/object_arena.h"
+#include "base/sampling.h"
 #include "core/parser/diagnostics.h"
 #include "light_test_util.h"
 #include "lights/light.h"

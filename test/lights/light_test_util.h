@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/base/rng.h"
-#include "core/base/statistics.h"
+#include "base/rng.h"
+#include "base/statistics.h"
 #include "core/parser/parameter_dictionary.h"
 #include "spectral/cie.h"
 #include "spectral/sampled_spectrum.h"

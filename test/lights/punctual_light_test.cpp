@@ -2,7 +2,7 @@
 // smoothstep spotlight falloff), creation from scene parameters and their normalisation.
 #include <gtest/gtest.h>
 
-#include "core/base/object_arena.h"
+#include "base/object_arena.h"
 #include "core/parser/diagnostics.h"
 #include "light_test_util.h"
 #include "lights/light.h"

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "../textures/param_helpers.h"
-#include "core/base/rng.h"
-#include "core/base/statistics.h"
+#include "base/rng.h"
+#include "base/statistics.h"
 #include "materials/material.h"
 #include "materials/materials.h"
 #include "spectral/color.h"

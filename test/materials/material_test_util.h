@@ -1,12 +1,11 @@
-// What the emissivity tests share: materials made from parameter lists with named textures
-// and emissivity tables, and the evaluation context of a flat point.
+// What the material tests share: materials made from parameter lists with named textures, and
+// the evaluation context of a flat point.
 #pragma once
 
 #include <map>
 #include <string>
 
 #include "../textures/param_helpers.h"
-#include "materials/emissivity.h"
 #include "materials/materials.h"
 #include "textures/texture_parameter_dictionary.h"
 
@@ -17,7 +16,6 @@ struct MaterialFixture {
     Diagnostics diag{nullptr};
     NamedTextures named;
     std::map<std::string, Material> namedMaterials;
-    EmissivityTables tables;
 
     const Material* Make(const std::string& type, ParsedParameterVector params) {
         ParameterDictionary d(std::move(params), nullptr);

@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "../textures/param_helpers.h"
-#include "core/base/rng.h"
-#include "core/base/statistics.h"
+#include "base/rng.h"
+#include "base/statistics.h"
 #include "media/medium.h"
 #include "spectral/planck.h"
 

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/base/file_reading.h"
+#include "base/file_reading.h"
 #include "core/parser/parser.h"
 #include "recording_target.h"
 

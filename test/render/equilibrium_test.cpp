@@ -12,7 +12,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/base/statistics.h"
+#include "base/statistics.h"
 #include "render_test_util.h"
 #include "spectral/cie.h"
 #include "spectral/planck.h"
@@ -99,7 +99,7 @@ const Case kCases[] = {
 
 // Polarised transport: the cavity must also be unpolarised. Reflection from metals polarises
 // (perpendicular to the plane of reflection) and Kirchhoff emission polarises the other way
-// (materials/emissivity.h); only when the two cancel exactly are S1, S2 and S3 zero.
+// (thermal/material_albedo.h); only when the two cancel exactly are S1, S2 and S3 zero.
 class PolarizedEquilibrium : public ::testing::TestWithParam<std::tuple<Case, bool>> {};
 
 TEST_P(PolarizedEquilibrium, CavityIsUnpolarisedBlackbody) {

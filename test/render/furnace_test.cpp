@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "core/base/statistics.h"
+#include "base/statistics.h"
 #include "render_test_util.h"
 
 namespace kiln {

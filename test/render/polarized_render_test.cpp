@@ -9,7 +9,7 @@
 #include <functional>
 #include <sstream>
 
-#include "core/base/statistics.h"
+#include "base/statistics.h"
 #include "materials/bxdfs/fresnel.h"
 #include "materials/bxdfs/fresnel_mueller.h"
 #include "render_test_util.h"

@@ -10,7 +10,7 @@
 #include <string>
 #include <tuple>
 
-#include "core/base/statistics.h"
+#include "base/statistics.h"
 #include "core/parser/parser.h"
 #include "render/renderer.h"
 #include "render/scene_builder.h"

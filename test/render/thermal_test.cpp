@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "../lights/light_test_util.h"
-#include "core/base/rng.h"
-#include "core/base/statistics.h"
+#include "base/rng.h"
+#include "base/statistics.h"
 #include "lights/thermal_area_light.h"
 #include "render_test_util.h"
 #include "spectral/cie.h"

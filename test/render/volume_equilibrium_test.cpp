@@ -11,7 +11,7 @@
 
 #include <sstream>
 
-#include "core/base/statistics.h"
+#include "base/statistics.h"
 #include "render_test_util.h"
 
 namespace kiln {

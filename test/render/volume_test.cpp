@@ -8,7 +8,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/base/statistics.h"
+#include "base/statistics.h"
 #include "render_test_util.h"
 #include "spectral/cie.h"
 #include "spectral/planck.h"

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/base/rng.h"
+#include "base/rng.h"
 #include "spectral/cie.h"
 #include "spectral/color.h"
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <vector>
 
-#include "core/base/rng.h"
-#include "core/base/statistics.h"
+#include "base/rng.h"
+#include "base/statistics.h"
 #include "spectral/cie.h"
 #include "spectral/color.h"
 #include "spectral/named_spectra.h"

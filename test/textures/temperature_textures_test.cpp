@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/base/rng.h"
+#include "base/rng.h"
 #include "core/geometry/shape.h"
 #include "core/geometry/triangle.h"
 #include "param_helpers.h"

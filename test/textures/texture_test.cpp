@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "core/base/rng.h"
+#include "base/rng.h"
 
 #include "param_helpers.h"
 #include "spectral/color.h"

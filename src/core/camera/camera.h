@@ -5,7 +5,7 @@
 #include <string>
 #include <variant>
 
-#include "core/base/object_arena.h"
+#include "base/object_arena.h"
 #include "core/camera/camera_sample.h"
 #include "core/camera/camera_transform.h"
 #include "core/camera/projective_cameras.h"

@@ -2,7 +2,7 @@
 // CameraSample and CameraRay).
 #pragma once
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 #include "spectral/sampled_spectrum.h"
 
 namespace kiln {

@@ -6,7 +6,7 @@
 // Lengths are in scene units.
 #pragma once
 
-#include "core/base/transform.h"
+#include "base/transform.h"
 
 namespace kiln {
 

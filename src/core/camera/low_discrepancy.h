@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <span>
 
-#include "core/base/rng.h"
-#include "core/base/vecmath.h"
+#include "base/rng.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

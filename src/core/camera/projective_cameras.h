@@ -8,8 +8,8 @@
 
 #include <optional>
 
-#include "core/base/sampling.h"
-#include "core/base/transform.h"
+#include "base/sampling.h"
+#include "base/transform.h"
 #include "core/camera/camera_sample.h"
 #include "core/camera/camera_transform.h"
 

@@ -9,8 +9,8 @@
 
 #include <array>
 
-#include "core/base/rng.h"
-#include "core/base/vecmath.h"
+#include "base/rng.h"
+#include "base/vecmath.h"
 #include "core/camera/low_discrepancy.h"
 
 namespace kiln {

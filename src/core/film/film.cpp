@@ -7,7 +7,7 @@
 #include <cstring>
 #include <limits>
 
-#include "core/base/system_memory.h"
+#include "base/system_memory.h"
 #include "core/parser/parameter_dictionary.h"
 
 namespace kiln {

@@ -17,8 +17,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/base/object_arena.h"
-#include "core/base/vecmath.h"
+#include "base/object_arena.h"
+#include "base/vecmath.h"
 #include "core/film/filter.h"
 #include "core/film/visible_surface.h"
 #include "core/image/display.h"

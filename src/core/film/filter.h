@@ -11,9 +11,9 @@
 #include <variant>
 #include <vector>
 
-#include "core/base/object_arena.h"
-#include "core/base/sampling.h"
-#include "core/base/vecmath.h"
+#include "base/object_arena.h"
+#include "base/sampling.h"
+#include "base/vecmath.h"
 #include "core/parser/diagnostics.h"
 #include "core/parser/file_loc.h"
 

@@ -1,7 +1,7 @@
 // The first visible surface of a camera ray, for the film's auxiliary (AOV) layers.
 #pragma once
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 #include "spectral/sampled_spectrum.h"
 
 namespace kiln {

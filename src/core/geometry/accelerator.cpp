@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/base/rng.h"
+#include "base/rng.h"
 #include "core/geometry/shape_util.h"
 
 namespace kiln {
@@ -69,8 +69,8 @@ std::optional<ShapeIntersection> UserHit(const GeomRecord& rec, unsigned primID,
     for (int k = 0; k < 8; ++k) {
         std::optional<ShapeIntersection> si = shape.Intersect(ray, tMax);
         if (!si) return std::nullopt;
-        if (!rec.alpha || !rec.alpha->Masked(TextureEvalContext(si->intr),
-                                             HashToUniform(Hash(ray.o, ray.d, primID, k)))) {
+        if (!rec.alpha ||
+            !rec.alpha->Masked(si->intr, HashToUniform(Hash(ray.o, ray.d, primID, k)))) {
             si->tHit += tOffset;
             return si;
         }
@@ -122,8 +122,7 @@ void CurveAlphaFilter(const RTCFilterFunctionNArguments* args) {
     SurfaceInteraction si =
         rec->curves->InteractionAt(int(prim), RTCHitN_u(args->hit, 1, 0), o, d,
                                    RTCRayN_tfar(ray, 1, 0), RTCRayN_time(ray, 1, 0));
-    if (rec->alpha->Masked(TextureEvalContext(si), HashToUniform(Hash(o, d, prim))))
-        args->valid[0] = 0;
+    if (rec->alpha->Masked(si, HashToUniform(Hash(o, d, prim)))) args->valid[0] = 0;
 }
 
 // Embree's filter for triangles with alpha (closest-hit and shadow queries alike): rejects a
@@ -141,19 +140,19 @@ void TriangleAlphaFilter(const RTCFilterFunctionNArguments* args) {
     std::array<Float, 3> b = {1 - b1 - b2, b1, b2};
     Float time = RTCRayN_time(ray, 1, 0);
     Interaction it = Triangle(rec->mesh, tri).PointAt(b, time);
-    TextureEvalContext ctx;
-    ctx.p = it.p;
-    ctx.n = it.n;
-    ctx.uv = it.uv;
-    ctx.time = time;
-    ctx.faceIndex = rec->mesh->faceIndices.empty() ? 0 : rec->mesh->faceIndices[size_t(tri)];
-    ctx.mesh = rec->mesh;
-    ctx.triIndex = tri;
-    ctx.b = b;
+    SurfaceInteraction si;
+    si.p = it.p;
+    si.n = it.n;
+    si.uv = it.uv;
+    si.time = time;
+    si.faceIndex = rec->mesh->faceIndices.empty() ? 0 : rec->mesh->faceIndices[size_t(tri)];
+    si.mesh = rec->mesh;
+    si.triIndex = tri;
+    si.b = b;
     Float u = HashToUniform(Hash(RTCRayN_org_x(ray, 1, 0), RTCRayN_org_y(ray, 1, 0),
                                  RTCRayN_org_z(ray, 1, 0), RTCRayN_dir_x(ray, 1, 0),
                                  RTCRayN_dir_y(ray, 1, 0), RTCRayN_dir_z(ray, 1, 0), tri));
-    if (rec->alpha->Masked(ctx, u)) args->valid[0] = 0;
+    if (rec->alpha->Masked(si, u)) args->valid[0] = 0;
 }
 
 void ErrorCallback(void*, RTCError code, const char* message) {

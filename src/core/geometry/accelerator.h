@@ -10,8 +10,8 @@
 #include <optional>
 #include <span>
 
-#include "core/base/transform.h"
-#include "core/base/vecmath.h"
+#include "base/transform.h"
+#include "base/vecmath.h"
 #include "core/geometry/alpha_mask.h"
 #include "core/geometry/curve.h"
 #include "core/geometry/shape.h"

@@ -3,27 +3,27 @@
 // does not emit); where it lies between 0 and 1 a ray passes with probability 1 - alpha, decided
 // by a hash of the query (pbrt-v4's stochastic alpha test).
 //
-// The accelerator (core/geometry) evaluates alpha through this interface; the texture that
-// gives it lives in the textures module (textures/texture_alpha_mask.h).
+// The accelerator (core/geometry) evaluates alpha through this interface at a surface point;
+// the texture that gives it lives in the textures layer above (textures/texture_alpha_mask.h).
 #pragma once
 
 #include <cstdint>
 
-#include "core/base/vecmath.h"
-#include "textures/texture_eval_context.h"
+#include "base/interaction.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 
 class AlphaMask {
   public:
     virtual ~AlphaMask() = default;
-    // Alpha at the point (values above 1 count as 1, below 0 as 0).
-    virtual Float Alpha(const TextureEvalContext& ctx) const = 0;
+    // Alpha at the surface point (values above 1 count as 1, below 0 as 0).
+    virtual Float Alpha(const SurfaceInteraction& si) const = 0;
 
-    // Whether the surface is absent at ctx for a query whose uniform number is u in [0, 1):
+    // Whether the surface is absent at si for a query whose uniform number is u in [0, 1):
     // never where alpha >= 1, always where alpha <= 0, otherwise when u > alpha.
-    bool Masked(const TextureEvalContext& ctx, Float u) const {
-        Float a = Alpha(ctx);
+    bool Masked(const SurfaceInteraction& si, Float u) const {
+        Float a = Alpha(si);
         if (!(a < 1)) return false;
         return a <= 0 || u > a;
     }

@@ -1,6 +1,6 @@
 #include "core/geometry/bilinear_patch.h"
 
-#include "core/base/sampling.h"
+#include "base/sampling.h"
 #include "core/geometry/shape_util.h"
 
 namespace kiln {

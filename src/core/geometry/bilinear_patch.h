@@ -6,8 +6,8 @@
 #include <optional>
 #include <vector>
 
-#include "core/base/transform.h"
-#include "core/base/vecmath.h"
+#include "base/transform.h"
+#include "base/vecmath.h"
 #include "core/geometry/shape_sample.h"
 
 namespace kiln {

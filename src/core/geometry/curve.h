@@ -21,10 +21,10 @@
 #include <array>
 #include <vector>
 
-#include "core/base/interaction.h"
-#include "core/base/object_arena.h"
-#include "core/base/transform.h"
-#include "core/base/vecmath.h"
+#include "base/interaction.h"
+#include "base/object_arena.h"
+#include "base/transform.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

@@ -1,4 +1,4 @@
-#include "core/base/sampling.h"
+#include "base/sampling.h"
 #include "core/geometry/quadrics.h"
 #include "core/geometry/shape_util.h"
 

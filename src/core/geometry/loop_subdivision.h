@@ -11,7 +11,7 @@
 #include <span>
 #include <vector>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <functional>
 
-#include "core/base/transform.h"
+#include "base/transform.h"
 #include "core/geometry/ply_reader.h"
 
 namespace kiln {

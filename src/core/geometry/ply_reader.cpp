@@ -13,7 +13,7 @@
 #include <memory>
 #include <sstream>
 
-#include "core/base/file_reading.h"
+#include "base/file_reading.h"
 #include "core/geometry/shape_util.h"
 #include "core/parser/diagnostics.h"
 

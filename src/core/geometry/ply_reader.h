@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

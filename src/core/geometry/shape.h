@@ -9,9 +9,9 @@
 #include <variant>
 #include <vector>
 
-#include "core/base/object_arena.h"
-#include "core/base/transform.h"
-#include "core/base/vecmath.h"
+#include "base/object_arena.h"
+#include "base/transform.h"
+#include "base/vecmath.h"
 #include "core/geometry/bilinear_patch.h"
 #include "core/geometry/quadrics.h"
 #include "core/geometry/shape_sample.h"

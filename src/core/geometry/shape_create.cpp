@@ -5,7 +5,7 @@
 #include "core/geometry/ply_reader.h"
 #include "core/geometry/shape.h"
 
-#include "core/base/system_memory.h"
+#include "base/system_memory.h"
 #include "core/geometry/loop_subdivision.h"
 #include "core/geometry/mesh_displacement.h"
 #include "core/parser/diagnostics.h"

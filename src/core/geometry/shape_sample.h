@@ -2,8 +2,8 @@
 // ShapeIntersection, ShapeSample and ShapeSampleContext).
 #pragma once
 
-#include "core/base/interaction.h"
-#include "core/base/vecmath.h"
+#include "base/interaction.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

@@ -5,9 +5,9 @@
 
 #include <optional>
 
-#include "core/base/interaction.h"
-#include "core/base/transform.h"
-#include "core/base/vecmath.h"
+#include "base/interaction.h"
+#include "base/transform.h"
+#include "base/vecmath.h"
 #include "core/geometry/shape_sample.h"
 
 namespace kiln {

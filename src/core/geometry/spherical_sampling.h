@@ -4,7 +4,7 @@
 
 #include <array>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

@@ -1,6 +1,6 @@
 #include "core/geometry/triangle.h"
 
-#include "core/base/sampling.h"
+#include "base/sampling.h"
 #include "core/geometry/shape_util.h"
 #include "core/geometry/spherical_sampling.h"
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

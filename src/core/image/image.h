@@ -24,7 +24,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 #include "core/image/color_encoding.h"
 
 namespace kiln {

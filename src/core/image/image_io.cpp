@@ -10,10 +10,10 @@
 #include <filesystem>
 #include <random>
 
-#include "core/base/file_reading.h"
-#include "core/base/memory_budget.h"
-#include "core/base/plugin.h"
-#include "core/base/system_memory.h"
+#include "base/file_reading.h"
+#include "base/memory_budget.h"
+#include "base/plugin.h"
+#include "base/system_memory.h"
 #include "core/image/image.h"
 #include "core/image/image_codec.h"
 #include "core/image/png_codec.h"

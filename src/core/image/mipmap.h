@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/base/object_arena.h"
-#include "core/base/vecmath.h"
+#include "base/object_arena.h"
+#include "base/vecmath.h"
 #include "core/image/image.h"
 #include "spectral/color.h"
 

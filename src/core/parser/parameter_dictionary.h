@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 #include "core/parser/diagnostics.h"
 #include "core/parser/file_loc.h"
 #include "core/parser/parsed_parameter.h"

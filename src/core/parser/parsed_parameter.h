@@ -18,7 +18,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 #include "core/parser/file_loc.h"
 
 namespace kiln {

@@ -11,7 +11,7 @@
 #include <array>
 #include <string>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 #include "core/parser/file_loc.h"
 #include "core/parser/parsed_parameter.h"
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "core/base/file_reading.h"
+#include "base/file_reading.h"
 #include "core/parser/diagnostics.h"
 
 namespace kiln {

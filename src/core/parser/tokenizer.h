@@ -15,7 +15,7 @@
 #include <string>
 #include <string_view>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 #include "core/parser/file_loc.h"
 
 namespace kiln {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/base/quadrature.h"
+#include "base/quadrature.h"
 #include "materials/bxdfs/microfacet_quadrature.h"
 
 namespace kiln {

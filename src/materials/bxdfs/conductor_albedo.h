@@ -1,5 +1,5 @@
 // Directional albedo of the rough conductor BxDF as a linear functional of its Fresnel
-// reflectance, for Kirchhoff emission (emissivity = 1 - albedo; materials/emissivity.h).
+// reflectance, for Kirchhoff emission (emissivity = 1 - albedo; thermal/material_albedo.h).
 //
 // pbrt-v4's rough conductor reflects into direction wi = reflect(wo, wm) about a microfacet
 // normal wm with weight F(wo . wm) G2(wo, wi) / G1(wo) when wm is drawn from the normals
@@ -30,7 +30,7 @@ class ConductorAlbedoMoments {
     // W_j for isotropic roughness alpha (> 0) seen from cos(theta_o) in (0, 1].
     static Weights Compute(double alpha, double cosThetaO);
     // Weights for the linear polarisation of the reflected light instead (polarised Kirchhoff
-    // emission, materials/emissivity.h): under uniform unpolarised illumination a microfacet
+    // emission, thermal/material_albedo.h): under uniform unpolarised illumination a microfacet
     // reflects Stokes (F, dF, 0, 0) with dF = (Rs - Rp) / 2 in its own plane of incidence, whose
     // s axis is turned by chi about wo from the surface's; S1 with the surface's axis is
     // dF cos(2 chi), and S2 integrates to zero for isotropic roughness. So

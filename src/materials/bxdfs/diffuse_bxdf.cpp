@@ -1,6 +1,6 @@
 #include "materials/bxdfs/diffuse_bxdf.h"
 
-#include "core/base/sampling.h"
+#include "base/sampling.h"
 
 namespace kiln {
 

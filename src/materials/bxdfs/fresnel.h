@@ -12,7 +12,7 @@
 
 #include <complex>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 #include "spectral/sampled_spectrum.h"
 
 namespace kiln {

@@ -13,7 +13,7 @@
 // Reference: Collett, Field Guide to Polarization (2005), sec. 5.5; Wilkie & Weidlich (2016).
 #pragma once
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 #include "spectral/polarization.h"
 #include "spectral/sampled_spectrum.h"
 

@@ -7,7 +7,7 @@
 
 #include <optional>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

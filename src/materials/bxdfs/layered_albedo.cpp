@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/base/quadrature.h"
+#include "base/quadrature.h"
 #include "materials/bxdfs/conductor_albedo.h"
 #include "materials/bxdfs/fresnel.h"
 #include "materials/bxdfs/microfacet_quadrature.h"

@@ -12,8 +12,8 @@
 #include <limits>
 #include <optional>
 
-#include "core/base/rng.h"
-#include "core/base/sampling.h"
+#include "base/rng.h"
+#include "base/sampling.h"
 #include "materials/bxdfs/conductor_bxdf.h"
 #include "materials/bxdfs/dielectric_bxdf.h"
 #include "materials/bxdfs/diffuse_bxdf.h"

@@ -8,7 +8,7 @@
 // Distribution of Visible Normals", JCGT 7(4)); pbrt-v4 Sec. 9.6.
 #pragma once
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

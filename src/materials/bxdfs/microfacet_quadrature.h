@@ -1,13 +1,13 @@
 // Deterministic quadrature over the visible microfacet normals of an isotropic Trowbridge-Reitz
 // (GGX) distribution, for tables built at load (emissivity = 1 - albedo; see
-// materials/emissivity.h). Never used per sample.
+// thermal/material_albedo.h). Never used per sample.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "core/base/vecmath.h"
+#include "base/vecmath.h"
 
 namespace kiln {
 

@@ -1,0 +1,128 @@
+#include "thermal/material_albedo.h"
+
+#include <algorithm>
+
+#include "materials/materials.h"
+
+namespace kiln {
+
+// Creation
+const MaterialAlbedo* MaterialAlbedo::Create(const Material& material, EmissivityTables& tables,
+                                             ObjectArena& arena) {
+    if (const MixMaterial* mix = material.GetIf<MixMaterial>()) {
+        Mix m;
+        for (int i = 0; i < 2; ++i) {
+            const Material& component = mix->GetMaterial(i);
+            const MaterialAlbedo* a = Create(component, tables, arena);
+            // A nested mix contributes its leaves
+            if (const Mix* nested = std::get_if<Mix>(&a->kind))
+                m.components.insert(m.components.end(), nested->components.begin(),
+                                    nested->components.end());
+            else
+                m.components.push_back({&component, a});
+        }
+        return arena.New<MaterialAlbedo>(std::move(m));
+    }
+    if (material.Is<DiffuseMaterial>()) return arena.New<MaterialAlbedo>(Diffuse{});
+    if (const ConductorMaterial* c = material.GetIf<ConductorMaterial>())
+        return arena.New<MaterialAlbedo>(ConductorEmissivity(*c, tables));
+    if (const CoatedDiffuseMaterial* c = material.GetIf<CoatedDiffuseMaterial>())
+        return arena.New<MaterialAlbedo>(CoatedDiffuseEmissivity(*c, material, tables));
+    if (const CoatedConductorMaterial* c = material.GetIf<CoatedConductorMaterial>())
+        return arena.New<MaterialAlbedo>(CoatedConductorEmissivity(*c, material, tables));
+    return arena.New<MaterialAlbedo>(NonAbsorbing{});
+}
+
+bool MaterialAlbedo::Exact() const {
+    return std::visit(
+        [&](const auto& k) -> bool {
+            using K = std::decay_t<decltype(k)>;
+            if constexpr (std::is_same_v<K, ConductorEmissivity> ||
+                          std::is_same_v<K, CoatedDiffuseEmissivity> ||
+                          std::is_same_v<K, CoatedConductorEmissivity>)
+                return k.Exact();
+            else if constexpr (std::is_same_v<K, Mix>)
+                return std::all_of(k.components.begin(), k.components.end(),
+                                   [](const auto& c) { return c.second->Exact(); });
+            else
+                return true;
+        },
+        kind);
+}
+
+// Evaluation
+SampledSpectrum MaterialAlbedo::EvaluateLocal(const Material* material, const BSDF& bsdf,
+                                              Vector3f wo, const SampledWavelengths& lambda) const {
+    const BxDF& bxdf = bsdf.GetBxDF();
+    return std::visit(
+        [&](const auto& k) -> SampledSpectrum {
+            using K = std::decay_t<decltype(k)>;
+            if constexpr (std::is_same_v<K, Diffuse>) {
+                const DiffuseBxDF* d = bxdf.Cast<DiffuseBxDF>();
+                return d ? d->Reflectance() : SampledSpectrum(1.f);
+            } else if constexpr (std::is_same_v<K, NonAbsorbing>) {
+                return SampledSpectrum(1.f);
+            } else if constexpr (std::is_same_v<K, ConductorEmissivity>) {
+                const ConductorBxDF* c = bxdf.Cast<ConductorBxDF>();
+                return c ? k.Albedo(*c, wo, lambda) : SampledSpectrum(1.f);
+            } else if constexpr (std::is_same_v<K, CoatedDiffuseEmissivity>) {
+                const CoatedDiffuseBxDF* c = bxdf.Cast<CoatedDiffuseBxDF>();
+                return c ? k.Albedo(*c, wo, lambda) : SampledSpectrum(1.f);
+            } else if constexpr (std::is_same_v<K, CoatedConductorEmissivity>) {
+                const CoatedConductorBxDF* c = bxdf.Cast<CoatedConductorBxDF>();
+                return c ? k.Albedo(*c, wo, lambda) : SampledSpectrum(1.f);
+            } else {
+                for (const auto& [component, albedo] : k.components)
+                    if (component == material)
+                        return albedo->EvaluateLocal(material, bsdf, wo, lambda);
+                return SampledSpectrum(1.f);
+            }
+        },
+        kind);
+}
+
+SampledSpectrum MaterialAlbedo::Evaluate(const Material* material, const BSDF& bsdf,
+                                         Vector3f woRender,
+                                         const SampledWavelengths& lambda) const {
+    if (!bsdf) return SampledSpectrum(1.f);
+    SampledSpectrum A = EvaluateLocal(material, bsdf, bsdf.RenderToLocal(woRender), lambda);
+    // Tables carry quadrature and interpolation errors of ~1e-5: keep A a fraction
+    return Clamp(A, Float(0), Float(1));
+}
+
+SampledSpectrum MaterialAlbedo::Hemispherical(const Material* material, const BSDF& bsdf,
+                                              const SampledWavelengths& lambda) const {
+    if (!bsdf) return SampledSpectrum(1.f);
+    // 4-point Gauss-Legendre nodes and weights on [0, 1]
+    constexpr Float mus[4] = {0.0694318442f, 0.3300094782f, 0.6699905218f, 0.9305681558f};
+    constexpr Float ws[4] = {0.1739274226f, 0.3260725774f, 0.3260725774f, 0.1739274226f};
+    SampledSpectrum sum(0.f);
+    for (int i = 0; i < 4; ++i) {
+        Vector3f wo(std::sqrt(1 - mus[i] * mus[i]), 0, mus[i]);
+        sum += 2 * mus[i] * ws[i] *
+               Clamp(EvaluateLocal(material, bsdf, wo, lambda), Float(0), Float(1));
+    }
+    return sum;
+}
+
+ReflectedPolarization MaterialAlbedo::LinearPolarization(const Material* material, const BSDF& bsdf,
+                                                         Vector3f woRender) const {
+    if (!bsdf) return {};
+    Vector3f wo = bsdf.RenderToLocal(woRender);
+    return std::visit(
+        [&](const auto& k) -> ReflectedPolarization {
+            using K = std::decay_t<decltype(k)>;
+            if constexpr (std::is_same_v<K, ConductorEmissivity>) {
+                const ConductorBxDF* c = bsdf.GetBxDF().Cast<ConductorBxDF>();
+                if (c) return k.LinearPolarization(*c, wo);
+            } else if constexpr (std::is_same_v<K, Mix>) {
+                for (const auto& [component, albedo] : k.components)
+                    if (component == material)
+                        return albedo->LinearPolarization(material, bsdf, woRender);
+            }
+            return {};
+        },
+        kind);
+}
+
+}  // namespace kiln

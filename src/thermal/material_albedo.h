@@ -1,0 +1,94 @@
+// Thermal emission models and emissivity (Wilkie & Weidlich 2011, "A Physically Plausible
+// Model for Light Emission from Glowing Solid Objects").
+//
+// By Kirchhoff's law an opaque body in thermal equilibrium emits, in each direction and at each
+// wavelength, exactly what it absorbs: emissivity(wo, lambda) = 1 - A(wo, lambda), where A is
+// the directional albedo of the body's own BSDF: the expected scattering weight f |cos| / pdf
+// of the BSDF the integrator scatters with, at the same point, in the same shading frame. A
+// closed isothermal cavity then renders B(T) in every direction whatever its materials and
+// geometry (test/render/equilibrium_test.cpp).
+//
+// MaterialAlbedo computes A for the BSDF a material built at a surface point, without Monte
+// Carlo at render time:
+//   diffuse:                  A = reflectance (closed form)
+//   conductor:                Fresnel (smooth), tables of the microfacet albedo (rough;
+//                             conductor_emissivity.h)
+//   coateddiffuse,
+//   coatedconductor:          tables of the layered walk's expectation (coated_emissivity.h)
+//   dielectric,
+//   thindielectric, interface: A = 1, they emit nothing: kiln has no volumetric absorption, so
+//                             a transparent body does not glow (a rough dielectric's single-
+//                             scattering energy loss is not emitted either)
+//   mix:                      the component chosen at the point
+// Polarisation (Kirchhoff per polarisation state): in a closed isothermal cavity the light a
+// surface reflects towards wo, Stokes B (A, a1, a2, 0) with reference axis perpendicular to
+// the plane of the shading normal and wo, plus what it emits must be unpolarised B, so it emits
+// B (1 - A, -a1, -a2, 0): polarised parallel to that plane where its reflection is polarised
+// perpendicular to it. LinearPolarization gives (a1, a2): for conductors see
+// conductor_emissivity.h; zero for depolarising BSDFs (diffuse, coated: their reflection is
+// unpolarised).
+//
+// Rough conductors use pbrt-v4's single-scattering microfacet model, whose albedo misses the
+// multiply scattered energy (for a perfect mirror metal 12 % at alpha 0.3, 69 % at alpha 1,
+// normal incidence); emissivity 1 - A is consistent with it, so equilibrium holds exactly, but
+// the emissivity of very rough metals is higher than a physical one.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "base/object_arena.h"
+#include "materials/bxdfs/bsdf.h"
+#include "spectral/sampled_spectrum.h"
+#include "thermal/coated_emissivity.h"
+#include "thermal/conductor_emissivity.h"
+#include "thermal/emission_model.h"
+#include "thermal/emissivity_tables.h"
+
+namespace kiln {
+
+class Material;
+
+// The directional albedo of the BSDFs one material builds.
+class MaterialAlbedo {
+  public:
+    // A of bsdf, which `material` built at a surface point (for a mix material, the component
+    // chosen there: SurfaceInteraction::material after the scene's GetBSDF), seen from woRender
+    // (render space). Per wavelength, in [0, 1]; 1 for an invalid BSDF.
+    SampledSpectrum Evaluate(const Material* material, const BSDF& bsdf, Vector3f woRender,
+                             const SampledWavelengths& lambda) const;
+    // The polarisation (above) of what bsdf reflects towards woRender, about the plane of the
+    // shading normal and woRender; 0 for an invalid BSDF.
+    ReflectedPolarization LinearPolarization(const Material* material, const BSDF& bsdf,
+                                             Vector3f woRender) const;
+    // Cosine-weighted hemispherical average 2 integral A(mu) mu dmu at the point (for power
+    // estimates), by 4-point Gauss-Legendre quadrature over mu.
+    SampledSpectrum Hemispherical(const Material* material, const BSDF& bsdf,
+                                  const SampledWavelengths& lambda) const;
+    // False when the material needs the approximate Monte Carlo table (coated_emissivity.h).
+    bool Exact() const;
+
+    // The albedo of `material` and, for a mix, of every component (tables built here).
+    static const MaterialAlbedo* Create(const Material& material, EmissivityTables& tables,
+                                        ObjectArena& arena);
+
+    struct Diffuse {};
+    struct NonAbsorbing {};
+    struct Mix {
+        std::vector<std::pair<const Material*, const MaterialAlbedo*>> components;
+    };
+    using Kind = std::variant<Diffuse, NonAbsorbing, ConductorEmissivity, CoatedDiffuseEmissivity,
+                              CoatedConductorEmissivity, Mix>;
+    explicit MaterialAlbedo(Kind kind) : kind(std::move(kind)) {}
+
+  private:
+    SampledSpectrum EvaluateLocal(const Material* material, const BSDF& bsdf, Vector3f wo,
+                                  const SampledWavelengths& lambda) const;
+    Kind kind;
+};
+
+}  // namespace kiln
