@@ -66,38 +66,28 @@ class Light {
         return std::visit([&](auto l) { return l->Phi(lambda); }, kind);
     }
     // Incident radiance at ctx.p from a direction sampled by solid angle (pdf per sr; 1 for
-    // delta lights); nullopt if no light arrives or the sample is invalid.
+    // delta lights); nullopt if no light arrives or the sample is invalid. A light whose
+    // radiance at the sampled point costs a surface evaluation (thermal emission: interaction,
+    // BSDF, emissivity) leaves L to DeferredL (ls.deferredL), so that the receiver evaluates
+    // it only for samples it can use (non-zero BSDF, unoccluded).
     std::optional<LightLiSample> SampleLi(const LightSampleContext& ctx, Point2f u,
                                           const SampledWavelengths& lambda,
                                           bool allowIncompletePDF = false) const {
         return std::visit([&](auto l) { return l->SampleLi(ctx, u, lambda, allowIncompletePDF); },
                           kind);
     }
-    // As SampleLi, but a light whose radiance at the sampled point costs a surface evaluation
-    // (thermal emission: interaction, BSDF, emissivity) leaves L for DeferredL, so that the
-    // receiver evaluates it only for samples it can use (non-zero BSDF, unoccluded).
-    std::optional<LightLiSample> SampleLiDeferred(const LightSampleContext& ctx, Point2f u,
-                                                  const SampledWavelengths& lambda,
-                                                  bool allowIncompletePDF = false) const {
-        return std::visit(
-            [&](auto l) {
-                if constexpr (requires { l->SampleLiDeferred(ctx, u, lambda, allowIncompletePDF); })
-                    return l->SampleLiDeferred(ctx, u, lambda, allowIncompletePDF);
-                else
-                    return l->SampleLi(ctx, u, lambda, allowIncompletePDF);
-            },
-            kind);
-    }
-    // The radiance of a sample from SampleLiDeferred (its L unless deferred). Radiance:
-    // SampledSpectrum, or Stokes in the implicit frame of -ls.wi (polarization.h; only
-    // thermal emission is polarised).
-    template <typename Radiance = SampledSpectrum>
-    Radiance DeferredL(const LightLiSample& ls, const SampledWavelengths& lambda) const {
+    // The radiance of a sample of SampleLi: its L unless deferred, else evaluated with the BSDF
+    // that shader (the integrator's: GetBSDF(SurfaceInteraction&, SampledWavelengths&)) builds
+    // at the sampled point. Radiance: SampledSpectrum, or Stokes in the implicit frame of
+    // -ls.wi (polarization.h; only thermal emission is polarised).
+    template <typename Radiance = SampledSpectrum, typename Shader>
+    Radiance DeferredL(const LightLiSample& ls, const SampledWavelengths& lambda,
+                       const Shader& shader) const {
         if (!ls.deferredL) return Radiance(ls.L);
         return std::visit(
             [&](auto l) -> Radiance {
-                if constexpr (requires { l->template DeferredL<Radiance>(ls, lambda); })
-                    return l->template DeferredL<Radiance>(ls, lambda);
+                if constexpr (requires { l->template DeferredL<Radiance>(ls, lambda, shader); })
+                    return l->template DeferredL<Radiance>(ls, lambda, shader);
                 else
                     return Radiance(ls.L);
             },

@@ -37,7 +37,7 @@ struct LightSampleContext {
 // Incident radiance L arriving from direction wi (unit, pointing away from the receiving point
 // towards the light), drawn with solid-angle density pdf; pLight is the point on the light (a
 // point beyond the scene's bounding sphere for infinite and distant lights) for shadow rays.
-// A sample drawn with Light::SampleLiDeferred may leave L to be evaluated later
+// A sample drawn with Light::SampleLi may leave L to be evaluated later
 // (deferredL, Light::DeferredL): for lights whose radiance costs a surface evaluation.
 struct LightLiSample {
     SampledSpectrum L;

@@ -1,13 +1,9 @@
 #include "lights/thermal_area_light.h"
 
-#include "base/rng.h"
-#include "core/geometry/alpha_mask.h"
-
 #include <cmath>
 #include <vector>
 
 #include "core/geometry/shape.h"
-#include "materials/surface_shader.h"
 #include "spectral/planck.h"
 
 namespace kiln {
@@ -49,10 +45,10 @@ SurfaceInteraction ThermalAreaLight::InteractionAt(Point3f p, Float time, Vector
 }
 
 ThermalAreaLight::ThermalAreaLight(const Shape* shape, const Material* material,
-                                   const ThermalEmission* emission, const SurfaceShader* shader,
+                                   const ThermalEmission* emission, const BSDFAt& bsdfAt,
                                    std::optional<Uniform> uniform, bool powerSampling,
                                    const AlphaMask* alpha)
-    : shape(shape), alpha(alpha), material(material), emission(emission), shader(shader) {
+    : shape(shape), alpha(alpha), material(material), emission(emission) {
     area = shape->Area();
     if (!(area > 0)) return;
     if (uniform) {
@@ -82,7 +78,7 @@ ThermalAreaLight::ThermalAreaLight(const Shape* shape, const Material* material,
                 Float T = emission->Temperature(si), M = 0;
                 if (T > 0) {
                     SampledWavelengths lambda = SampledWavelengths::FromWavelength(550);
-                    BSDF bsdf = shader->GetBSDF(si, lambda);
+                    BSDF bsdf = bsdfAt(si, lambda);
                     M = emission->VisibleExitance(si, bsdf);
                 }
                 Float w = M / ss->pdf;
@@ -122,10 +118,8 @@ std::optional<Float> ThermalAreaLight::ParametricPDF(Point3f p) const {
     return distribution->PDF(u) * ss->pdf;
 }
 
-std::optional<LightLiSample> ThermalAreaLight::SampleLiDeferred(const LightSampleContext& ctx,
-                                                                Point2f u,
-                                                                const SampledWavelengths&,
-                                                                bool) const {
+std::optional<LightLiSample> ThermalAreaLight::SampleLi(const LightSampleContext& ctx, Point2f u,
+                                                        const SampledWavelengths&, bool) const {
     // A point on the shape: by power over its parameterisation, or by solid angle
     Point3f p;
     Normal3f n;
@@ -155,43 +149,6 @@ std::optional<LightLiSample> ThermalAreaLight::SampleLiDeferred(const LightSampl
     ls.pdf = pdf;
     ls.pLight = Interaction(p, n, Point2f());
     ls.deferredL = true;
-    return ls;
-}
-
-template <typename Radiance>
-Radiance ThermalAreaLight::DeferredL(const LightLiSample& ls,
-                                     const SampledWavelengths& lambda) const {
-    return EmissionAt<Radiance>(ls.pLight.p, -ls.wi, lambda, nullptr);
-}
-template SampledSpectrum ThermalAreaLight::DeferredL<SampledSpectrum>(
-    const LightLiSample&, const SampledWavelengths&) const;
-template Stokes ThermalAreaLight::DeferredL<Stokes>(const LightLiSample&,
-                                                    const SampledWavelengths&) const;
-
-template <typename Radiance>
-Radiance ThermalAreaLight::EmissionAt(Point3f p, Vector3f w, const SampledWavelengths& lambda,
-                                      SurfaceInteraction* interaction) const {
-    // The BSDF built as at a ray hit (on a copy of the wavelengths: the receiving path keeps
-    // all of its own)
-    SurfaceInteraction si = InteractionAt(p, 0, w);
-    // Cut out of the shape: nothing there to emit (rays never hit such points)
-    if (alpha && alpha->Masked(si, HashToUniform(Hash(p)))) return {};
-    SampledWavelengths l = lambda;
-    BSDF bsdf = shader->GetBSDF(si, l);
-    if (interaction) *interaction = si;
-    return emission->L<Radiance>(si, bsdf, w, lambda);
-}
-
-std::optional<LightLiSample> ThermalAreaLight::SampleLi(const LightSampleContext& ctx, Point2f u,
-                                                        const SampledWavelengths& lambda,
-                                                        bool allowIncompletePDF) const {
-    std::optional<LightLiSample> ls = SampleLiDeferred(ctx, u, lambda, allowIncompletePDF);
-    if (!ls) return {};
-    SurfaceInteraction si;
-    ls->L = EmissionAt(ls->pLight.p, -ls->wi, lambda, &si);
-    ls->deferredL = false;
-    if (!ls->L) return {};
-    ls->pLight = Interaction(si.p, si.n, si.uv);
     return ls;
 }
 

@@ -1,8 +1,9 @@
 // ThermalAreaLight: light sampling of a hot shape (for meshes, one triangle). The radiance it
-// returns is the surface's own ThermalEmission (thermal_emission.h) evaluated with the full
-// surface interaction at the sampled point (shading frame, uv, triangle) and the BSDF built
-// there exactly as at a ray hit (materials/surface_shader.h), so a point emits the same
-// radiance whether a path reaches it by light or by BSDF sampling.
+// returns is the surface's own ThermalEmission (thermal/thermal_emission.h) evaluated with the
+// full surface interaction at the sampled point (shading frame, uv, triangle) and the BSDF that
+// the receiver's shader builds there exactly as at a ray hit (DeferredL), so a point emits the
+// same radiance whether a path reaches it by light or by BSDF sampling. The light holds no
+// shader: the integrator hands in its own with each evaluation.
 //
 // Where the emitted power varies over the shape (a temperature texture on a sphere, a heat map
 // on a quad), points are sampled in proportion to it: a piecewise-constant distribution over
@@ -12,18 +13,19 @@
 // kMaxDistributionTriangles triangles rely on per-triangle selection by power alone.
 #pragma once
 
+#include <functional>
 #include <optional>
 
+#include "base/rng.h"
 #include "base/sampling.h"
+#include "core/geometry/alpha_mask.h"
 #include "lights/light_sample.h"
 #include "thermal/thermal_emission.h"
 
 namespace kiln {
 
 class Shape;
-class AlphaMask;
 class Material;
-class SurfaceShader;
 
 class ThermalAreaLight {
   public:
@@ -34,12 +36,15 @@ class ThermalAreaLight {
     struct Uniform {
         Float exitance, temperature;
     };
-    // shape, material (the shape's), emission and shader must outlive the light. Estimates
-    // the light's power and, where it varies over the shape and powerSampling is set, builds
+    // The BSDF at a surface point as the integrator builds it at a ray hit (render/scene.h's
+    // SceneShader::GetBSDF): used at creation only, for the power estimate.
+    using BSDFAt = std::function<BSDF(SurfaceInteraction&, SampledWavelengths&)>;
+    // shape, material (the shape's) and emission must outlive the light. Estimates the light's
+    // power from bsdfAt and, where it varies over the shape and powerSampling is set, builds
     // the sampling distribution; with `uniform` given, takes the caller's exitance instead.
     // alpha: the shape's cut-outs (nullptr: none), where sampled points emit nothing.
     ThermalAreaLight(const Shape* shape, const Material* material, const ThermalEmission* emission,
-                     const SurfaceShader* shader, std::optional<Uniform> uniform = std::nullopt,
+                     const BSDFAt& bsdfAt, std::optional<Uniform> uniform = std::nullopt,
                      bool powerSampling = true, const AlphaMask* alpha = nullptr);
 
     LightType Type() const { return LightType::Area; }
@@ -55,15 +60,25 @@ class ThermalAreaLight {
                const SampledWavelengths& lambda) const {
         return emission->L<Radiance>(si, bsdf, w, lambda);
     }
+    // A point and its pdf, with the radiance left to DeferredL (ls.deferredL).
     std::optional<LightLiSample> SampleLi(const LightSampleContext& ctx, Point2f u,
                                           const SampledWavelengths& lambda,
                                           bool allowIncompletePDF = false) const;
-    // The point and pdf of SampleLi, with the radiance left to DeferredL.
-    std::optional<LightLiSample> SampleLiDeferred(const LightSampleContext& ctx, Point2f u,
-                                                  const SampledWavelengths& lambda,
-                                                  bool allowIncompletePDF = false) const;
-    template <typename Radiance = SampledSpectrum>
-    Radiance DeferredL(const LightLiSample& ls, const SampledWavelengths& lambda) const;
+    // The radiance of a sample of SampleLi towards its receiver, with the BSDF that shader
+    // (any type with GetBSDF(SurfaceInteraction&, SampledWavelengths&), the integrator's)
+    // builds at the sampled point (on a copy of the wavelengths: the receiving path keeps all
+    // of its own). Nothing where the shape is cut out.
+    template <typename Radiance = SampledSpectrum, typename Shader>
+    Radiance DeferredL(const LightLiSample& ls, const SampledWavelengths& lambda,
+                       const Shader& shader) const {
+        Vector3f w = -ls.wi;
+        SurfaceInteraction si = InteractionAt(ls.pLight.p, 0, w);
+        // Cut out of the shape: nothing there to emit (rays never hit such points)
+        if (alpha && alpha->Masked(si, HashToUniform(Hash(ls.pLight.p)))) return {};
+        SampledWavelengths l = lambda;
+        BSDF bsdf = shader.GetBSDF(si, l);
+        return emission->L<Radiance>(si, bsdf, w, lambda);
+    }
     Float PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool allowIncompletePDF = false) const;
     // Emitted power over 360-830 nm, W (both sides), as estimated at creation.
     Float VisiblePower() const { return visiblePower; }
@@ -76,17 +91,12 @@ class ThermalAreaLight {
   private:
     // The full interaction at a point of the shape, with the shape's material and emission.
     SurfaceInteraction InteractionAt(Point3f p, Float time, Vector3f wo) const;
-    // Radiance leaving p towards w, from the BSDF there; the interaction if asked for.
-    template <typename Radiance = SampledSpectrum>
-    Radiance EmissionAt(Point3f p, Vector3f w, const SampledWavelengths& lambda,
-                        SurfaceInteraction* interaction) const;
     std::optional<Float> ParametricPDF(Point3f p) const;
 
     const Shape* shape;
     const AlphaMask* alpha = nullptr;
     const Material* material;
     const ThermalEmission* emission;
-    const SurfaceShader* shader;
     Float area = 0;
     Float visiblePower = 0, meanTemperature = 0;
     std::optional<PiecewiseConstant2D> distribution;

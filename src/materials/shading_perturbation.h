@@ -1,8 +1,8 @@
 // Bump and normal mapping (pbrt-v4's BumpMap and NormalMap): a material's "displacement" float
 // texture or "normalmap" image perturbs the shading frame at a surface point before its BSDF is
 // built. The integrator, light sampling and thermal emission all get the BSDF from
-// SurfaceShader::GetBSDF, so a bumped hot surface emits in the same perturbed frame it scatters
-// in.
+// the scene's shader (render/scene.h: SceneShader::GetBSDF), so a bumped hot surface emits in the
+// same perturbed frame it scatters in.
 #pragma once
 
 #include <optional>

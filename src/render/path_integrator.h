@@ -150,7 +150,7 @@ class PathIntegrator {
         if (!sampled) return {};
         const Light& light = scene.lights[size_t(sampled->index)];
         // The light's radiance is evaluated last, only for a usable sample
-        std::optional<LightLiSample> ls = light.SampleLiDeferred(ctx, uPoint, lambda, true);
+        std::optional<LightLiSample> ls = light.SampleLi(ctx, uPoint, lambda, true);
         if (!ls || ls->pdf == 0 || (!ls->deferredL && !ls->L)) return {};
 
         Vector3f wo = intr.wo, wi = ls->wi;
@@ -159,7 +159,7 @@ class PathIntegrator {
         Throughput f = bsdf.f<Throughput>(wo, wi);
         if (!f) return {};
         if (scene.aggregate->IntersectP(intr.SpawnRayTo(ls->pLight), 1 - ShadowEpsilon)) return {};
-        Spectrum Li = light.DeferredL<Spectrum>(*ls, lambda);
+        Spectrum Li = light.DeferredL<Spectrum>(*ls, lambda, *scene.shader);
         if (!Li) return {};
 
         Float lightPdf = sampled->p * ls->pdf;

@@ -23,7 +23,6 @@
 #include "lights/light_sampler.h"
 #include "materials/bxdfs/bsdf.h"
 #include "materials/material.h"
-#include "materials/surface_shader.h"
 #include "media/medium.h"
 #include "render/scene_description.h"
 #include "thermal/emission_model.h"
@@ -120,16 +119,22 @@ struct SceneFeatures {
     std::string ToString() const;
 };
 
-// The scene's SurfaceShader: the BSDF at a surface point, with the texture footprint of a
+// The scene's shader: the BSDF at a surface point exactly as the integrator builds it at a ray
+// hit (texture footprint, mix-material choice, bump or normal map), with the footprint of a
 // camera ray there (pbrt-v4's Camera::Approximate_dp_dxy, a function of the point alone, so
-// hits and light samples agree).
-class SceneShader : public SurfaceShader {
+// hits and light samples agree). Thermal light samples are evaluated with it
+// (ThermalAreaLight::DeferredL), so a point emits the same radiance however a path finds it.
+class SceneShader final {
   public:
     // footprintsAlways: compute footprints at every surface, not only where a texture uses
     // them (the generic path).
     SceneShader(const Camera* camera, int samplesPerPixel, bool footprintsAlways)
         : camera(camera), samplesPerPixel(samplesPerPixel), footprintsAlways(footprintsAlways) {}
-    BSDF GetBSDF(SurfaceInteraction& si, SampledWavelengths& lambda) const override;
+    // The BSDF at si (invalid for interface materials or si.material == nullptr). Sets si's
+    // texture footprint; si.material becomes the material that built the BSDF (a mix
+    // material's component chosen at si). May terminate lambda's secondary wavelengths
+    // (dispersion).
+    BSDF GetBSDF(SurfaceInteraction& si, SampledWavelengths& lambda) const;
 
   private:
     const Camera* camera;

@@ -7,6 +7,7 @@
 #include "core/geometry/triangle.h"
 #include "lights/thermal_area_light.h"
 #include "materials/materials.h"
+#include "render/scene.h"
 #include "textures/basic_textures.h"
 #include "textures/temperature_textures.h"
 #include "textures/texture_parameter_dictionary.h"
@@ -89,9 +90,12 @@ std::vector<int> ThermalEmitters::CreateLights(std::span<const Shape> shapes, co
     }
     // One light per shape, built in parallel (each estimates its power), kept in shape order
     std::vector<const ThermalAreaLight*> created(shapes.size());
+    ThermalAreaLight::BSDFAt bsdfAt = [this](SurfaceInteraction& si, SampledWavelengths& l) {
+        return shader.GetBSDF(si, l);
+    };
     tbb::parallel_for(size_t(0), shapes.size(), [&](size_t i) {
         const Shape* stored = arena.New<Shape>(shapes[i]);
-        created[i] = arena.New<ThermalAreaLight>(stored, heat.material, heat.emission, &shader,
+        created[i] = arena.New<ThermalAreaLight>(stored, heat.material, heat.emission, bsdfAt,
                                                  uniform, powerSampling, alpha);
     });
     for (const ThermalAreaLight* light : created) {

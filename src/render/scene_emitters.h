@@ -17,13 +17,14 @@
 #include "core/geometry/shape.h"
 #include "core/parser/diagnostics.h"
 #include "lights/light.h"
-#include "materials/surface_shader.h"
 #include "render/scene_description.h"
 #include "thermal/material_albedo.h"
 #include "thermal/thermal_emission.h"
 #include "thermal/thermal_properties.h"
 
 namespace kiln {
+
+class SceneShader;
 
 // What scene creation needs to know about one Shape directive's heat.
 struct ShapeHeat {
@@ -34,7 +35,7 @@ struct ShapeHeat {
 class ThermalEmitters {
   public:
     // powerSampling: sample points on shapes whose emission varies over them by power.
-    ThermalEmitters(const SurfaceShader& shader, EmissivityTables& tables, ObjectArena& arena,
+    ThermalEmitters(const SceneShader& shader, EmissivityTables& tables, ObjectArena& arena,
                     Diagnostics& diag, std::optional<EmissionModel> overrideModel,
                     bool powerSampling = true)
         : shader(shader),
@@ -62,7 +63,7 @@ class ThermalEmitters {
     const MaterialAlbedo* AlbedoOf(const Material* material, const FileLoc& loc);
     const Material* Black();
 
-    const SurfaceShader& shader;
+    const SceneShader& shader;
     EmissivityTables& tables;
     ObjectArena& arena;
     Diagnostics& diag;

@@ -239,7 +239,7 @@ class VolPathIntegrator {
         std::optional<SampledLight> sampled = scene.lightSampler->Sample(ctx, uLight);
         if (!sampled) return {};
         const Light& light = scene.lights[size_t(sampled->index)];
-        std::optional<LightLiSample> ls = light.SampleLiDeferred(ctx, uPoint, lambda, true);
+        std::optional<LightLiSample> ls = light.SampleLi(ctx, uPoint, lambda, true);
         if (!ls || ls->pdf == 0 || (!ls->deferredL && !ls->L)) return {};
         Float p_l = sampled->p * ls->pdf;
 
@@ -302,7 +302,7 @@ class VolPathIntegrator {
             lightRay = si->intr.SpawnRayTo(ls->pLight);
         }
 
-        Spectrum Li = light.DeferredL<Spectrum>(*ls, lambda);
+        Spectrum Li = light.DeferredL<Spectrum>(*ls, lambda, *scene.shader);
         if (!Li) return {};
         r_l *= r_p * p_l;
         r_u *= r_p * scatterPDF;

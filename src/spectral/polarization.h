@@ -161,6 +161,16 @@ inline MuellerMatrix operator*(const SampledSpectrum& a, const MuellerMatrix& m)
 
 // Frames
 //
+// Unit axis perpendicular to the plane containing n and w (both unit): normalize(n x w); when
+// w is parallel to n, a fixed axis perpendicular to n (the same for every such w).
+inline Vector3f PlaneAxis(Vector3f n, Vector3f w) {
+    Vector3f c = Cross(n, w);
+    Float len2 = LengthSquared(c);
+    if (len2 > 1e-12f) return c / std::sqrt(len2);
+    Vector3f x, y;
+    CoordinateSystem(n, &x, &y);
+    return x;
+}
 // The implicit reference x axis of light travelling along unit d (a unit vector perpendicular
 // to d, a fixed function of d).
 inline Vector3f StokesBasis(Vector3f d) {

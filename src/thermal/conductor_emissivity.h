@@ -30,18 +30,11 @@
 #include "materials/bxdfs/conductor_bxdf.h"
 #include "spectral/sampled_spectrum.h"
 #include "thermal/emissivity_tables.h"
+#include "thermal/surface_emission.h"
 
 namespace kiln {
 
 class ConductorMaterial;
-
-// The polarisation of what a BSDF reflects towards wo under uniform unpolarised illumination of
-// unit radiance: Stokes S1 and S2 with reference axis perpendicular to the plane of the normal
-// and wo (S0 is the albedo; S3 vanishes).
-struct ReflectedPolarization {
-    SampledSpectrum s1, s2;
-    explicit operator bool() const { return bool(s1) || bool(s2); }
-};
 
 class ConductorEmissivity {
   public:

@@ -81,34 +81,37 @@ SampledSpectrum MaterialAlbedo::EvaluateLocal(const Material* material, const BS
         kind);
 }
 
+SampledSpectrum BSDFReflectance::DirectionalAlbedo(Vector3f wo,
+                                                   const SampledWavelengths& lambda) const {
+    if (!bsdf) return SampledSpectrum(1.f);
+    return Clamp(albedo.EvaluateLocal(material, bsdf, wo, lambda), Float(0), Float(1));
+}
+
+ReflectedPolarization BSDFReflectance::LinearPolarization(Vector3f wo) const {
+    if (!bsdf) return {};
+    return albedo.LinearPolarizationLocal(material, bsdf, wo);
+}
+
 SampledSpectrum MaterialAlbedo::Evaluate(const Material* material, const BSDF& bsdf,
                                          Vector3f woRender,
                                          const SampledWavelengths& lambda) const {
-    if (!bsdf) return SampledSpectrum(1.f);
-    SampledSpectrum A = EvaluateLocal(material, bsdf, bsdf.RenderToLocal(woRender), lambda);
-    // Tables carry quadrature and interpolation errors of ~1e-5: keep A a fraction
-    return Clamp(A, Float(0), Float(1));
+    return Reflectance(material, bsdf).DirectionalAlbedo(bsdf.RenderToLocal(woRender), lambda);
 }
 
 SampledSpectrum MaterialAlbedo::Hemispherical(const Material* material, const BSDF& bsdf,
                                               const SampledWavelengths& lambda) const {
     if (!bsdf) return SampledSpectrum(1.f);
-    // 4-point Gauss-Legendre nodes and weights on [0, 1]
-    constexpr Float mus[4] = {0.0694318442f, 0.3300094782f, 0.6699905218f, 0.9305681558f};
-    constexpr Float ws[4] = {0.1739274226f, 0.3260725774f, 0.3260725774f, 0.1739274226f};
-    SampledSpectrum sum(0.f);
-    for (int i = 0; i < 4; ++i) {
-        Vector3f wo(std::sqrt(1 - mus[i] * mus[i]), 0, mus[i]);
-        sum += 2 * mus[i] * ws[i] *
-               Clamp(EvaluateLocal(material, bsdf, wo, lambda), Float(0), Float(1));
-    }
-    return sum;
+    return HemisphericalAlbedo(Reflectance(material, bsdf), lambda);
 }
 
 ReflectedPolarization MaterialAlbedo::LinearPolarization(const Material* material, const BSDF& bsdf,
                                                          Vector3f woRender) const {
     if (!bsdf) return {};
-    Vector3f wo = bsdf.RenderToLocal(woRender);
+    return LinearPolarizationLocal(material, bsdf, bsdf.RenderToLocal(woRender));
+}
+
+ReflectedPolarization MaterialAlbedo::LinearPolarizationLocal(const Material* material,
+                                                              const BSDF& bsdf, Vector3f wo) const {
     return std::visit(
         [&](const auto& k) -> ReflectedPolarization {
             using K = std::decay_t<decltype(k)>;
@@ -118,7 +121,7 @@ ReflectedPolarization MaterialAlbedo::LinearPolarization(const Material* materia
             } else if constexpr (std::is_same_v<K, Mix>) {
                 for (const auto& [component, albedo] : k.components)
                     if (component == material)
-                        return albedo->LinearPolarization(material, bsdf, woRender);
+                        return albedo->LinearPolarizationLocal(material, bsdf, wo);
             }
             return {};
         },

@@ -1,5 +1,7 @@
-// Thermal emission models and emissivity (Wilkie & Weidlich 2011, "A Physically Plausible
-// Model for Light Emission from Glowing Solid Objects").
+// kiln's answer to the thermal module's question about a surface (surface_emission.h): the
+// directional albedo A of the BSDF a kiln material built at a point, and the polarisation of
+// its reflection (Wilkie & Weidlich 2011, "A Physically Plausible Model for Light Emission
+// from Glowing Solid Objects").
 //
 // By Kirchhoff's law an opaque body in thermal equilibrium emits, in each direction and at each
 // wavelength, exactly what it absorbs: emissivity(wo, lambda) = 1 - A(wo, lambda), where A is
@@ -16,17 +18,13 @@
 //   coateddiffuse,
 //   coatedconductor:          tables of the layered walk's expectation (coated_emissivity.h)
 //   dielectric,
-//   thindielectric, interface: A = 1, they emit nothing: kiln has no volumetric absorption, so
-//                             a transparent body does not glow (a rough dielectric's single-
-//                             scattering energy loss is not emitted either)
+//   thindielectric, interface: A = 1, their surfaces emit nothing: a hot transparent body glows
+//                             from its interior medium (volume_emission.h) (a rough dielectric's
+//                             single-scattering energy loss is not emitted either)
 //   mix:                      the component chosen at the point
-// Polarisation (Kirchhoff per polarisation state): in a closed isothermal cavity the light a
-// surface reflects towards wo, Stokes B (A, a1, a2, 0) with reference axis perpendicular to
-// the plane of the shading normal and wo, plus what it emits must be unpolarised B, so it emits
-// B (1 - A, -a1, -a2, 0): polarised parallel to that plane where its reflection is polarised
-// perpendicular to it. LinearPolarization gives (a1, a2): for conductors see
-// conductor_emissivity.h; zero for depolarising BSDFs (diffuse, coated: their reflection is
-// unpolarised).
+// Polarisation (surface_emission.h): LinearPolarization gives (a1, a2) of the reflection; for
+// conductors see conductor_emissivity.h; zero for depolarising BSDFs (diffuse, coated: their
+// reflection is unpolarised).
 //
 // Rough conductors use pbrt-v4's single-scattering microfacet model, whose albedo misses the
 // multiply scattered energy (for a perfect mirror metal 12 % at alpha 0.3, 69 % at alpha 1,
@@ -52,10 +50,33 @@
 namespace kiln {
 
 class Material;
+class MaterialAlbedo;
+
+// The BSDF a material built at a point, as the thermal module's SurfaceReflectance
+// (surface_emission.h): directions in the BSDF's local shading frame.
+class BSDFReflectance {
+  public:
+    BSDFReflectance(const MaterialAlbedo& albedo, const Material* material, const BSDF& bsdf)
+        : albedo(albedo), material(material), bsdf(bsdf) {}
+    // A(wo) in [0, 1] (the tables carry quadrature and interpolation errors of ~1e-5)
+    SampledSpectrum DirectionalAlbedo(Vector3f wo, const SampledWavelengths& lambda) const;
+    ReflectedPolarization LinearPolarization(Vector3f wo) const;
+
+  private:
+    const MaterialAlbedo& albedo;
+    const Material* material;
+    const BSDF& bsdf;
+};
+static_assert(SurfaceReflectance<BSDFReflectance>);
 
 // The directional albedo of the BSDFs one material builds.
 class MaterialAlbedo {
   public:
+    // The reflectance of bsdf, which `material` built at a surface point (for a mix material,
+    // the component chosen there: SurfaceInteraction::material after the scene's GetBSDF).
+    BSDFReflectance Reflectance(const Material* material, const BSDF& bsdf) const {
+        return BSDFReflectance(*this, material, bsdf);
+    }
     // A of bsdf, which `material` built at a surface point (for a mix material, the component
     // chosen there: SurfaceInteraction::material after the scene's GetBSDF), seen from woRender
     // (render space). Per wavelength, in [0, 1]; 1 for an invalid BSDF.
@@ -86,8 +107,11 @@ class MaterialAlbedo {
     explicit MaterialAlbedo(Kind kind) : kind(std::move(kind)) {}
 
   private:
+    friend class BSDFReflectance;
     SampledSpectrum EvaluateLocal(const Material* material, const BSDF& bsdf, Vector3f wo,
                                   const SampledWavelengths& lambda) const;
+    ReflectedPolarization LinearPolarizationLocal(const Material* material, const BSDF& bsdf,
+                                                  Vector3f wo) const;
     Kind kind;
 };
 

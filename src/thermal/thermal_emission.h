@@ -1,16 +1,9 @@
-// ThermalEmission: what makes a surface glow because it is hot. A property of the surface
+// ThermalEmission: what makes a kiln surface glow because it is hot. A property of the surface
 // (its temperature field, emission model and material), evaluated at any point with the BSDF
-// the integrator scatters with there:
-//   kirchhoff (default): Le = B(lambda, T) (1 - A(wo, lambda)), A the directional albedo of
-//                        that BSDF in its shading frame (thermal/material_albedo.h)
-//   additive:            Le = B(lambda, T)  (the surface also reflects as usual)
-//   diffuse:             Le = B(lambda, T)  (the surface is black: scene creation gives it a
-//                        non-reflecting material)
-// with B Planck's spectral radiance in W m^-2 sr^-1 nm^-1 (spectral/planck.h) times "scale"
-// (1: absolute units). Opaque surfaces emit on both sides, as their BSDFs reflect on both.
-// In polarised transport (Radiance = Stokes) kirchhoff emission is polarised as Kirchhoff's
-// law per polarisation state requires (emissivity.h); additive and diffuse emission are
-// unpolarised, as in the paper.
+// the integrator scatters with there, through the thermal module's surface interface
+// (surface_emission.h: models, Kirchhoff per polarisation state) with the material's albedo
+// (material_albedo.h). The temperature is any float texture, in kelvin. Opaque surfaces emit
+// on both sides, as their BSDFs reflect on both.
 #pragma once
 
 #include "base/interaction.h"
@@ -25,7 +18,8 @@ class MaterialAlbedo;
 
 class ThermalEmission {
   public:
-    // temperature: kelvin; albedo: the material's (needed for kirchhoff, else may be null).
+    // temperature: kelvin; albedo: the material's (needed for kirchhoff, else may be null);
+    // scale: times B (1: absolute units).
     ThermalEmission(FloatTexture temperature, EmissionModel model, const MaterialAlbedo* albedo,
                     Float scale = 1)
         : temperature(temperature), model(model), albedo(albedo), scale(scale) {}
@@ -38,14 +32,13 @@ class ThermalEmission {
     Float Temperature(const SurfaceInteraction& si) const;
 
     // Radiance leaving si towards w, W m^-2 sr^-1 nm^-1. bsdf: the BSDF at si, which
-    // si.material built (SurfaceShader::GetBSDF); none (an interface) emits nothing.
+    // si.material built (the scene's GetBSDF); none (an interface) emits nothing.
     // Radiance: SampledSpectrum, or Stokes in the implicit frame of w (polarization.h).
     template <typename Radiance = SampledSpectrum>
     Radiance L(const SurfaceInteraction& si, const BSDF& bsdf, Vector3f w,
                const SampledWavelengths& lambda) const;
-    // Radiant exitance at si over 360-830 nm, both sides, W m^-2: 2 pi integral of
-    // B(lambda, T) times the hemispherical emissivity, by an 8-point midpoint rule in
-    // wavelength (for the power estimates light selection uses).
+    // Radiant exitance at si over 360-830 nm, both sides, W m^-2 (surface_emission.h's
+    // VisibleExitance: for the power estimates light selection uses).
     Float VisibleExitance(const SurfaceInteraction& si, const BSDF& bsdf) const;
 
   private:

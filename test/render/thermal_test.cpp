@@ -484,9 +484,10 @@ TEST(ThermalTest, LightSamplesEmitWhatRayHitsThereEmit) {
         SampledWavelengths l = lambda;
         BSDF bsdf = s->GetBSDF(hit->intr, l);
         SampledSpectrum Le = s->SurfaceLe(hit->intr, bsdf, -ls->wi, lambda);
+        SampledSpectrum Ls = light.DeferredL(*ls, lambda, *s->shader);
         ++compared;
         for (int i = 0; i < NSpectrumSamples; ++i)
-            if (std::abs(Le[i] - ls->L[i]) > 1e-3f * std::max(Le[i], ls->L[i])) {
+            if (std::abs(Le[i] - Ls[i]) > 1e-3f * std::max(Le[i], Ls[i])) {
                 ++mismatches;
                 break;
             }

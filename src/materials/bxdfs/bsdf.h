@@ -59,6 +59,7 @@ class BSDF {
     BxDFFlags Flags() const { return bxdf.Flags(); }
     void Regularize() { bxdf.Regularize(); }
 
+    const Frame& ShadingFrame() const { return shadingFrame; }
     Vector3f RenderToLocal(Vector3f v) const { return shadingFrame.ToLocal(v); }
     Vector3f LocalToRender(Vector3f v) const { return shadingFrame.FromLocal(v); }
 

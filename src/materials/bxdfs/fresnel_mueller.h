@@ -19,17 +19,6 @@
 
 namespace kiln {
 
-// Unit axis perpendicular to the plane containing n and w (both unit): normalize(n x w); when
-// w is parallel to n, a fixed axis perpendicular to n (the same for every such w).
-inline Vector3f PlaneAxis(Vector3f n, Vector3f w) {
-    Vector3f c = Cross(n, w);
-    Float len2 = LengthSquared(c);
-    if (len2 > 1e-12f) return c / std::sqrt(len2);
-    Vector3f x, y;
-    CoordinateSystem(n, &x, &y);
-    return x;
-}
-
 // Reflection from a smooth interface with complex relative IOR eta + i k (per wavelength) at
 // incidence cosTheta_i (clamped to [0, 1]), reference axes s: M00 = (Rs + Rp) / 2, the
 // unpolarised reflectance, M01 = (Rs - Rp) / 2, the phase difference between the s and p waves
