@@ -1,0 +1,3 @@
+// Fixture
+#pragma once
+#include "thermal/surface_emission.h"

@@ -1,0 +1,2 @@
+// Fixture: the host interface including a kiln material
+#include "materials/material.h"

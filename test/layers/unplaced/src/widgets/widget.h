@@ -1,0 +1,2 @@
+// Fixture: a folder with no layer
+#pragma once
