@@ -24,15 +24,10 @@ double MinConcentration(const Shape& shape) {
     return 1.25;
 }
 
-// Integral of B(lambda, T) over 360-830 nm (same midpoint rule as VisibleExitance), W m^-2 sr^-1.
+// Integral of B(lambda, T) over 360-830 nm, W m^-2 sr^-1 (as VisibleExitance integrates it)
 Float VisibleBlackbody(Float T) {
-    double sum = 0;
-    for (Float u : {1.f / 16, 9.f / 16}) {
-        SampledSpectrum B =
-            planck_radiance(SampledWavelengths::SampleUniform(u, Lambda_min, Lambda_max), T);
-        for (int i = 0; i < NSpectrumSamples; ++i) sum += B[i];
-    }
-    return Float(sum * (Lambda_max - Lambda_min) / 8);
+    return Float(std::min(planck_band_radiance(Lambda_min, Lambda_max, T),
+                          double(std::numeric_limits<Float>::max())));
 }
 
 }  // namespace

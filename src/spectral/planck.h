@@ -45,4 +45,12 @@ double planck_peak_wavelength_nm(double T_kelvin);
 // Radiance integrated over all wavelengths, sigma T^4 / pi, W m^-2 sr^-1 (exitance / pi).
 double stefan_boltzmann_radiance(double T_kelvin);
 
+// Radiance integrated over the band [lambda1_nm, lambda2_nm], W m^-2 sr^-1: in x = c2 / (lambda
+// T), 2 k^4 T^4 / (h^3 c^2) times the integral of x^3 / (e^x - 1) between the band's ends, by
+// its series sum e^(-n x) / n (x^3 + 3 x^2 / n + 6 x / n^2 + 6 / n^3) for x >= 1 and 8-point
+// Gauss-Legendre quadrature of the smooth integrand below 1 (relative error below 1e-12), and
+// Rayleigh-Jeans where x < 1e-12 throughout. 0 for T <= 0, NaN or an empty band; at most
+// DBL_MAX.
+double planck_band_radiance(double lambda1_nm, double lambda2_nm, double T_kelvin);
+
 }  // namespace kiln

@@ -15,7 +15,9 @@
 // perpendicular to it. Additive and diffuse emission are unpolarised, as in the paper.
 #pragma once
 
+#include <algorithm>
 #include <concepts>
+#include <limits>
 #include <type_traits>
 
 #include "base/vecmath.h"
@@ -80,24 +82,31 @@ SampledSpectrum HemisphericalAlbedo(const R& r, const SampledWavelengths& lambda
     return sum;
 }
 
-// Radiant exitance over 360-830 nm from both sides, W m^-2: 2 pi times the integral of
-// scale B(lambda, T) (1 - HemisphericalAlbedo) for kirchhoff, of scale B(lambda, T) for
-// additive and diffuse, by an 8-point midpoint rule in wavelength. For power estimates (light
-// selection), not for radiance.
+// Radiant exitance over 360-830 nm from both sides, W m^-2: 2 pi scale times the integral of
+// B(lambda, T) over the band (exact: planck_band_radiance) for additive and diffuse; for
+// kirchhoff times the hemispherical emissivity 1 - HemisphericalAlbedo averaged with weights B
+// at the midpoints of 8 equal intervals of the band (exact for an emissivity constant over
+// the band). For power estimates (light selection), not for radiance.
 template <SurfaceReflectance R>
 Float VisibleExitance(EmissionModel model, Float T, Float scale, const R& r) {
     if (model == EmissionModel::None || !(T > 0)) return 0;
-    // Midpoints of 8 equal intervals of 360-830 nm, as two sets of four wavelengths
     constexpr Float lambdaMin = 360, lambdaMax = 830;
-    double sum = 0;
-    for (Float u : {1.f / 16, 9.f / 16}) {
-        SampledWavelengths lambda = SampledWavelengths::SampleUniform(u, lambdaMin, lambdaMax);
-        SampledSpectrum M = scale * planck_radiance(lambda, T);
-        if (model == EmissionModel::Kirchhoff)
-            M *= SampledSpectrum(1.f) - HemisphericalAlbedo(r, lambda);
-        for (int i = 0; i < NSpectrumSamples; ++i) sum += M[i];
+    double M = 2 * Pi * double(scale) * planck_band_radiance(lambdaMin, lambdaMax, T);
+    if (model == EmissionModel::Kirchhoff) {
+        // The midpoints (2k + 1) / 16 of the band, as two sets of four equally spaced ones
+        double sumB = 0, sumBe = 0;
+        for (Float u : {1.f / 16, 3.f / 16}) {
+            SampledWavelengths lambda = SampledWavelengths::SampleUniform(u, lambdaMin, lambdaMax);
+            SampledSpectrum B = planck_radiance(lambda, T);
+            SampledSpectrum e = SampledSpectrum(1.f) - HemisphericalAlbedo(r, lambda);
+            for (int i = 0; i < NSpectrumSamples; ++i) {
+                sumB += B[i];
+                sumBe += double(B[i]) * e[i];
+            }
+        }
+        M *= sumB > 0 ? sumBe / sumB : 0;
     }
-    return Float(2 * Pi * sum * (lambdaMax - lambdaMin) / 8);
+    return Float(std::min(M, double(std::numeric_limits<Float>::max())));
 }
 
 }  // namespace kiln

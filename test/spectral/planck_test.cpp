@@ -155,3 +155,63 @@ TEST(Planck, BlackbodySpectrum) {
     EXPECT_NEAR(bb(550) / bb(650), planck_radiance(550, 2856) / planck_radiance(650, 2856), 1e-5);
     EXPECT_EQ(BlackbodySpectrum(0)(500), 0);
 }
+
+namespace kiln {
+namespace {
+
+// The band integral against composite Gauss-Legendre quadrature of planck_radiance (1000
+// panels of 8 points: converged to about 1e-13 for these bands), from a cold furnace to a
+// star, over the visible band, a narrow pyrometer band and thermal infrared.
+TEST(PlanckBand, MatchesQuadratureOfTheSpectralRadiance) {
+    struct Band {
+        double l1, l2;
+    };
+    for (Band b : {Band{360, 830}, Band{650, 660}, Band{8000, 14000}, Band{100, 100000}})
+        for (double T : {300.0, 800.0, 1500.0, 3000.0, 6000.0, 1e5, 1e7}) {
+            double sum = 0;
+            constexpr int panels = 1000;
+            // 8-point Gauss-Legendre nodes and weights on [-1, 1]
+            const double x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                                 0.9602898564975363};
+            const double w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                                 0.1012285362903763};
+            double h = (b.l2 - b.l1) / panels;
+            for (int p = 0; p < panels; ++p) {
+                double mid = b.l1 + (p + 0.5) * h;
+                for (int i = 0; i < 4; ++i)
+                    sum += h / 2 * w[i] *
+                           (planck_radiance(mid - h / 2 * x[i], T) +
+                            planck_radiance(mid + h / 2 * x[i], T));
+            }
+            double band = planck_band_radiance(b.l1, b.l2, T);
+            EXPECT_NEAR(band, sum, 1e-9 * sum + 1e-300) << b.l1 << "-" << b.l2 << " nm, " << T;
+        }
+}
+
+TEST(PlanckBand, AllWavelengthsGiveStefanBoltzmann) {
+    for (double T : {1.0, 300.0, 5772.0, 1e6})
+        EXPECT_NEAR(planck_band_radiance(0, 1e15, T), stefan_boltzmann_radiance(T),
+                    1e-9 * stefan_boltzmann_radiance(T))
+            << T;
+}
+
+TEST(PlanckBand, FiniteForAnyTemperatureAndBand) {
+    EXPECT_EQ(planck_band_radiance(360, 830, 0), 0);
+    EXPECT_EQ(planck_band_radiance(360, 830, -10), 0);
+    EXPECT_EQ(planck_band_radiance(360, 830, std::nan("")), 0);
+    EXPECT_EQ(planck_band_radiance(830, 360, 1500), 0);
+    EXPECT_EQ(planck_band_radiance(360, 830, 1e-3), 0);  // underflows to exactly 0
+    double previous = 0;
+    for (double T : {1e3, 1e10, 1e38, 1e100, 1e300, DBL_MAX}) {
+        double band = planck_band_radiance(360, 830, T);
+        EXPECT_TRUE(std::isfinite(band)) << T;
+        EXPECT_GE(band, previous) << T;
+        previous = band;
+    }
+    // Rayleigh-Jeans where hc / (lambda k T) is tiny: linear in T
+    EXPECT_NEAR(planck_band_radiance(360, 830, 2e20) / planck_band_radiance(360, 830, 1e20), 2,
+                1e-9);
+}
+
+}  // namespace
+}  // namespace kiln
