@@ -36,19 +36,19 @@ def render(binary, scene, spp, seed, out):
 
 
 def averages(exr):
-    """Per region, per channel average of the image (oiiotool --printstats)"""
+    """Per region, per channel average of the image (one oiiotool --printstats per region)"""
     info = subprocess.run(["oiiotool", "--info", exr], capture_output=True, text=True).stdout
     w, h = map(int, re.search(r"(\d+) x\s+(\d+)", info).groups())
-    result = {}
-    for name, q in REGIONS.items():
-        args = ["oiiotool", exr]
+    args = ["oiiotool"]
+    for q in REGIONS.values():
+        args += ["-i", exr]
         if q:
             qw, qh = w // 2, h // 2
             args += ["--cut", f"{qw}x{qh}+{q[0] * qw}+{q[1] * qh}"]
-        out = subprocess.run(args + ["--printstats"], capture_output=True, text=True).stdout
-        line = re.search(r"Stats Avg: ([-0-9.e ]+)", out).group(1)
-        result[name] = [float(v) for v in line.split()[:3]]
-    return result
+        args += ["--printstats"]
+    out = subprocess.run(args, capture_output=True, text=True).stdout
+    lines = re.findall(r"Stats Avg: ([-0-9.e ]+)", out)
+    return {name: [float(v) for v in line.split()[:3]] for name, line in zip(REGIONS, lines)}
 
 
 def z_score(a, b):

@@ -185,3 +185,38 @@ TEST(PolarizedBSDF, SmoothSamplesInRenderFramesMatchTheLocalMatrix) {
     EXPECT_NEAR(out[0][0] * cosTheta, R.Rs, 1e-4f);
     EXPECT_NEAR(out[1][0] * cosTheta, R.Rs, 1e-4f);
 }
+
+// What polarised transport does with a BxDF is declared, never a silent default: every BxDF of
+// the closed set polarises or declares that it depolarises, and a BxDF that does neither (or
+// both) is refused by the concept the closed set asserts.
+namespace {
+struct SilentBxDF {  // neither MuellerF nor kDepolarizes
+    SampledSpectrum f(Vector3f, Vector3f, TransportMode) const { return {}; }
+};
+struct AmbiguousBxDF {  // both
+    static constexpr bool kDepolarizes = true;
+    MuellerMatrix MuellerF(Vector3f, Vector3f, TransportMode) const { return {}; }
+    MuellerMatrix MuellerSample(Vector3f, const BSDFSample&, TransportMode) const { return {}; }
+};
+struct HalfPolarizingBxDF {  // MuellerF without MuellerSample
+    MuellerMatrix MuellerF(Vector3f, Vector3f, TransportMode) const { return {}; }
+};
+}  // namespace
+
+TEST(PolarizedBxDF, EveryBxDFDeclaresWhatItDoesToPolarisation) {
+    static_assert(!PolarizationDefinedBxDF<SilentBxDF>);
+    static_assert(!PolarizationDefinedBxDF<AmbiguousBxDF>);
+    static_assert(!PolarizationDefinedBxDF<HalfPolarizingBxDF>);
+    static_assert(PolarizingBxDF<ConductorBxDF> && PolarizingBxDF<DielectricBxDF> &&
+                  PolarizingBxDF<ThinDielectricBxDF> && PolarizingBxDF<PolarizingFilterBxDF>);
+    static_assert(DepolarizingBxDF<DiffuseBxDF> && DepolarizingBxDF<CoatedDiffuseBxDF> &&
+                  DepolarizingBxDF<CoatedConductorBxDF> && DepolarizingBxDF<HairBxDF>);
+    // A depolariser's Mueller matrix is f diag(1, 0, 0, 0)
+    BxDF diffuse(DiffuseBxDF(SampledSpectrum(0.5f)));
+    MuellerMatrix M = diffuse.f<MuellerMatrix>(Vector3f(0, 0, 1), Vector3f(0.6f, 0, 0.8f),
+                                               TransportMode::Radiance);
+    EXPECT_FLOAT_EQ(M(0, 0)[0], 0.5f / Pi);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (i || j) EXPECT_EQ(M(i, j)[0], 0);
+}

@@ -4,13 +4,16 @@
 //
 // f and Sample_f take the type of value that transport carries (Mitsuba 3's variants):
 // SampledSpectrum (unpolarised, the default) or MuellerMatrix (polarised: frames as in
-// fresnel_mueller.h). A BxDF with polarising interfaces provides MuellerF and MuellerSample;
-// the others (diffuse, layered) depolarise: their Mueller matrix is the ideal depolariser
-// f diag(1, 0, 0, 0), which needs no frame. Sampling is the same in both variants: the
-// polarised sample is the unpolarised one with its Mueller value, so both make the same
-// random decisions and M00 equals the unpolarised value.
+// fresnel_mueller.h). Every BxDF says which it is: one with polarising interfaces provides
+// MuellerF and MuellerSample (PolarizingBxDF); the others (diffuse, layered, hair) declare
+// `static constexpr bool kDepolarizes = true` (DepolarizingBxDF): their Mueller matrix is the
+// ideal depolariser f diag(1, 0, 0, 0), which needs no frame. A BxDF that is neither, or both,
+// does not compile into the closed set (static_assert below). Sampling is the same in both
+// variants: the polarised sample is the unpolarised one with its Mueller value, so both make the
+// same random decisions and M00 equals the unpolarised value.
 #pragma once
 
+#include <concepts>
 #include <optional>
 #include <span>
 #include <type_traits>
@@ -28,11 +31,34 @@
 
 namespace kiln {
 
+// A BxDF that evaluates and samples its Mueller matrix (polarised transport).
+template <typename B>
+concept PolarizingBxDF = requires(const B& b, Vector3f w, const BSDFSample& bs,
+                                  TransportMode mode) {
+    { b.MuellerF(w, w, mode) } -> std::same_as<MuellerMatrix>;
+    { b.MuellerSample(w, bs, mode) } -> std::same_as<MuellerMatrix>;
+};
+// A BxDF that declares that it depolarises.
+template <typename B>
+concept DepolarizingBxDF = requires {
+    requires B::kDepolarizes;
+};
+// Exactly one of the two: what polarised transport does with it is never a silent default.
+template <typename B>
+concept PolarizationDefinedBxDF = PolarizingBxDF<B>
+!= DepolarizingBxDF<B>;
+
 class BxDF {
   public:
     using Variant =
         std::variant<DiffuseBxDF, ConductorBxDF, DielectricBxDF, ThinDielectricBxDF,
                      CoatedDiffuseBxDF, CoatedConductorBxDF, PolarizingFilterBxDF, HairBxDF>;
+
+    static_assert(
+        []<typename... Ts>(std::variant<Ts...>*) {
+            return (PolarizationDefinedBxDF<Ts> && ...);
+        }(static_cast<Variant*>(nullptr)),
+        "every BxDF provides MuellerF and MuellerSample or declares kDepolarizes (bxdf.h)");
 
     BxDF() = default;  // a black DiffuseBxDF
     template <typename T>
@@ -46,7 +72,7 @@ class BxDF {
         } else {
             return std::visit(
                 [&](const auto& b) {
-                    if constexpr (requires { b.MuellerF(wo, wi, mode); })
+                    if constexpr (PolarizingBxDF<std::decay_t<decltype(b)>>)
                         return b.MuellerF(wo, wi, mode);
                     else
                         return MuellerMatrix::Depolarizer(b.f(wo, wi, mode));
@@ -66,7 +92,7 @@ class BxDF {
                 [&](const auto& b) -> std::optional<BSDFSampleOf<Value>> {
                     std::optional<BSDFSample> bs = b.Sample_f(wo, uc, u, mode, sampleFlags);
                     if (!bs) return {};
-                    if constexpr (requires { b.MuellerSample(wo, *bs, mode); })
+                    if constexpr (PolarizingBxDF<std::decay_t<decltype(b)>>)
                         return BSDFSampleOf<Value>(*bs, b.MuellerSample(wo, *bs, mode));
                     else
                         return BSDFSampleOf<Value>(*bs, MuellerMatrix::Depolarizer(bs->f));

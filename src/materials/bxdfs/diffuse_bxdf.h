@@ -10,6 +10,9 @@ namespace kiln {
 // f = R / pi (sr^-1) on the side of wo; R is the hemispherical reflectance in [0, 1].
 class DiffuseBxDF {
   public:
+    // Lambertian reflection depolarises (bxdf.h: the ideal depolariser f diag(1, 0, 0, 0)).
+    static constexpr bool kDepolarizes = true;
+
     DiffuseBxDF() = default;
     explicit DiffuseBxDF(SampledSpectrum R) : R(R) {}
 

@@ -22,6 +22,8 @@ namespace kiln {
 class HairBxDF {
   public:
     static constexpr int pMax = 3;
+    // Scattering in the fibre is tracked unpolarised: the hair BSDF depolarises (bxdf.h).
+    static constexpr bool kDepolarizes = true;
 
     // h in [-1, 1]; eta: the fibre's refractive index; sigma_a: absorption per unit diameter;
     // beta_m, beta_n in [0, 1]: longitudinal and azimuthal roughness; alpha: scale tilt

@@ -78,6 +78,10 @@ enum class LayeredMIS { Kiln, PbrtV4 };
 template <typename TopBxDF, typename BottomBxDF, bool twoSided>
 class LayeredBxDF {
   public:
+    // The random walk between the layers is tracked unpolarised, so the layered BSDF
+    // depolarises (bxdf.h), as Wilkie & Weidlich's coated surfaces' unpolarised reflection.
+    static constexpr bool kDepolarizes = true;
+
     LayeredBxDF() = default;
     // thickness in mean free paths; maxDepth bounds the random walk; nSamples walks per f/PDF.
     LayeredBxDF(TopBxDF top, BottomBxDF bottom, Float thickness, const SampledSpectrum& albedo,
