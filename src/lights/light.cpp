@@ -7,23 +7,21 @@ namespace kiln {
 
 std::optional<LightBounds> Light::Bounds() const {
     // The emitter's extent and normal cone; phi is filled in below
-    std::optional<LightBounds> lb = std::visit(
-        [&](auto l) -> std::optional<LightBounds> {
-            using T = std::remove_cv_t<std::remove_pointer_t<decltype(l)>>;
-            if constexpr (std::is_same_v<T, PointLight>) {
-                return LightBounds(Bounds3f(l->Position()), Vector3f(0, 0, 1), 0, -1, 0, false);
-            } else if constexpr (std::is_same_v<T, SpotLight>) {
-                return l->Bounds();
-            } else if constexpr (requires { l->GetShape(); }) {
-                auto [w, cosTheta] = l->GetShape().NormalBounds();
-                bool twoSided = true;
-                if constexpr (requires { l->TwoSided(); }) twoSided = l->TwoSided();
-                return LightBounds(l->GetShape().Bounds(), w, 0, cosTheta, 0, twoSided);
-            } else {
-                return std::nullopt;  // at infinity
-            }
-        },
-        kind);
+    std::optional<LightBounds> lb = Dispatch([&](auto l) -> std::optional<LightBounds> {
+        using T = std::remove_cv_t<std::remove_pointer_t<decltype(l)>>;
+        if constexpr (std::is_same_v<T, PointLight>) {
+            return LightBounds(Bounds3f(l->Position()), Vector3f(0, 0, 1), 0, -1, 0, false);
+        } else if constexpr (std::is_same_v<T, SpotLight>) {
+            return l->Bounds();
+        } else if constexpr (requires { l->GetShape(); }) {
+            auto [w, cosTheta] = l->GetShape().NormalBounds();
+            bool twoSided = true;
+            if constexpr (requires { l->TwoSided(); }) twoSided = l->TwoSided();
+            return LightBounds(l->GetShape().Bounds(), w, 0, cosTheta, 0, twoSided);
+        } else {
+            return std::nullopt;  // at infinity
+        }
+    });
     if (lb) lb->phi = Power();
     return lb;
 }

@@ -17,6 +17,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "base/closed_set.h"
 #include "base/object_arena.h"
 #include "base/transform.h"
 #include "lights/diffuse_area_light.h"
@@ -47,23 +48,20 @@ class Shape;
 class Diagnostics;
 struct FileLoc;
 
-class Light {
+// The closed set: add a kind here (and its header above) to add a light type.
+class Light
+    : public ClosedSet<const PointLight*, const SpotLight*, const DistantLight*,
+                       const DiffuseAreaLight*, KILN_THERMAL_LIGHT_KIND const UniformInfiniteLight*,
+                       const ImageInfiniteLight*> {
   public:
-    // The closed set: add a kind here (and its header above) to add a light type.
-    using Kind =
-        std::variant<const PointLight*, const SpotLight*, const DistantLight*,
-                     const DiffuseAreaLight*, KILN_THERMAL_LIGHT_KIND const UniformInfiniteLight*,
-                     const ImageInfiniteLight*>;
-
-    template <typename T>
-    requires std::is_constructible_v<Kind, const T*> Light(const T* light) : kind(light) {}
+    using ClosedSet::ClosedSet;
 
     LightType Type() const {
-        return std::visit([](auto l) { return l->Type(); }, kind);
+        return Dispatch([](auto l) { return l->Type(); });
     }
     // Emitted power, W nm^-1 at each wavelength. Infinite and distant lights need Preprocess.
     SampledSpectrum Phi(const SampledWavelengths& lambda) const {
-        return std::visit([&](auto l) { return l->Phi(lambda); }, kind);
+        return Dispatch([&](auto l) { return l->Phi(lambda); });
     }
     // Incident radiance at ctx.p from a direction sampled by solid angle (pdf per sr; 1 for
     // delta lights); nullopt if no light arrives or the sample is invalid. A light whose
@@ -73,8 +71,7 @@ class Light {
     std::optional<LightLiSample> SampleLi(const LightSampleContext& ctx, Point2f u,
                                           const SampledWavelengths& lambda,
                                           bool allowIncompletePDF = false) const {
-        return std::visit([&](auto l) { return l->SampleLi(ctx, u, lambda, allowIncompletePDF); },
-                          kind);
+        return Dispatch([&](auto l) { return l->SampleLi(ctx, u, lambda, allowIncompletePDF); });
     }
     // The radiance of a sample of SampleLi: its L unless deferred, else evaluated with the BSDF
     // that shader (the integrator's: GetBSDF(SurfaceInteraction&, SampledWavelengths&)) builds
@@ -84,19 +81,17 @@ class Light {
     Radiance DeferredL(const LightLiSample& ls, const SampledWavelengths& lambda,
                        const Shader& shader) const {
         if (!ls.deferredL) return Radiance(ls.L);
-        return std::visit(
-            [&](auto l) -> Radiance {
-                if constexpr (requires { l->template DeferredL<Radiance>(ls, lambda, shader); })
-                    return l->template DeferredL<Radiance>(ls, lambda, shader);
-                else
-                    return Radiance(ls.L);
-            },
-            kind);
+        return Dispatch([&](auto l) -> Radiance {
+            if constexpr (requires { l->template DeferredL<Radiance>(ls, lambda, shader); })
+                return l->template DeferredL<Radiance>(ls, lambda, shader);
+            else
+                return Radiance(ls.L);
+        });
     }
     // Density per sr with which SampleLi would pick wi (0 for delta lights).
     Float PDF_Li(const LightSampleContext& ctx, Vector3f wi,
                  bool allowIncompletePDF = false) const {
-        return std::visit([&](auto l) { return l->PDF_Li(ctx, wi, allowIncompletePDF); }, kind);
+        return Dispatch([&](auto l) { return l->PDF_Li(ctx, wi, allowIncompletePDF); });
     }
     // Area lights: radiance leaving si, a point of the light's shape, towards w; bsdf is the
     // BSDF at si (thermal emission derives from it). 0 for the other kinds. Radiance as for
@@ -104,27 +99,23 @@ class Light {
     template <typename Radiance = SampledSpectrum>
     Radiance L(const SurfaceInteraction& si, const BSDF& bsdf, Vector3f w,
                const SampledWavelengths& lambda) const {
-        return std::visit(
-            [&](auto l) -> Radiance {
-                if constexpr (requires { l->template L<Radiance>(si, bsdf, w, lambda); })
-                    return l->template L<Radiance>(si, bsdf, w, lambda);
-                else if constexpr (requires { l->L(si, bsdf, w, lambda); })
-                    return Radiance(l->L(si, bsdf, w, lambda));
-                else
-                    return {};
-            },
-            kind);
+        return Dispatch([&](auto l) -> Radiance {
+            if constexpr (requires { l->template L<Radiance>(si, bsdf, w, lambda); })
+                return l->template L<Radiance>(si, bsdf, w, lambda);
+            else if constexpr (requires { l->L(si, bsdf, w, lambda); })
+                return Radiance(l->L(si, bsdf, w, lambda));
+            else
+                return {};
+        });
     }
     // Infinite lights: radiance arriving along a ray that leaves the scene. 0 for the others.
     SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const {
-        return std::visit(
-            [&](auto l) -> SampledSpectrum {
-                if constexpr (requires { l->Le(ray, lambda); })
-                    return l->Le(ray, lambda);
-                else
-                    return SampledSpectrum(0.f);
-            },
-            kind);
+        return Dispatch([&](auto l) -> SampledSpectrum {
+            if constexpr (requires { l->Le(ray, lambda); })
+                return l->Le(ray, lambda);
+            else
+                return SampledSpectrum(0.f);
+        });
     }
     // The light's weight for light selection: its power over 360-830 nm, W (pbrt-v4: Phi /
     // pdf averaged over the four wavelengths SampleVisible(0.5) gives); 0 if not finite.
@@ -134,20 +125,8 @@ class Light {
     std::optional<LightBounds> Bounds() const;
     // Tells distant and infinite lights the scene's extent (call before Phi and SampleLi).
     void Preprocess(const Bounds3f& sceneBounds) const {
-        std::visit([&](auto l) { l->Preprocess(sceneBounds); }, kind);
+        Dispatch([&](auto l) { l->Preprocess(sceneBounds); });
     }
-
-    template <typename T>
-    bool Is() const {
-        return std::holds_alternative<const T*>(kind);
-    }
-    template <typename T>
-    const T* GetIf() const {
-        auto p = std::get_if<const T*>(&kind);
-        return p ? *p : nullptr;
-    }
-    const Kind& Variant() const { return kind; }
-    bool operator==(const Light& o) const { return kind == o.kind; }
 
     // Light "name" (pbrt-v4): "point" (I, scale, power, from), "spot" (I, scale, power, from,
     // to, coneangle, conedeltaangle), "distant" (L, scale, from, to, illuminance), "infinite"
@@ -163,9 +142,6 @@ class Light {
                             const Transform& renderFromLight, const Shape& shape,
                             const FileLoc& loc, ObjectArena& arena, Diagnostics& diag,
                             const AlphaMask* alpha = nullptr);
-
-  private:
-    Kind kind;
 };
 
 // Luminance Y of an emission spectrum in kiln's convention (SpectrumToPhotometric /

@@ -7,6 +7,7 @@
 #include <variant>
 #include <vector>
 
+#include "base/closed_set.h"
 #include "base/sampling.h"
 #include "lights/bvh_light_sampler.h"
 #include "lights/light.h"
@@ -55,22 +56,15 @@ class PowerLightSampler {
 
 // The light sampler a scene uses (closed set): pbrt-v4's "bvh" (default), "power" and
 // "uniform", and kiln's "area" (a PowerLightSampler over the lights' areas).
-class LightSampler {
+class LightSampler : public ClosedSet<BVHLightSampler, PowerLightSampler, UniformLightSampler> {
   public:
-    using Kind = std::variant<BVHLightSampler, PowerLightSampler, UniformLightSampler>;
-    template <typename T>
-    explicit LightSampler(T sampler) : kind(std::move(sampler)) {}
-
+    using ClosedSet::ClosedSet;
     std::optional<SampledLight> Sample(const LightSampleContext& ctx, Float u) const {
-        return std::visit([&](const auto& s) { return s.Sample(ctx, u); }, kind);
+        return Dispatch([&](const auto& s) { return s.Sample(ctx, u); });
     }
     Float PMF(const LightSampleContext& ctx, int index) const {
-        return std::visit([&](const auto& s) { return s.PMF(ctx, index); }, kind);
+        return Dispatch([&](const auto& s) { return s.PMF(ctx, index); });
     }
-    const Kind& Variant() const { return kind; }
-
-  private:
-    Kind kind;
 };
 
 }  // namespace kiln

@@ -19,8 +19,8 @@ constexpr int kTriangleProbe = 2, kQuadricGrid = 32, kTriangleGrid = 16;
 // samples on its far side (worth about a factor 2), spherical triangles beat area sampling
 // nearby; disks, cylinders and bilinear patches sample by area anyway.
 double MinConcentration(const Shape& shape) {
-    if (shape.Get<Sphere>()) return 2;
-    if (shape.Get<Triangle>()) return 1.5;
+    if (shape.GetIf<Sphere>()) return 2;
+    if (shape.GetIf<Triangle>()) return 1.5;
     return 1.25;
 }
 
@@ -88,7 +88,7 @@ ThermalAreaLight::ThermalAreaLight(const Shape* shape, const Material* material,
     // is concentrated and the mesh small; other shapes: the full grid. Sampling by power pays
     // where the power is concentrated (a hot spot, a hot side); otherwise the shape's own
     // solid-angle sampling is better (a sphere's cone never picks its far side).
-    const Triangle* tri = shape->Get<Triangle>();
+    const Triangle* tri = shape->GetIf<Triangle>();
     bool mayDistribute =
         powerSampling && (!tri || tri->GetMesh()->NumTriangles() <= kMaxDistributionTriangles);
     Grid g = evaluate(tri || !mayDistribute ? kTriangleProbe : kQuadricGrid);

@@ -19,24 +19,21 @@ const Material* Material::ChooseMaterial(const MaterialEvalContext& ctx) const {
 
 BSDF Material::GetBSDF(const MaterialEvalContext& ctx, SampledWavelengths& lambda) const {
     const Material* m = ChooseMaterial(ctx);
-    return std::visit(
-        [&](const auto* mtl) -> BSDF {
-            using T = std::remove_cv_t<std::remove_pointer_t<decltype(mtl)>>;
-            if constexpr (std::is_same_v<T, InterfaceMaterial> || std::is_same_v<T, MixMaterial>)
-                return BSDF();
-            else
-                return BSDF(ctx.ns, ctx.dpdus, BxDF(mtl->GetBxDF(ctx, lambda)), ctx.n);
-        },
-        m->Variant());
+    return m->Dispatch([&](const auto* mtl) -> BSDF {
+        using T = std::remove_cv_t<std::remove_pointer_t<decltype(mtl)>>;
+        if constexpr (std::is_same_v<T, InterfaceMaterial> || std::is_same_v<T, MixMaterial>)
+            return BSDF();
+        else
+            return BSDF(ctx.ns, ctx.dpdus, BxDF(mtl->GetBxDF(ctx, lambda)), ctx.n);
+    });
 }
 
 const ShadingPerturbation& Material::Perturbation() const {
-    return std::visit([](const auto* m) -> const ShadingPerturbation& { return m->perturbation; },
-                      v);
+    return Dispatch([](const auto* m) -> const ShadingPerturbation& { return m->perturbation; });
 }
 
 bool Material::UsesFootprint() const {
-    return std::visit([](const auto* m) { return m->usesFootprint; }, v);
+    return Dispatch([](const auto* m) { return m->usesFootprint; });
 }
 
 std::optional<Spectrum> Material::InteriorEta() const {

@@ -7,6 +7,7 @@
 #include <string>
 #include <variant>
 
+#include "base/closed_set.h"
 #include "base/object_arena.h"
 #include "core/parser/diagnostics.h"
 #include "materials/bxdfs/bsdf.h"
@@ -30,16 +31,13 @@ class TextureParameterDictionary;
 struct ShadingPerturbation;
 
 // Material Definition
-class Material {
+class Material
+    : public ClosedSet<const DiffuseMaterial*, const ConductorMaterial*, const DielectricMaterial*,
+                       const ThinDielectricMaterial*, const CoatedDiffuseMaterial*,
+                       const CoatedConductorMaterial*, const MixMaterial*, const InterfaceMaterial*,
+                       const PolarizingFilterMaterial*, const HairMaterial*> {
   public:
-    using Kind =
-        std::variant<const DiffuseMaterial*, const ConductorMaterial*, const DielectricMaterial*,
-                     const ThinDielectricMaterial*, const CoatedDiffuseMaterial*,
-                     const CoatedConductorMaterial*, const MixMaterial*, const InterfaceMaterial*,
-                     const PolarizingFilterMaterial*, const HairMaterial*>;
-
-    template <typename T>
-    requires std::is_constructible_v<Kind, const T*> Material(const T* m) : v(m) {}
+    using ClosedSet::ClosedSet;
 
     // The BSDF at the point, in the shading frame (ctx.ns, ctx.dpdus). Materials whose index
     // of refraction varies with wavelength call lambda.TerminateSecondary(). The interface
@@ -67,17 +65,6 @@ class Material {
     bool IsInterface() const { return Is<InterfaceMaterial>(); }
     bool IsMix() const { return Is<MixMaterial>(); }
 
-    template <typename T>
-    const T* GetIf() const {
-        auto p = std::get_if<const T*>(&v);
-        return p ? *p : nullptr;
-    }
-    template <typename T>
-    bool Is() const {
-        return std::holds_alternative<const T*>(v);
-    }
-    const Kind& Variant() const { return v; }
-
     // Creates a material of pbrt-v4 type `type` ("diffuse", "conductor", "dielectric",
     // "thindielectric", "coateddiffuse", "coatedconductor", "mix", "interface"; "" and "none"
     // give interface), and kiln's polarising filters "polarizer" ("float angle", degrees) and
@@ -90,9 +77,6 @@ class Material {
                            const std::map<std::string, Material>& namedMaterials,
                            const FileLoc& loc, ObjectArena& arena, Diagnostics& diag,
                            LayeredMIS layeredMIS = LayeredMIS::Kiln);
-
-  private:
-    Kind v;
 };
 
 }  // namespace kiln

@@ -11,6 +11,7 @@
 #include <string>
 #include <variant>
 
+#include "base/closed_set.h"
 #include "base/rng.h"
 #include "base/sampling.h"
 #include "base/transform.h"
@@ -22,12 +23,9 @@
 
 namespace kiln {
 
-class Medium {
+class Medium : public ClosedSet<HomogeneousMedium*, GridMedium*, RGBGridMedium*, CloudMedium*> {
   public:
-    using Kind = std::variant<HomogeneousMedium*, GridMedium*, RGBGridMedium*, CloudMedium*>;
-    template <typename T>
-    requires std::is_constructible_v<Kind, T*> Medium(T* medium) : kind(medium) {}
-
+    using ClosedSet::ClosedSet;
     // type: "homogeneous", "uniformgrid", "rgbgrid", "cloud", "nanovdb" (an OpenVDB .vdb file;
     // .nvdb files are refused with a message) or kiln's "vdb". modelOverride: the command
     // line's --emission for thermal media. SceneError for invalid parameters or a singular
@@ -38,21 +36,21 @@ class Medium {
                          ObjectArena& arena, Diagnostics& diag);
 
     bool IsEmissive() const {
-        return std::visit([](auto m) { return m->IsEmissive(); }, kind);
+        return Dispatch([](auto m) { return m->IsEmissive(); });
     }
     // Thermal emission inside a body of refractive index eta (medium_emission.h).
     void SetRefractiveIndex(const Spectrum& eta) {
-        std::visit([&](auto m) { m->Emission().SetRefractiveIndex(eta); }, kind);
+        Dispatch([&](auto m) { m->Emission().SetRefractiveIndex(eta); });
     }
     bool IsThermal() const {
-        return std::visit([](auto m) { return m->Emission().IsThermal(); }, kind);
+        return Dispatch([](auto m) { return m->Emission().IsThermal(); });
     }
     MediumProperties SamplePoint(Point3f p, const SampledWavelengths& lambda) const {
-        return std::visit([&](auto m) { return m->SamplePoint(p, lambda); }, kind);
+        return Dispatch([&](auto m) { return m->SamplePoint(p, lambda); });
     }
     // The majorant segments of ray (render space, unit direction) over [0, tMax].
     MajorantIterator SampleRay(const Ray& ray, Float tMax, const SampledWavelengths& lambda) const {
-        return std::visit([&](auto m) { return m->SampleRay(ray, tMax, lambda); }, kind);
+        return Dispatch([&](auto m) { return m->SampleRay(ray, tMax, lambda); });
     }
 
     // Delta-tracking distance sampling along ray up to tMax (pbrt-v4's SampleT_maj): draws
@@ -70,37 +68,35 @@ class Medium {
         Float len = Length(ray.d);
         tMax *= len;
         ray.d = ray.d / len;
-        return std::visit(
-            [&](auto m) {
-                MajorantIterator iter = m->SampleRay(ray, tMax, lambda);
-                SampledSpectrum T_maj(1.f);
-                int collisions = 0;
-                while (std::optional<RayMajorantSegment> seg = iter.Next()) {
-                    if (seg->sigma_maj[0] == 0) {
-                        // No collisions here: only the transmittance of the other wavelengths
-                        T_maj *= FastExpTransmittance(seg->tMax - seg->tMin, seg->sigma_maj);
-                        continue;
-                    }
-                    Float tMin = seg->tMin;
-                    while (true) {
-                        Float t = tMin + SampleExponential(u, seg->sigma_maj[0]);
-                        u = rng.UniformFloat();
-                        if (t >= seg->tMax) {
-                            T_maj *= FastExpTransmittance(seg->tMax - tMin, seg->sigma_maj);
-                            break;
-                        }
-                        if (++collisions > kMaxCollisions) return SampledSpectrum(0.f);
-                        T_maj *= FastExpTransmittance(t - tMin, seg->sigma_maj);
-                        Point3f p = ray(t);
-                        if (!callback(p, m->SamplePoint(p, lambda), seg->sigma_maj, T_maj))
-                            return SampledSpectrum(1.f);
-                        T_maj = SampledSpectrum(1.f);
-                        tMin = t;
-                    }
+        return Dispatch([&](auto m) {
+            MajorantIterator iter = m->SampleRay(ray, tMax, lambda);
+            SampledSpectrum T_maj(1.f);
+            int collisions = 0;
+            while (std::optional<RayMajorantSegment> seg = iter.Next()) {
+                if (seg->sigma_maj[0] == 0) {
+                    // No collisions here: only the transmittance of the other wavelengths
+                    T_maj *= FastExpTransmittance(seg->tMax - seg->tMin, seg->sigma_maj);
+                    continue;
                 }
-                return T_maj;
-            },
-            kind);
+                Float tMin = seg->tMin;
+                while (true) {
+                    Float t = tMin + SampleExponential(u, seg->sigma_maj[0]);
+                    u = rng.UniformFloat();
+                    if (t >= seg->tMax) {
+                        T_maj *= FastExpTransmittance(seg->tMax - tMin, seg->sigma_maj);
+                        break;
+                    }
+                    if (++collisions > kMaxCollisions) return SampledSpectrum(0.f);
+                    T_maj *= FastExpTransmittance(t - tMin, seg->sigma_maj);
+                    Point3f p = ray(t);
+                    if (!callback(p, m->SamplePoint(p, lambda), seg->sigma_maj, T_maj))
+                        return SampledSpectrum(1.f);
+                    T_maj = SampledSpectrum(1.f);
+                    tMin = t;
+                }
+            }
+            return T_maj;
+        });
     }
 
     static constexpr int kMaxCollisions = 1 << 20;
@@ -113,8 +109,6 @@ class Medium {
             T[i] = sigma[i] == 0 ? 1 : std::exp(-dt * sigma[i]);
         return T;
     }
-
-    Kind kind;
 };
 
 }  // namespace kiln

@@ -435,14 +435,12 @@ void CreateLightSampler(Scene& scene) {
         case LightSelection::Area: {
             std::vector<Float> area;
             for (const Light& light : scene.lights)
-                area.push_back(std::visit(
-                    [](auto l) -> Float {
-                        if constexpr (requires { l->Area(); })
-                            return l->Area();
-                        else
-                            return 1;
-                    },
-                    light.Variant()));
+                area.push_back(light.Dispatch([](auto l) -> Float {
+                    if constexpr (requires { l->Area(); })
+                        return l->Area();
+                    else
+                        return 1;
+                }));
             scene.lightSampler = std::make_unique<LightSampler>(PowerLightSampler(std::move(area)));
             break;
         }

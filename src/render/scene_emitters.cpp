@@ -23,7 +23,7 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
         own.temperature ? own.temperature : fromMaterial.temperature;
     // Per-vertex temperatures of a mesh (PLY vertex property or one value per vertex)
     if (!temperature && !shapes.empty())
-        if (const Triangle* tri = shapes.front().Get<Triangle>();
+        if (const Triangle* tri = shapes.front().GetIf<Triangle>();
             tri && tri->GetMesh()->HasAttribute("temperature"))
             temperature = FloatTexture(arena.New<VertexAttributeTexture>("temperature", 0.f));
     if (!temperature) return heat;

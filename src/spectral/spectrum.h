@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "base/closed_set.h"
 #include "spectral/rgb_to_spectrum.h"
 #include "spectral/sampled_spectrum.h"
 
@@ -157,44 +158,20 @@ class RGBIlluminantSpectrum {
 };
 
 // Spectrum: one of the kinds above, by value.
-class Spectrum {
+class Spectrum : public ClosedSet<ConstantSpectrum, PiecewiseLinearSpectrum, DenselySampledSpectrum,
+                                  BlackbodySpectrum, RGBAlbedoSpectrum, RGBUnboundedSpectrum,
+                                  RGBIlluminantSpectrum> {
   public:
-    using Kind = std::variant<ConstantSpectrum, PiecewiseLinearSpectrum, DenselySampledSpectrum,
-                              BlackbodySpectrum, RGBAlbedoSpectrum, RGBUnboundedSpectrum,
-                              RGBIlluminantSpectrum>;
-    template <typename T, typename V = Kind>
-    struct IsKind;
-    template <typename T, typename... Ts>
-    struct IsKind<T, std::variant<Ts...>> : std::bool_constant<(std::is_same_v<T, Ts> || ...)> {};
-
-    // Implicit from any of the kinds (by value). Constrained on the decayed type being one of
-    // them, not on is_constructible (which recurses through DenselySampledSpectrum(Spectrum)).
-    template <typename T>
-    requires(!std::is_same_v<std::remove_cvref_t<T>, Spectrum>) &&
-        IsKind<std::remove_cvref_t<T>>::value Spectrum(T&& s) : kind(std::forward<T>(s)) {}
-
+    using ClosedSet::ClosedSet;
     Float operator()(Float lambda_nm) const {
-        return std::visit([&](const auto& s) { return s(lambda_nm); }, kind);
+        return Dispatch([&](const auto& s) { return s(lambda_nm); });
     }
     SampledSpectrum Sample(const SampledWavelengths& lambda) const {
-        return std::visit([&](const auto& s) { return s.Sample(lambda); }, kind);
+        return Dispatch([&](const auto& s) { return s.Sample(lambda); });
     }
     Float MaxValue() const {
-        return std::visit([](const auto& s) { return s.MaxValue(); }, kind);
+        return Dispatch([](const auto& s) { return s.MaxValue(); });
     }
-
-    template <typename T>
-    bool Is() const {
-        return std::holds_alternative<T>(kind);
-    }
-    template <typename T>
-    const T* GetIf() const {
-        return std::get_if<T>(&kind);
-    }
-    const Kind& Variant() const { return kind; }
-
-  private:
-    Kind kind;
 };
 
 // The CIE 1931 colour-matching functions as spectra (dimensionless, 1 nm table).

@@ -11,12 +11,12 @@ namespace kiln {
 
 // Texture dispatch
 Float FloatTexture::Evaluate(const TextureEvalContext& ctx) const {
-    return std::visit([&](const auto* t) { return t->Evaluate(ctx); }, v);
+    return Dispatch([&](const auto* t) { return t->Evaluate(ctx); });
 }
 
 SampledSpectrum SpectrumTexture::Evaluate(const TextureEvalContext& ctx,
                                           const SampledWavelengths& lambda) const {
-    return std::visit([&](const auto* t) { return t->Evaluate(ctx, lambda); }, v);
+    return Dispatch([&](const auto* t) { return t->Evaluate(ctx, lambda); });
 }
 
 // NamedTextures Method Definitions
@@ -111,25 +111,21 @@ SpectrumTexture CreateSpectrumTexture(const std::string& name, const Transform& 
 
 // Footprint use: the classes that filter or antialias say so, the others do not depend on it
 bool FloatTexture::UsesFootprint() const {
-    return std::visit(
-        [](auto t) {
-            if constexpr (requires { t->UsesFootprint(); })
-                return t->UsesFootprint();
-            else
-                return false;
-        },
-        v);
+    return Dispatch([](auto t) {
+        if constexpr (requires { t->UsesFootprint(); })
+            return t->UsesFootprint();
+        else
+            return false;
+    });
 }
 
 bool SpectrumTexture::UsesFootprint() const {
-    return std::visit(
-        [](auto t) {
-            if constexpr (requires { t->UsesFootprint(); })
-                return t->UsesFootprint();
-            else
-                return false;
-        },
-        v);
+    return Dispatch([](auto t) {
+        if constexpr (requires { t->UsesFootprint(); })
+            return t->UsesFootprint();
+        else
+            return false;
+    });
 }
 
 }  // namespace kiln

@@ -12,6 +12,7 @@
 #include <string>
 #include <variant>
 
+#include "base/closed_set.h"
 #include "base/object_arena.h"
 #include "base/transform.h"
 #include "core/parser/diagnostics.h"
@@ -50,17 +51,15 @@ class TextureParameterDictionary;
 class ImageTextureCache;
 
 // FloatTexture Definition
-class FloatTexture {
+class FloatTexture
+    : public ClosedSet<
+          const FloatConstantTexture*, const FloatBilerpTexture*, const FloatCheckerboardTexture*,
+          const FloatDirectionMixTexture*, const FloatImageTexture*, const FloatMixTexture*,
+          const FloatScaledTexture*, const FBmTexture*, const WrinkledTexture*, const WindyTexture*,
+          const FloatDotsTexture*, const GradientTexture*, const ThermalNoiseTexture*,
+          const HeatMapTexture*, const VertexAttributeTexture*, const TimeFunctionTexture*> {
   public:
-    using Kind = std::variant<
-        const FloatConstantTexture*, const FloatBilerpTexture*, const FloatCheckerboardTexture*,
-        const FloatDirectionMixTexture*, const FloatImageTexture*, const FloatMixTexture*,
-        const FloatScaledTexture*, const FBmTexture*, const WrinkledTexture*, const WindyTexture*,
-        const FloatDotsTexture*, const GradientTexture*, const ThermalNoiseTexture*,
-        const HeatMapTexture*, const VertexAttributeTexture*, const TimeFunctionTexture*>;
-
-    template <typename T>
-    requires std::is_constructible_v<Kind, const T*> FloatTexture(const T* t) : v(t) {}
+    using ClosedSet::ClosedSet;
 
     // Value at the point: dimensionless, or in the unit of what it stands for (e.g. kelvin
     // for the temperature textures of temperature_textures.h).
@@ -69,52 +68,22 @@ class FloatTexture {
     // textures filter with it, checkerboards and noise antialias with it. Shading computes
     // footprints only for surfaces that need them.
     bool UsesFootprint() const;
-
-    template <typename T>
-    const T* GetIf() const {
-        auto p = std::get_if<const T*>(&v);
-        return p ? *p : nullptr;
-    }
-    template <typename T>
-    bool Is() const {
-        return std::holds_alternative<const T*>(v);
-    }
-    const Kind& Variant() const { return v; }
-
-  private:
-    Kind v;
 };
 
 // SpectrumTexture Definition
-class SpectrumTexture {
+class SpectrumTexture
+    : public ClosedSet<const SpectrumConstantTexture*, const SpectrumBilerpTexture*,
+                       const SpectrumCheckerboardTexture*, const SpectrumDirectionMixTexture*,
+                       const SpectrumImageTexture*, const SpectrumMixTexture*,
+                       const SpectrumScaledTexture*, const MarbleTexture*,
+                       const SpectrumDotsTexture*> {
   public:
-    using Kind = std::variant<const SpectrumConstantTexture*, const SpectrumBilerpTexture*,
-                              const SpectrumCheckerboardTexture*,
-                              const SpectrumDirectionMixTexture*, const SpectrumImageTexture*,
-                              const SpectrumMixTexture*, const SpectrumScaledTexture*,
-                              const MarbleTexture*, const SpectrumDotsTexture*>;
-
-    template <typename T>
-    requires std::is_constructible_v<Kind, const T*> SpectrumTexture(const T* t) : v(t) {}
+    using ClosedSet::ClosedSet;
 
     // Values at the wavelengths lambda (unit per the texture's SpectrumType).
     SampledSpectrum Evaluate(const TextureEvalContext& ctx, const SampledWavelengths& lambda) const;
     // As FloatTexture::UsesFootprint.
     bool UsesFootprint() const;
-
-    template <typename T>
-    const T* GetIf() const {
-        auto p = std::get_if<const T*>(&v);
-        return p ? *p : nullptr;
-    }
-    template <typename T>
-    bool Is() const {
-        return std::holds_alternative<const T*>(v);
-    }
-    const Kind& Variant() const { return v; }
-
-  private:
-    Kind v;
 };
 
 // NamedTextures Definition

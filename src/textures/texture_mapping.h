@@ -4,6 +4,7 @@
 
 #include <variant>
 
+#include "base/closed_set.h"
 #include "base/transform.h"
 #include "base/vecmath.h"
 #include "textures/texture_eval_context.h"
@@ -77,20 +78,13 @@ class PlanarMapping {
 };
 
 // TextureMapping2D Definition
-class TextureMapping2D {
+class TextureMapping2D
+    : public ClosedSet<UVMapping, SphericalMapping, CylindricalMapping, PlanarMapping> {
   public:
-    using Kind = std::variant<UVMapping, SphericalMapping, CylindricalMapping, PlanarMapping>;
-
-    TextureMapping2D() : v(UVMapping()) {}
-    template <typename T>
-    TextureMapping2D(T m) : v(std::move(m)) {}
+    using ClosedSet::ClosedSet;
 
     TexCoord2D Map(const TextureEvalContext& ctx) const {
-        return std::visit([&](const auto& m) { return m.Map(ctx); }, v);
-    }
-    template <typename T>
-    const T* GetIf() const {
-        return std::get_if<T>(&v);
+        return Dispatch([&](const auto& m) { return m.Map(ctx); });
     }
 
     // pbrt-v4 parameters: "string mapping" uv|spherical|cylindrical|planar; uv takes "float
@@ -98,9 +92,6 @@ class TextureMapping2D {
     // An unknown mapping throws SceneError.
     static TextureMapping2D Create(const TextureParameterDictionary& params,
                                    const Transform& renderFromTexture, const FileLoc& loc);
-
-  private:
-    Kind v;
 };
 
 // TextureMapping3D Definition

@@ -146,7 +146,7 @@ ConductorEmissivity::ConductorEmissivity(const ConductorMaterial& m, EmissivityT
         if (std::max(alphaX, alphaY) < 1e-3f) return;  // smooth: Fresnel's equations
     } else {
         // Textured roughness: exact when both directions share one texture
-        exact = m.URoughness().Variant() == m.VRoughness().Variant();
+        exact = m.URoughness() == m.VRoughness();
     }
 
     // Moment weights

@@ -15,7 +15,7 @@ const MaterialAlbedo* MaterialAlbedo::Create(const Material& material, Emissivit
             const Material& component = mix->GetMaterial(i);
             const MaterialAlbedo* a = Create(component, tables, arena);
             // A nested mix contributes its leaves
-            if (const Mix* nested = std::get_if<Mix>(&a->kind))
+            if (const Mix* nested = a->kind.GetIf<Mix>())
                 m.components.insert(m.components.end(), nested->components.begin(),
                                     nested->components.end());
             else
@@ -34,51 +34,46 @@ const MaterialAlbedo* MaterialAlbedo::Create(const Material& material, Emissivit
 }
 
 bool MaterialAlbedo::Exact() const {
-    return std::visit(
-        [&](const auto& k) -> bool {
-            using K = std::decay_t<decltype(k)>;
-            if constexpr (std::is_same_v<K, ConductorEmissivity> ||
-                          std::is_same_v<K, CoatedDiffuseEmissivity> ||
-                          std::is_same_v<K, CoatedConductorEmissivity>)
-                return k.Exact();
-            else if constexpr (std::is_same_v<K, Mix>)
-                return std::all_of(k.components.begin(), k.components.end(),
-                                   [](const auto& c) { return c.second->Exact(); });
-            else
-                return true;
-        },
-        kind);
+    return kind.Dispatch([&](const auto& k) -> bool {
+        using K = std::decay_t<decltype(k)>;
+        if constexpr (std::is_same_v<K, ConductorEmissivity> ||
+                      std::is_same_v<K, CoatedDiffuseEmissivity> ||
+                      std::is_same_v<K, CoatedConductorEmissivity>)
+            return k.Exact();
+        else if constexpr (std::is_same_v<K, Mix>)
+            return std::all_of(k.components.begin(), k.components.end(),
+                               [](const auto& c) { return c.second->Exact(); });
+        else
+            return true;
+    });
 }
 
 // Evaluation
 SampledSpectrum MaterialAlbedo::EvaluateLocal(const Material* material, const BSDF& bsdf,
                                               Vector3f wo, const SampledWavelengths& lambda) const {
     const BxDF& bxdf = bsdf.GetBxDF();
-    return std::visit(
-        [&](const auto& k) -> SampledSpectrum {
-            using K = std::decay_t<decltype(k)>;
-            if constexpr (std::is_same_v<K, Diffuse>) {
-                const DiffuseBxDF* d = bxdf.Cast<DiffuseBxDF>();
-                return d ? d->Reflectance() : SampledSpectrum(1.f);
-            } else if constexpr (std::is_same_v<K, NonAbsorbing>) {
-                return SampledSpectrum(1.f);
-            } else if constexpr (std::is_same_v<K, ConductorEmissivity>) {
-                const ConductorBxDF* c = bxdf.Cast<ConductorBxDF>();
-                return c ? k.Albedo(*c, wo, lambda) : SampledSpectrum(1.f);
-            } else if constexpr (std::is_same_v<K, CoatedDiffuseEmissivity>) {
-                const CoatedDiffuseBxDF* c = bxdf.Cast<CoatedDiffuseBxDF>();
-                return c ? k.Albedo(*c, wo, lambda) : SampledSpectrum(1.f);
-            } else if constexpr (std::is_same_v<K, CoatedConductorEmissivity>) {
-                const CoatedConductorBxDF* c = bxdf.Cast<CoatedConductorBxDF>();
-                return c ? k.Albedo(*c, wo, lambda) : SampledSpectrum(1.f);
-            } else {
-                for (const auto& [component, albedo] : k.components)
-                    if (component == material)
-                        return albedo->EvaluateLocal(material, bsdf, wo, lambda);
-                return SampledSpectrum(1.f);
-            }
-        },
-        kind);
+    return kind.Dispatch([&](const auto& k) -> SampledSpectrum {
+        using K = std::decay_t<decltype(k)>;
+        if constexpr (std::is_same_v<K, Diffuse>) {
+            const DiffuseBxDF* d = bxdf.GetIf<DiffuseBxDF>();
+            return d ? d->Reflectance() : SampledSpectrum(1.f);
+        } else if constexpr (std::is_same_v<K, NonAbsorbing>) {
+            return SampledSpectrum(1.f);
+        } else if constexpr (std::is_same_v<K, ConductorEmissivity>) {
+            const ConductorBxDF* c = bxdf.GetIf<ConductorBxDF>();
+            return c ? k.Albedo(*c, wo, lambda) : SampledSpectrum(1.f);
+        } else if constexpr (std::is_same_v<K, CoatedDiffuseEmissivity>) {
+            const CoatedDiffuseBxDF* c = bxdf.GetIf<CoatedDiffuseBxDF>();
+            return c ? k.Albedo(*c, wo, lambda) : SampledSpectrum(1.f);
+        } else if constexpr (std::is_same_v<K, CoatedConductorEmissivity>) {
+            const CoatedConductorBxDF* c = bxdf.GetIf<CoatedConductorBxDF>();
+            return c ? k.Albedo(*c, wo, lambda) : SampledSpectrum(1.f);
+        } else {
+            for (const auto& [component, albedo] : k.components)
+                if (component == material) return albedo->EvaluateLocal(material, bsdf, wo, lambda);
+            return SampledSpectrum(1.f);
+        }
+    });
 }
 
 SampledSpectrum BSDFReflectance::DirectionalAlbedo(Vector3f wo,
@@ -112,20 +107,18 @@ ReflectedPolarization MaterialAlbedo::LinearPolarization(const Material* materia
 
 ReflectedPolarization MaterialAlbedo::LinearPolarizationLocal(const Material* material,
                                                               const BSDF& bsdf, Vector3f wo) const {
-    return std::visit(
-        [&](const auto& k) -> ReflectedPolarization {
-            using K = std::decay_t<decltype(k)>;
-            if constexpr (std::is_same_v<K, ConductorEmissivity>) {
-                const ConductorBxDF* c = bsdf.GetBxDF().Cast<ConductorBxDF>();
-                if (c) return k.LinearPolarization(*c, wo);
-            } else if constexpr (std::is_same_v<K, Mix>) {
-                for (const auto& [component, albedo] : k.components)
-                    if (component == material)
-                        return albedo->LinearPolarizationLocal(material, bsdf, wo);
-            }
-            return {};
-        },
-        kind);
+    return kind.Dispatch([&](const auto& k) -> ReflectedPolarization {
+        using K = std::decay_t<decltype(k)>;
+        if constexpr (std::is_same_v<K, ConductorEmissivity>) {
+            const ConductorBxDF* c = bsdf.GetBxDF().GetIf<ConductorBxDF>();
+            if (c) return k.LinearPolarization(*c, wo);
+        } else if constexpr (std::is_same_v<K, Mix>) {
+            for (const auto& [component, albedo] : k.components)
+                if (component == material)
+                    return albedo->LinearPolarizationLocal(material, bsdf, wo);
+        }
+        return {};
+    });
 }
 
 }  // namespace kiln

@@ -39,6 +39,7 @@
 #include <variant>
 #include <vector>
 
+#include "base/closed_set.h"
 #include "base/object_arena.h"
 #include "materials/bxdfs/bsdf.h"
 #include "spectral/sampled_spectrum.h"
@@ -102,8 +103,9 @@ class MaterialAlbedo {
     struct Mix {
         std::vector<std::pair<const Material*, const MaterialAlbedo*>> components;
     };
-    using Kind = std::variant<Diffuse, NonAbsorbing, ConductorEmissivity, CoatedDiffuseEmissivity,
-                              CoatedConductorEmissivity, Mix>;
+    // How the albedo is computed, by the material's kind
+    using Kind = ClosedSet<Diffuse, NonAbsorbing, ConductorEmissivity, CoatedDiffuseEmissivity,
+                           CoatedConductorEmissivity, Mix>;
     explicit MaterialAlbedo(Kind kind) : kind(std::move(kind)) {}
 
   private:

@@ -65,8 +65,7 @@ TEST(PolarizedBxDF, M00IsTheUnpolarisedValue) {
                 SampledSpectrum f = bxdf.f(wo, wi, mode);
                 MuellerMatrix M = bxdf.f<MuellerMatrix>(wo, wi, mode);
                 for (int i = 0; i < NSpectrumSamples; ++i)
-                    EXPECT_NEAR(M(0, 0)[i], f[i], 1e-4f * std::max<Float>(1, f[i]))
-                        << bxdf.Get().index();
+                    EXPECT_NEAR(M(0, 0)[i], f[i], 1e-4f * std::max<Float>(1, f[i])) << bxdf.Index();
             }
             Float uc = rng.UniformFloat();
             Point2f u(rng.UniformFloat(), rng.UniformFloat());
@@ -79,7 +78,7 @@ TEST(PolarizedBxDF, M00IsTheUnpolarisedValue) {
             EXPECT_EQ(bs->flags, bp->flags);
             for (int i = 0; i < NSpectrumSamples; ++i)
                 EXPECT_NEAR(bp->f(0, 0)[i], bs->f[i], 1e-4f * std::max<Float>(1, bs->f[i]))
-                    << bxdf.Get().index();
+                    << bxdf.Index();
         }
 }
 
@@ -93,7 +92,7 @@ TEST(PolarizedBxDF, MatricesArePhysical) {
                                                    {rng.UniformFloat(), rng.UniformFloat()});
             if (!bp) continue;
             for (int i = 0; i < NSpectrumSamples; ++i)
-                EXPECT_LE(MaxOutputDoP(bp->f, i, rng), 1 + 1e-3f) << bxdf.Get().index();
+                EXPECT_LE(MaxOutputDoP(bp->f, i, rng), 1 + 1e-3f) << bxdf.Index();
         }
 }
 
@@ -144,8 +143,8 @@ TEST(PolarizedBSDF, RenderFrameMatricesDoNotDependOnTheShadingTangent) {
     for (const BxDF& bxdf : PolarisingAndDepolarisingBxDFs()) {
         // (Layered BxDFs estimate f stochastically, seeded by the local directions)
         if (bxdf.Is<CoatedDiffuseBxDF>()) continue;
-        if (bxdf.Is<ConductorBxDF>() && bxdf.Cast<ConductorBxDF>()->Distribution().AlphaX() !=
-                                            bxdf.Cast<ConductorBxDF>()->Distribution().AlphaY())
+        if (bxdf.Is<ConductorBxDF>() && bxdf.GetIf<ConductorBxDF>()->Distribution().AlphaX() !=
+                                            bxdf.GetIf<ConductorBxDF>()->Distribution().AlphaY())
             continue;
         for (Normal3f geometric : {Normal3f(0, 0, 0), ng}) {
             BSDF a(ns, Vector3f(1, 0, 0), bxdf, geometric),
@@ -158,7 +157,7 @@ TEST(PolarizedBSDF, RenderFrameMatricesDoNotDependOnTheShadingTangent) {
                     for (int c = 0; c < 4; ++c)
                         for (int i = 0; i < NSpectrumSamples; ++i)
                             EXPECT_NEAR(Ma(r, c)[i], Mb(r, c)[i], 2e-4f * scale)
-                                << bxdf.Get().index() << " " << r << c;
+                                << bxdf.Index() << " " << r << c;
                 EXPECT_NEAR(Ma(0, 0)[0], a.f(wo, wi)[0], 1e-4f * scale);
             }
         }

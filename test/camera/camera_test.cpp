@@ -212,11 +212,11 @@ TEST(Camera, Approximate_dp_dxy) {
 TEST(Camera, Create) {
     Fixture fx;
     Camera p = fx.Make("perspective", {}, Point2i(8, 8));
-    EXPECT_TRUE(std::holds_alternative<const PerspectiveCamera*>(p.Get()));
+    EXPECT_TRUE(p.Is<PerspectiveCamera>());
     EXPECT_EQ(p.ShutterOpen(), 0);
     EXPECT_EQ(p.ShutterClose(), 1);
     Camera s = fx.Make("spherical", {}, Point2i(8, 8));
-    EXPECT_TRUE(std::holds_alternative<const PerspectiveCamera*>(s.Get()));
+    EXPECT_TRUE(s.Is<PerspectiveCamera>());
     EXPECT_EQ(fx.diag.WarningCount(), 1);
     Camera sw = fx.Make("perspective",
                         {FloatParam("shutteropen", {0.8f}), FloatParam("shutterclose", {0.2f})},

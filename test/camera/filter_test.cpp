@@ -192,7 +192,7 @@ TEST(Filter, CreateDefaults) {
     EXPECT_EQ(radius("sinc").x, 4.f);
     EXPECT_EQ(radius("triangle").x, 2.f);
     Filter g = Filter::Create("gaussian", empty, loc, arena, diag);
-    EXPECT_TRUE(std::holds_alternative<const GaussianFilter*>(g.Get()));
+    EXPECT_TRUE(g.Is<GaussianFilter>());
     EXPECT_THROW(Filter::Create("lanczos", empty, loc, arena, diag), SceneError);
     EXPECT_EQ(diag.WarningCount(), 0);
 }

@@ -60,8 +60,8 @@ TEST(Sampler, DeterministicRegardlessOfOrder) {
         Sampler other = s.Clone();
         for (int i = 0; i < 16; ++i) Stream(other, Point2i(i, 3 * i), i);
         for (int i = 0; i < 16; ++i) Stream(s, Point2i(i + 1, 2), 15 - i);
-        EXPECT_EQ(a, Stream(s, Point2i(5, 7), 9)) << s.Get().index();
-        EXPECT_EQ(a, Stream(other, Point2i(5, 7), 9)) << s.Get().index();
+        EXPECT_EQ(a, Stream(s, Point2i(5, 7), 9)) << s.Index();
+        EXPECT_EQ(a, Stream(other, Point2i(5, 7), 9)) << s.Index();
         // Different pixels and samples give different values.
         EXPECT_NE(a, Stream(s, Point2i(6, 7), 9));
         EXPECT_NE(a, Stream(s, Point2i(5, 7), 10));
@@ -75,10 +75,9 @@ TEST(Sampler, StartAtDimensionMatchesSkipping) {
         s.GetPixel2D();
         Float a = s.Get1D();
         s.StartPixelSample(Point2i(1, 2), 3, 2);
-        if (std::holds_alternative<IndependentSampler>(s.Get()) ||
-            std::holds_alternative<StratifiedSampler>(s.Get()))
+        if (s.Is<IndependentSampler>() || s.Is<StratifiedSampler>())
             continue;  // RNG-based samplers advance by values drawn, as in pbrt-v4
-        EXPECT_EQ(a, s.Get1D()) << s.Get().index();
+        EXPECT_EQ(a, s.Get1D()) << s.Index();
     }
 }
 
@@ -279,11 +278,11 @@ TEST(Sampler, Create) {
     ParameterDictionary empty;
     Point2i res(32, 32);
     Sampler z = Sampler::Create("zsobol", empty, res, FileLoc(), diag);
-    EXPECT_TRUE(std::holds_alternative<ZSobolSampler>(z.Get()));
+    EXPECT_TRUE(z.Is<ZSobolSampler>());
     EXPECT_EQ(z.SamplesPerPixel(), 16);
 
     Sampler h = Sampler::Create("halton", empty, res, FileLoc(), diag);
-    EXPECT_TRUE(std::holds_alternative<ZSobolSampler>(h.Get()));
+    EXPECT_TRUE(h.Is<ZSobolSampler>());
     EXPECT_EQ(diag.WarningCount(), 1);
 
     ParameterDictionary params({IntParam("pixelsamples", 64), IntParam("seed", 4)}, nullptr);

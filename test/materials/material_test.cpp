@@ -65,18 +65,18 @@ TEST(Materials, EachTypeCreatesItsBxDF) {
 TEST(Materials, DiffuseReflectance) {
     Fixture f;
     BSDF def = GetBSDF(f.Make("diffuse", Dict({})));
-    EXPECT_EQ(def.GetBxDF().Cast<DiffuseBxDF>()->Reflectance(), SampledSpectrum(0.5f));
+    EXPECT_EQ(def.GetBxDF().GetIf<DiffuseBxDF>()->Reflectance(), SampledSpectrum(0.5f));
     SampledWavelengths lambda = Lambda();
     BSDF rgb = GetBSDF(f.Make("diffuse", Dict({Rgb("reflectance", 0.2f, 0.4f, 0.6f)})), &lambda);
     SampledSpectrum expected =
         RGBAlbedoSpectrum(RGBColorSpace::sRGB(), RGB(0.2f, 0.4f, 0.6f)).Sample(lambda);
-    SampledSpectrum got = rgb.GetBxDF().Cast<DiffuseBxDF>()->Reflectance();
+    SampledSpectrum got = rgb.GetBxDF().GetIf<DiffuseBxDF>()->Reflectance();
     for (int i = 0; i < NSpectrumSamples; ++i) EXPECT_NEAR(got[i], expected[i], 1e-5f);
     // Textured reflectance goes through the named albedo texture
     f.named.albedoSpectrumTextures.emplace(
         "t", f.arena.New<SpectrumConstantTexture>(Spectrum(ConstantSpectrum(0.3f))));
     BSDF tex = GetBSDF(f.Make("diffuse", Dict({Tex("reflectance", "t")})));
-    EXPECT_EQ(tex.GetBxDF().Cast<DiffuseBxDF>()->Reflectance(), SampledSpectrum(0.3f));
+    EXPECT_EQ(tex.GetBxDF().GetIf<DiffuseBxDF>()->Reflectance(), SampledSpectrum(0.3f));
 }
 
 TEST(Materials, ConductorNamedMetals) {
@@ -84,7 +84,7 @@ TEST(Materials, ConductorNamedMetals) {
     SampledWavelengths lambda = Lambda();
     // Default: copper
     BSDF cuBSDF = GetBSDF(f.Make("conductor", Dict({})), &lambda);
-    const ConductorBxDF* cu = cuBSDF.GetBxDF().Cast<ConductorBxDF>();
+    const ConductorBxDF* cu = cuBSDF.GetBxDF().GetIf<ConductorBxDF>();
     ASSERT_TRUE(cu);
     EXPECT_EQ(cu->Eta(), GetNamedSpectrum("metal-Cu-eta")->Sample(lambda));
     EXPECT_EQ(cu->K(), GetNamedSpectrum("metal-Cu-k")->Sample(lambda));
@@ -92,7 +92,7 @@ TEST(Materials, ConductorNamedMetals) {
     Material au = f.Make("conductor", Dict({Strings("spectrum", "eta", {"metal-Au-eta"}),
                                             Strings("spectrum", "k", {"metal-Au-k"})}));
     BSDF bsdf = GetBSDF(au, &lambda);
-    const ConductorBxDF* c = bsdf.GetBxDF().Cast<ConductorBxDF>();
+    const ConductorBxDF* c = bsdf.GetBxDF().GetIf<ConductorBxDF>();
     EXPECT_EQ(c->Eta(), GetNamedSpectrum("metal-Au-eta")->Sample(lambda));
     EXPECT_EQ(c->K(), GetNamedSpectrum("metal-Au-k")->Sample(lambda));
     EXPECT_FALSE(lambda.SecondaryTerminated());
@@ -106,7 +106,7 @@ TEST(Materials, ConductorReflectance) {
     Fixture f;
     Material m = f.Make("conductor", Dict({Rgb("reflectance", 0.64f, 0.64f, 0.64f)}));
     BSDF bsdf = GetBSDF(m);
-    const ConductorBxDF* c = bsdf.GetBxDF().Cast<ConductorBxDF>();
+    const ConductorBxDF* c = bsdf.GetBxDF().GetIf<ConductorBxDF>();
     ASSERT_TRUE(c);
     for (int i = 0; i < NSpectrumSamples; ++i) {
         EXPECT_FLOAT_EQ(c->Eta()[i], 1);
@@ -123,7 +123,7 @@ TEST(Materials, RoughnessRemapping) {
     Fixture f;
     auto alphas = [&](const ParameterDictionary& d) {
         BSDF bsdf = GetBSDF(f.Make("conductor", d));
-        const ConductorBxDF* c = bsdf.GetBxDF().Cast<ConductorBxDF>();
+        const ConductorBxDF* c = bsdf.GetBxDF().GetIf<ConductorBxDF>();
         return std::pair(c->Distribution().AlphaX(), c->Distribution().AlphaY());
     };
     auto [ax, ay] = alphas(Dict({Float1("roughness", 0.25f)}));
@@ -139,7 +139,7 @@ TEST(Materials, RoughnessRemapping) {
     EXPECT_FLOAT_EQ(ay, 0.09f);
     // Dielectric roughness goes the same way
     BSDF rough = GetBSDF(f.Make("dielectric", Dict({Float1("roughness", 0.16f)})));
-    const DielectricBxDF* d = rough.GetBxDF().Cast<DielectricBxDF>();
+    const DielectricBxDF* d = rough.GetBxDF().GetIf<DielectricBxDF>();
     EXPECT_FLOAT_EQ(d->Distribution().AlphaX(),
                     TrowbridgeReitzDistribution::RoughnessToAlpha(0.16f));
 }
@@ -149,13 +149,13 @@ TEST(Materials, DispersionTerminatesSecondaryWavelengths) {
     // Constant eta: all wavelengths continue
     SampledWavelengths lambda = Lambda();
     BSDF water = GetBSDF(f.Make("dielectric", Dict({Float1("eta", 1.33f)})), &lambda);
-    const DielectricBxDF* d = water.GetBxDF().Cast<DielectricBxDF>();
+    const DielectricBxDF* d = water.GetBxDF().GetIf<DielectricBxDF>();
     EXPECT_FLOAT_EQ(d->Eta(), 1.33f);
     EXPECT_FALSE(lambda.SecondaryTerminated());
     // Default 1.5
     lambda = Lambda();
     EXPECT_FLOAT_EQ(
-        GetBSDF(f.Make("dielectric", Dict({})), &lambda).GetBxDF().Cast<DielectricBxDF>()->Eta(),
+        GetBSDF(f.Make("dielectric", Dict({})), &lambda).GetBxDF().GetIf<DielectricBxDF>()->Eta(),
         1.5f);
     EXPECT_FALSE(lambda.SecondaryTerminated());
     // Named glass: eta at the hero wavelength, secondary wavelengths terminated
@@ -168,9 +168,9 @@ TEST(Materials, DispersionTerminatesSecondaryWavelengths) {
         EXPECT_TRUE(lambda.SecondaryTerminated()) << type;
         EXPECT_EQ(lambda[0], hero);
         Float eta = 0;
-        if (auto* de = bsdf.GetBxDF().Cast<DielectricBxDF>()) eta = de->Eta();
-        if (auto* th = bsdf.GetBxDF().Cast<ThinDielectricBxDF>()) eta = th->Eta();
-        if (auto* cd = bsdf.GetBxDF().Cast<CoatedDiffuseBxDF>()) eta = cd->Top().Eta();
+        if (auto* de = bsdf.GetBxDF().GetIf<DielectricBxDF>()) eta = de->Eta();
+        if (auto* th = bsdf.GetBxDF().GetIf<ThinDielectricBxDF>()) eta = th->Eta();
+        if (auto* cd = bsdf.GetBxDF().GetIf<CoatedDiffuseBxDF>()) eta = cd->Top().Eta();
         EXPECT_FLOAT_EQ(eta, (*bk7)(hero)) << type;
     }
 }
@@ -246,7 +246,7 @@ TEST(Materials, UnsupportedAndUnknown) {
     Fixture f;
     Material measured = f.Make("measured", Dict({}));
     EXPECT_TRUE(measured.Is<DiffuseMaterial>());
-    EXPECT_EQ(GetBSDF(measured).GetBxDF().Cast<DiffuseBxDF>()->Reflectance(),
+    EXPECT_EQ(GetBSDF(measured).GetBxDF().GetIf<DiffuseBxDF>()->Reflectance(),
               SampledSpectrum(0.5f));
     EXPECT_EQ(f.diag.WarningCount(), 1);
     // Hair is supported: brown by default
@@ -283,7 +283,7 @@ TEST(Materials, CoatedDiffuseParameters) {
     EXPECT_FLOAT_EQ(cd->Thickness().Evaluate(Context()), 0.2f);
     EXPECT_FLOAT_EQ(cd->G().Evaluate(Context()), 0.4f);
     BSDF bsdf = GetBSDF(m);
-    const CoatedDiffuseBxDF* b = bsdf.GetBxDF().Cast<CoatedDiffuseBxDF>();
+    const CoatedDiffuseBxDF* b = bsdf.GetBxDF().GetIf<CoatedDiffuseBxDF>();
     ASSERT_TRUE(b);
     EXPECT_EQ(b->Bottom().Reflectance(), SampledSpectrum(0.5f));
     EXPECT_FLOAT_EQ(b->Top().Eta(), 1.5f);

@@ -274,7 +274,7 @@ TEST_F(TemperatureTexturesTest, VertexAttributeFromPLYRoundTrip) {
     }
     std::vector<Shape> shapes = MakeShapes("plymesh", {String1("filename", ply)});
     ASSERT_EQ(shapes.size(), 1u);
-    const Triangle* tri = shapes[0].Get<Triangle>();
+    const Triangle* tri = shapes[0].GetIf<Triangle>();
     ASSERT_NE(tri, nullptr);
     EXPECT_TRUE(tri->GetMesh()->HasAttribute("temperature"));
     FloatTexture t = Make("vertexattribute", {String1("name", "temperature")});

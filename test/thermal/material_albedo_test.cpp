@@ -105,8 +105,8 @@ TEST(EmissivityTest, DiffuseEmitsOneMinusReflectanceAndGlassNothing) {
         Vector3f wo = Normalize(Vector3f(0.3f, 0.1f, 0.8f));
         BSDF bsdf = m->GetBSDF(Context(Point2f(0.3f, 0.8f), wo), lambda);
         SampledSpectrum A = albedo->Evaluate(m, bsdf, wo, lambda);
-        SampledSpectrum expected =
-            m == diffuse ? bsdf.GetBxDF().Cast<DiffuseBxDF>()->Reflectance() : SampledSpectrum(1.f);
+        SampledSpectrum expected = m == diffuse ? bsdf.GetBxDF().GetIf<DiffuseBxDF>()->Reflectance()
+                                                : SampledSpectrum(1.f);
         for (int i = 0; i < NSpectrumSamples; ++i) EXPECT_EQ(A[i], expected[i]);
     }
 }
@@ -215,7 +215,7 @@ double MaxQuadratureError(Fixture& f, const Material* m, Float muMin, int n, uin
         SampledWavelengths l = lambda;
         BSDF bsdf = m->GetBSDF(ctx, l);
         SampledSpectrum A = albedo->Evaluate(m, bsdf, wo, lambda);
-        const ConductorBxDF* c = std::get_if<ConductorBxDF>(&bsdf.GetBxDF().Get());
+        const ConductorBxDF* c = bsdf.GetBxDF().GetIf<ConductorBxDF>();
         const TrowbridgeReitzDistribution& d = c->Distribution();
         if (d.EffectivelySmooth()) continue;
         double w[3] = {wo.x, wo.y, wo.z};
@@ -319,7 +319,7 @@ TEST(EmissivityTest, TexturedAnisotropicRoughnessIsFlaggedApproximate) {
         MaterialEvalContext ctx = Context(Point2f(0.05f, 0), wo);
         SampledWavelengths l = lambda;
         BSDF bsdf = aniso->GetBSDF(ctx, l);
-        const ConductorBxDF* c = std::get_if<ConductorBxDF>(&bsdf.GetBxDF().Get());
+        const ConductorBxDF* c = bsdf.GetBxDF().GetIf<ConductorBxDF>();
         const TrowbridgeReitzDistribution& d = c->Distribution();
         double w[3] = {wo.x, wo.y, wo.z};
         ConductorAlbedoMoments::Weights weights =

@@ -5,6 +5,7 @@
 #include <string>
 #include <variant>
 
+#include "base/closed_set.h"
 #include "base/object_arena.h"
 #include "core/camera/camera_sample.h"
 #include "core/camera/camera_transform.h"
@@ -16,38 +17,31 @@ namespace kiln {
 
 class ParameterDictionary;
 
-class Camera {
+class Camera : public ClosedSet<const PerspectiveCamera*, const OrthographicCamera*> {
   public:
-    using Variant = std::variant<const PerspectiveCamera*, const OrthographicCamera*>;
-    Camera() = default;
-    template <typename T>
-    Camera(const T* c) : v(c) {}
-
+    using ClosedSet::ClosedSet;
     // A render-space ray with unit direction for the film position, lens sample and time of
     // `sample`; nullopt if the camera cannot produce one.
     std::optional<CameraRay> GenerateRay(const CameraSample& sample,
                                          SampledWavelengths& lambda) const {
-        return std::visit([&](auto c) { return c->GenerateRay(sample, lambda); }, v);
+        return Dispatch([&](auto c) { return c->GenerateRay(sample, lambda); });
     }
     const CameraTransform& GetCameraTransform() const {
-        return std::visit([](auto c) -> const CameraTransform& { return c->GetCameraTransform(); },
-                          v);
+        return Dispatch([](auto c) -> const CameraTransform& { return c->GetCameraTransform(); });
     }
     // Shutter interval (pbrt-v4 "shutteropen" 0, "shutterclose" 1), in scene time units.
     Float ShutterOpen() const {
-        return std::visit([](auto c) { return c->ShutterOpen(); }, v);
+        return Dispatch([](auto c) { return c->ShutterOpen(); });
     }
     Float ShutterClose() const {
-        return std::visit([](auto c) { return c->ShutterClose(); }, v);
+        return Dispatch([](auto c) { return c->ShutterClose(); });
     }
     // Screen-space derivatives (render space, per pixel) of a point p with normal n seen by
     // the camera, for texture filtering (pbrt-v4 Approximate_dp_dxy).
     void Approximate_dp_dxy(Point3f p, Normal3f n, Float time, int samplesPerPixel, Vector3f* dpdx,
                             Vector3f* dpdy) const {
-        std::visit([&](auto c) { c->Approximate_dp_dxy(p, n, time, samplesPerPixel, dpdx, dpdy); },
-                   v);
+        Dispatch([&](auto c) { c->Approximate_dp_dxy(p, n, time, samplesPerPixel, dpdx, dpdy); });
     }
-    const Variant& Get() const { return v; }
 
     // "perspective" (fov 90, lensradius 0, focaldistance 1e6, frameaspectratio, screenwindow)
     // or "orthographic" (lensradius, focaldistance, frameaspectratio, screenwindow); common
@@ -57,9 +51,6 @@ class Camera {
     static Camera Create(const std::string& name, const ParameterDictionary& params,
                          const CameraTransform& cameraTransform, Point2i fullResolution,
                          const FileLoc& loc, ObjectArena& arena, Diagnostics& diag);
-
-  private:
-    Variant v = static_cast<const PerspectiveCamera*>(nullptr);
 };
 
 }  // namespace kiln

@@ -7,6 +7,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "base/closed_set.h"
 #include "core/camera/camera_sample.h"
 #include "core/camera/samplers.h"
 #include "core/film/filter.h"
@@ -17,38 +18,34 @@ namespace kiln {
 
 class ParameterDictionary;
 
-class Sampler {
+class Sampler
+    : public ClosedSet<IndependentSampler, StratifiedSampler, ZSobolSampler, PaddedSobolSampler> {
   public:
-    using Variant =
-        std::variant<IndependentSampler, StratifiedSampler, ZSobolSampler, PaddedSobolSampler>;
-    Sampler() : v(IndependentSampler(1)) {}
-    template <typename T>
-    requires(!std::is_same_v<std::decay_t<T>, Sampler>) Sampler(T s) : v(std::move(s)) {}
-
+    using ClosedSet::ClosedSet;
+    Sampler() : ClosedSet(IndependentSampler(1)) {}
     // The seed its sample streams are drawn with.
     int Seed() const {
-        return std::visit([](const auto& s) { return s.Seed(); }, v);
+        return Dispatch([](const auto& s) { return s.Seed(); });
     }
     int SamplesPerPixel() const {
-        return std::visit([](const auto& s) { return s.SamplesPerPixel(); }, v);
+        return Dispatch([](const auto& s) { return s.SamplesPerPixel(); });
     }
     // Restarts the stream at sample `sampleIndex` of pixel p, at dimension `dimension`.
     void StartPixelSample(Point2i p, int sampleIndex, int dimension = 0) {
-        std::visit([&](auto& s) { s.StartPixelSample(p, sampleIndex, dimension); }, v);
+        Dispatch([&](auto& s) { s.StartPixelSample(p, sampleIndex, dimension); });
     }
     // Values in [0, 1).
     Float Get1D() {
-        return std::visit([](auto& s) { return s.Get1D(); }, v);
+        return Dispatch([](auto& s) { return s.Get1D(); });
     }
     Point2f Get2D() {
-        return std::visit([](auto& s) { return s.Get2D(); }, v);
+        return Dispatch([](auto& s) { return s.Get2D(); });
     }
     // The 2D sample for the position within the pixel (film plane).
     Point2f GetPixel2D() {
-        return std::visit([](auto& s) { return s.GetPixel2D(); }, v);
+        return Dispatch([](auto& s) { return s.GetPixel2D(); });
     }
     Sampler Clone() const { return *this; }
-    const Variant& Get() const { return v; }
 
     // pbrt-v4 names "independent", "stratified", "zsobol" (default in pbrt-v4),
     // "paddedsobol"; "halton", "pmj02bn" and "sobol" warn and use zsobol. Parameters
@@ -59,9 +56,6 @@ class Sampler {
                           Point2i fullResolution, const FileLoc& loc, Diagnostics& diag,
                           std::optional<int> sppOverride = {},
                           std::optional<int> seedOverride = {});
-
-  private:
-    Variant v;
 };
 
 // pbrt-v4 GetCameraSample: a filter-importance-sampled film position in pixel pPixel

@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "base/closed_set.h"
 #include "base/object_arena.h"
 #include "base/sampling.h"
 #include "base/vecmath.h"
@@ -138,38 +139,30 @@ class TriangleFilter {
 };
 
 // Filter: the closed set of pixel filters.
-class Filter {
+class Filter : public ClosedSet<const BoxFilter*, const GaussianFilter*, const MitchellFilter*,
+                                const LanczosSincFilter*, const TriangleFilter*> {
   public:
-    using Variant = std::variant<const BoxFilter*, const GaussianFilter*, const MitchellFilter*,
-                                 const LanczosSincFilter*, const TriangleFilter*>;
-    Filter() = default;
-    template <typename T>
-    Filter(const T* f) : v(f) {}
-
+    using ClosedSet::ClosedSet;
     // Half-widths of the filter's support, in pixels.
     Vector2f Radius() const {
-        return std::visit([](auto f) { return f->Radius(); }, v);
+        return Dispatch([](auto f) { return f->Radius(); });
     }
     Float Evaluate(Point2f p) const {
-        return std::visit([&](auto f) { return f->Evaluate(p); }, v);
+        return Dispatch([&](auto f) { return f->Evaluate(p); });
     }
     // Integral of f over its support (pixel^2).
     Float Integral() const {
-        return std::visit([](auto f) { return f->Integral(); }, v);
+        return Dispatch([](auto f) { return f->Integral(); });
     }
     FilterSample Sample(Point2f u) const {
-        return std::visit([&](auto f) { return f->Sample(u); }, v);
+        return Dispatch([&](auto f) { return f->Sample(u); });
     }
-    const Variant& Get() const { return v; }
 
     // pbrt-v4 names: "box", "gaussian", "mitchell", "sinc", "triangle"; parameters "xradius",
     // "yradius", "sigma" (gaussian), "B"/"C" (mitchell), "tau" (sinc). Unknown name:
     // SceneError.
     static Filter Create(const std::string& name, const ParameterDictionary& params,
                          const FileLoc& loc, ObjectArena& arena, Diagnostics& diag);
-
-  private:
-    Variant v = static_cast<const BoxFilter*>(nullptr);
 };
 
 }  // namespace kiln

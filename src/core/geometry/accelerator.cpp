@@ -200,7 +200,7 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
     std::vector<std::pair<const TriangleMesh*, std::vector<uint32_t>>> meshes;
     std::vector<size_t> others;
     for (size_t i = 0; i < shapes.size(); ++i) {
-        if (const Triangle* t = shapes[i].Get<Triangle>()) {
+        if (const Triangle* t = shapes[i].GetIf<Triangle>()) {
             auto it = std::find_if(meshes.begin(), meshes.end(),
                                    [&](auto& m) { return m.first == t->GetMesh(); });
             if (it == meshes.end()) {
@@ -224,11 +224,11 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
         // index buffer and no per-triangle index is kept
         bool identity = int(idx.size()) == mesh->nTriangles;
         for (size_t k = 0; k < idx.size() && identity; ++k)
-            identity = shapes[idx[k]].Get<Triangle>()->TriangleIndex() == int(k);
+            identity = shapes[idx[k]].GetIf<Triangle>()->TriangleIndex() == int(k);
         if (!identity) {
             rec->triIndices.reserve(idx.size());
             for (uint32_t i : idx)
-                rec->triIndices.push_back(shapes[i].Get<Triangle>()->TriangleIndex());
+                rec->triIndices.push_back(shapes[i].GetIf<Triangle>()->TriangleIndex());
         }
         if (haveLights) {
             rec->lights.reserve(idx.size());

@@ -34,11 +34,11 @@ Point2f Shape::InvertParametric(Point3f p) const {
 }
 std::pair<Vector3f, Float> Shape::NormalBounds() const {
     constexpr std::pair<Vector3f, Float> all = {Vector3f(0, 0, 1), -1};
-    if (const Triangle* t = Get<Triangle>()) {
+    if (const Triangle* t = GetIf<Triangle>()) {
         Interaction c = t->PointAt({1.f / 3, 1.f / 3, 1.f / 3}, 0);
         return {Vector3f(c.n), 1};
     }
-    if (const Disk* d = Get<Disk>()) {
+    if (const Disk* d = GetIf<Disk>()) {
         Normal3f n = SafeNormalize((*d->renderFromObject)(Normal3f(0, 0, 1)));
         return {Vector3f(d->reverseOrientation ? -n : n), 1};
     }

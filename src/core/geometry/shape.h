@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "base/closed_set.h"
 #include "base/object_arena.h"
 #include "base/transform.h"
 #include "base/vecmath.h"
@@ -24,14 +25,10 @@ struct MeshDisplacement;
 class Diagnostics;
 struct FileLoc;
 
-class Shape {
+class Shape : public ClosedSet<const Sphere*, const Disk*, const Cylinder*, const Triangle*,
+                               const BilinearPatch*> {
   public:
-    using Variant = std::variant<const Sphere*, const Disk*, const Cylinder*, const Triangle*,
-                                 const BilinearPatch*>;
-    Shape() = default;
-    template <typename T>
-    requires std::is_constructible_v<Variant, const T*> Shape(const T* s) : v(s) {}
-
+    using ClosedSet::ClosedSet;
     // Bounds in render space (scene units), surface area (scene units^2).
     Bounds3f Bounds() const;
     Float Area() const;
@@ -66,20 +63,6 @@ class Shape {
                                      const ParameterDictionary& params, const FileLoc& loc,
                                      ObjectArena& arena, Diagnostics& diag,
                                      const MeshDisplacement* displacement = nullptr);
-
-    template <typename T>
-    const T* Get() const {
-        auto p = std::get_if<const T*>(&v);
-        return p ? *p : nullptr;
-    }
-    template <typename F>
-    decltype(auto) Dispatch(F&& f) const {
-        return std::visit([&](auto p) -> decltype(auto) { return f(p); }, v);
-    }
-    bool operator==(const Shape& o) const { return v == o.v; }
-
-  private:
-    Variant v;
 };
 
 }  // namespace kiln

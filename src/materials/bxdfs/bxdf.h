@@ -19,6 +19,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "base/closed_set.h"
 #include "materials/bxdfs/bxdf_types.h"
 #include "materials/bxdfs/conductor_bxdf.h"
 #include "materials/bxdfs/dielectric_bxdf.h"
@@ -48,36 +49,33 @@ template <typename B>
 concept PolarizationDefinedBxDF = PolarizingBxDF<B>
 != DepolarizingBxDF<B>;
 
-class BxDF {
-  public:
-    using Variant =
-        std::variant<DiffuseBxDF, ConductorBxDF, DielectricBxDF, ThinDielectricBxDF,
-                     CoatedDiffuseBxDF, CoatedConductorBxDF, PolarizingFilterBxDF, HairBxDF>;
+// The BxDFs, held by value
+using BxDFSet = ClosedSet<DiffuseBxDF, ConductorBxDF, DielectricBxDF, ThinDielectricBxDF,
+                          CoatedDiffuseBxDF, CoatedConductorBxDF, PolarizingFilterBxDF, HairBxDF>;
 
+class BxDF : public BxDFSet {
+  public:
     static_assert(
-        []<typename... Ts>(std::variant<Ts...>*) {
+        []<typename... Ts>(ClosedSet<Ts...>*) {
             return (PolarizationDefinedBxDF<Ts> && ...);
-        }(static_cast<Variant*>(nullptr)),
+        }(static_cast<BxDFSet*>(nullptr)),
         "every BxDF provides MuellerF and MuellerSample or declares kDepolarizes (bxdf.h)");
 
     BxDF() = default;  // a black DiffuseBxDF
-    template <typename T>
-    requires std::is_constructible_v<Variant, T> BxDF(T bxdf) : v(std::move(bxdf)) {}
+    using ClosedSet::ClosedSet;
 
     // BSDF value (sr^-1) per wavelength; includes no cosine factor.
     template <typename Value = SampledSpectrum>
     Value f(Vector3f wo, Vector3f wi, TransportMode mode) const {
         if constexpr (std::is_same_v<Value, SampledSpectrum>) {
-            return std::visit([&](const auto& b) { return b.f(wo, wi, mode); }, v);
+            return Dispatch([&](const auto& b) { return b.f(wo, wi, mode); });
         } else {
-            return std::visit(
-                [&](const auto& b) {
-                    if constexpr (PolarizingBxDF<std::decay_t<decltype(b)>>)
-                        return b.MuellerF(wo, wi, mode);
-                    else
-                        return MuellerMatrix::Depolarizer(b.f(wo, wi, mode));
-                },
-                v);
+            return Dispatch([&](const auto& b) {
+                if constexpr (PolarizingBxDF<std::decay_t<decltype(b)>>)
+                    return b.MuellerF(wo, wi, mode);
+                else
+                    return MuellerMatrix::Depolarizer(b.f(wo, wi, mode));
+            });
         }
     }
     template <typename Value = SampledSpectrum>
@@ -85,48 +83,33 @@ class BxDF {
         Vector3f wo, Float uc, Point2f u, TransportMode mode = TransportMode::Radiance,
         BxDFReflTransFlags sampleFlags = BxDFReflTransFlags::All) const {
         if constexpr (std::is_same_v<Value, SampledSpectrum>) {
-            return std::visit(
-                [&](const auto& b) { return b.Sample_f(wo, uc, u, mode, sampleFlags); }, v);
+            return Dispatch(
+                [&](const auto& b) { return b.Sample_f(wo, uc, u, mode, sampleFlags); });
         } else {
-            return std::visit(
-                [&](const auto& b) -> std::optional<BSDFSampleOf<Value>> {
-                    std::optional<BSDFSample> bs = b.Sample_f(wo, uc, u, mode, sampleFlags);
-                    if (!bs) return {};
-                    if constexpr (PolarizingBxDF<std::decay_t<decltype(b)>>)
-                        return BSDFSampleOf<Value>(*bs, b.MuellerSample(wo, *bs, mode));
-                    else
-                        return BSDFSampleOf<Value>(*bs, MuellerMatrix::Depolarizer(bs->f));
-                },
-                v);
+            return Dispatch([&](const auto& b) -> std::optional<BSDFSampleOf<Value>> {
+                std::optional<BSDFSample> bs = b.Sample_f(wo, uc, u, mode, sampleFlags);
+                if (!bs) return {};
+                if constexpr (PolarizingBxDF<std::decay_t<decltype(b)>>)
+                    return BSDFSampleOf<Value>(*bs, b.MuellerSample(wo, *bs, mode));
+                else
+                    return BSDFSampleOf<Value>(*bs, MuellerMatrix::Depolarizer(bs->f));
+            });
         }
     }
     Float PDF(Vector3f wo, Vector3f wi, TransportMode mode,
               BxDFReflTransFlags sampleFlags = BxDFReflTransFlags::All) const {
-        return std::visit([&](const auto& b) { return b.PDF(wo, wi, mode, sampleFlags); }, v);
+        return Dispatch([&](const auto& b) { return b.PDF(wo, wi, mode, sampleFlags); });
     }
     BxDFFlags Flags() const {
-        return std::visit([](const auto& b) { return b.Flags(); }, v);
+        return Dispatch([](const auto& b) { return b.Flags(); });
     }
     void Regularize() {
-        std::visit([](auto& b) { b.Regularize(); }, v);
+        Dispatch([](auto& b) { b.Regularize(); });
     }
 
     // Monte Carlo estimate of the directional albedo (reflection plus transmission) from wo,
     // using one Sample_f call per (uc[i], u2[i]) pair (pbrt-v4's BxDF::rho).
     SampledSpectrum rho(Vector3f wo, std::span<const Float> uc, std::span<const Point2f> u2) const;
-
-    template <typename T>
-    const T* Cast() const {
-        return std::get_if<T>(&v);
-    }
-    template <typename T>
-    bool Is() const {
-        return std::holds_alternative<T>(v);
-    }
-    const Variant& Get() const { return v; }
-
-  private:
-    Variant v;
 };
 
 }  // namespace kiln
