@@ -249,7 +249,7 @@ std::string CornellBoxPath() {
     return std::string(KILN_SOURCE_DIR) + "/scenes/cornell-box/cornell-box.pbrt";
 }
 
-std::unique_ptr<Scene> LoadScene(const std::string& file, const SceneOverrides& overrides) {
+std::unique_ptr<Scene> LoadScene(const std::string& file, const RenderOptions& overrides) {
     Diagnostics diag(nullptr);
     SceneBuilder builder(diag);
     ParseFile(builder, file, diag);
@@ -364,7 +364,7 @@ double ProcessCPUSeconds() {
 }
 
 void BM_RenderCornellBox(benchmark::State& state) {
-    SceneOverrides overrides;
+    RenderOptions overrides;
     overrides.samplesPerPixel = int(state.range(0));
     std::unique_ptr<Scene> scene = LoadScene(CornellBoxPath(), overrides);
     RenderSettings settings;

@@ -91,7 +91,7 @@ std::string UsageText() {
     return "usage: kiln SCENE.pbrt [options]\n"
            "  -o, --output FILE     output image (EXR, PNG, JPEG, TIFF, ... by extension);\n"
            "                        may repeat; default: the scene's Film \"filename\"\n"
-           "  --spp N               samples per pixel (overrides the scene's sampler)\n"
+           "  --spp N               samples per pixel (renderOptions the scene's sampler)\n"
            "  --threads N           worker threads (default: all cores)\n"
            "  --seed S              sampler seed\n"
            "  --crop x0 x1 y0 y1    render only this window (NDC, as Film \"cropwindow\";\n"
@@ -303,39 +303,28 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     try {
         SceneBuilder builder(diag);
         ParseFile(builder, options.sceneFile, diag);
-        SceneOverrides overrides{options.spp, options.seed, options.crop, std::nullopt};
-        overrides.pixelBounds = options.pixelBounds;
-        overrides.genericFootprints = options.genericFootprints;
-        overrides.genericAOVs = options.genericAOVs;
-        overrides.genericVolumes = options.genericVolumes;
-        overrides.stokes = options.stokes;
-        overrides.memoryLimitBytes = options.memoryLimit;
-        if (options.emission) overrides.emission = ParseEmissionModel(*options.emission);
-        if (options.pbrtv4LayeredMIS) overrides.layeredMIS = LayeredMIS::PbrtV4;
+        RenderOptions renderOptions{options.spp, options.seed, options.crop, std::nullopt};
+        renderOptions.pixelBounds = options.pixelBounds;
+        renderOptions.genericFootprints = options.genericFootprints;
+        renderOptions.genericAOVs = options.genericAOVs;
+        renderOptions.genericVolumes = options.genericVolumes;
+        if (options.stokes) renderOptions.stokes = true;
+        renderOptions.memoryLimitBytes = options.memoryLimit;
+        if (options.emission) renderOptions.emission = ParseEmissionModel(*options.emission);
+        if (options.pbrtv4LayeredMIS) renderOptions.layeredMIS = LayeredMIS::PbrtV4;
         if (frame) {
-            overrides.frame = *frame;
-            overrides.timeSeconds = Float(*frame / options.fps);
+            renderOptions.frame = *frame;
+            renderOptions.timeSeconds = Float(*frame / options.fps);
         }
-        // Integrator settings from the command line (for comparisons)
-        ParameterDictionary& integrator = builder.Description().integrator.parameters;
-        auto setString = [&](const char* name, const std::string& value) {
-            ParsedParameter p;
-            p.type = "string";
-            p.name = name;
-            p.strings = {value};
-            integrator.Set(p);
-        };
-        if (options.lightSampler) setString("lightsampler", *options.lightSampler);
-        if (options.strategy) setString("strategy", *options.strategy);
-        if (options.emitterSampling) setString("emittersampling", *options.emitterSampling);
-        if (options.wavelengths) {
-            ParsedParameter p;
-            p.type = "integer";
-            p.name = "wavelengths";
-            p.ints = {*options.wavelengths};
-            integrator.Set(p);
-        }
-        scene = Scene::Create(builder.Description(), overrides, diag);
+        // Integrator settings from the command line (for comparisons; validated when parsed)
+        if (options.lightSampler)
+            renderOptions.lightSelection = ParseLightSelection(*options.lightSampler);
+        if (options.strategy) renderOptions.strategy = ParseLightStrategy(*options.strategy);
+        if (options.emitterSampling)
+            renderOptions.emitterPowerSampling =
+                ParseEmitterPowerSampling(*options.emitterSampling);
+        if (options.wavelengths) renderOptions.singleWavelength = *options.wavelengths == 1;
+        scene = Scene::Create(builder.Description(), renderOptions, diag);
         diag.ReportRepeats();
         if (interruptRequested.load()) {
             std::cerr << "kiln: interrupted while loading the scene; nothing written\n";

@@ -24,51 +24,13 @@
 #include "materials/bxdfs/bsdf.h"
 #include "materials/material.h"
 #include "media/medium.h"
+#include "render/render_options.h"
 #include "render/scene_description.h"
 #include "thermal/emission_model.h"
 #include "thermal/emissivity_tables.h"
 #include "thermal/thermal_emission.h"
 
 namespace kiln {
-
-// Command-line settings that take precedence over the scene file.
-struct SceneOverrides {
-    std::optional<int> samplesPerPixel;
-    std::optional<int> seed;
-    std::optional<Bounds2f> cropWindow;  // NDC [x0, x1] x [y0, y1], as Film "cropwindow"
-    // Pixels [x0, x1) x [y0, y1) of the full image, as Film "pixelbounds" (pbrt-v4's
-    // --pixelbounds; replaces the scene's crop window and pixel bounds)
-    std::optional<Bounds2i> pixelBounds;
-    std::optional<EmissionModel> emission;  // thermal emission model for every hot surface
-    // kiln --layered-mis: the coated materials' MIS weights (materials/bxdfs/layered_bxdf.h)
-    LayeredMIS layeredMIS = LayeredMIS::Kiln;
-    // Animation: the frame being rendered and its time in seconds. Textures that change over
-    // time ("cooling" and "keyframes": "float time"; "heatmap" sequences: "float frame") get
-    // these unless the scene sets them explicitly.
-    std::optional<int> frame;
-    std::optional<Float> timeSeconds;
-    // Run generic code paths instead of the ones chosen for the scene (SceneFeatures), to
-    // measure what the choices save: texture footprints at every hit, AOV work for every
-    // camera ray.
-    bool genericFootprints = false, genericAOVs = false;
-    // Volumetric path tracing even when the scene has no media or asks for "path" (kiln
-    // --generic volpath)
-    bool genericVolumes = false;
-    // kiln --stokes: the film records Stokes layers (Film "bool stokes" true).
-    bool stokes = false;
-    // kiln --memory-limit: what the scene's objects may take (base/memory_budget.h);
-    // default the machine's memory.
-    std::optional<double> memoryLimitBytes;
-};
-
-// How direct light is found: pbrt-v4's MIS of light and BSDF sampling (default), or one of the
-// two alone (kiln's Integrator "path" "string strategy" "mis" | "light" | "bsdf", for
-// comparisons and tests; all three converge to the same image).
-enum class LightStrategy { MIS, LightOnly, BSDFOnly };
-// How next-event estimation picks a light (Integrator "string lightsampler"): pbrt-v4's "bvh"
-// (default: a light BVH, by importance at the receiving point), "power" (by emitted power) and
-// "uniform", and kiln's "area" (area lights by area, others weigh 1).
-enum class LightSelection { BVH, Power, Uniform, Area };
 
 struct PathIntegratorSettings {
     // pbrt-v4's "volpath" (default; participating media) rather than "path" (media ignored)
@@ -147,7 +109,7 @@ class Scene {
     // Creates every object; throws SceneError for invalid input and reports warnings
     // (including unused parameters) to diag.
     static std::unique_ptr<Scene> Create(SceneDescription& description,
-                                         const SceneOverrides& overrides, Diagnostics& diag);
+                                         const RenderOptions& overrides, Diagnostics& diag);
     Scene(const Scene&) = delete;
     Scene& operator=(const Scene&) = delete;
     ~Scene();

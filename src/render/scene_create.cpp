@@ -20,8 +20,10 @@ namespace kiln {
 
 namespace {
 
-// Camera, film, filter, sampler and the integrator's settings
-PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, Diagnostics& diag) {
+// Camera, film, filter, sampler and the integrator's settings (the scene's Integrator, then
+// the render's options)
+PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOptions& options,
+                                                Diagnostics& diag) {
     PathIntegratorSettings s;
     if (e.name != "path" && e.name != "volpath")
         diag.Warn(e.loc, "integrator \"" + e.name + "\" is not supported; using \"volpath\"");
@@ -34,40 +36,31 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, Diagnostics& dia
         throw SceneError(e.parameters.Loc("wavelengths"),
                          "\"wavelengths\" must be 1 or " + std::to_string(NSpectrumSamples),
                          std::to_string(wavelengths));
-    s.singleWavelength = wavelengths == 1;
+    s.singleWavelength = options.singleWavelength.value_or(wavelengths == 1);
     std::string strategy = e.parameters.GetOneString("strategy", "mis");
-    if (strategy == "mis")
-        s.strategy = LightStrategy::MIS;
-    else if (strategy == "light")
-        s.strategy = LightStrategy::LightOnly;
-    else if (strategy == "bsdf")
-        s.strategy = LightStrategy::BSDFOnly;
-    else
+    std::optional<LightStrategy> st = ParseLightStrategy(strategy);
+    if (!st)
         throw SceneError(e.parameters.Loc("strategy"),
                          "unknown strategy (expected \"mis\", \"light\" or \"bsdf\")", strategy);
+    s.strategy = options.strategy.value_or(*st);
     std::string es = e.parameters.GetOneString("emittersampling", "power");
-    if (es != "power" && es != "shape")
+    std::optional<bool> byPower = ParseEmitterPowerSampling(es);
+    if (!byPower)
         throw SceneError(e.parameters.Loc("emittersampling"),
                          "unknown emitter sampling (expected \"power\" or \"shape\")", es);
-    s.emitterPowerSampling = es == "power";
+    s.emitterPowerSampling = options.emitterPowerSampling.value_or(*byPower);
     std::string ls = e.parameters.GetOneString("lightsampler", "bvh");
-    if (ls == "bvh")
-        s.lightSelection = LightSelection::BVH;
-    else if (ls == "power")
-        s.lightSelection = LightSelection::Power;
-    else if (ls == "uniform")
-        s.lightSelection = LightSelection::Uniform;
-    else if (ls == "area")
-        s.lightSelection = LightSelection::Area;
-    else
+    std::optional<LightSelection> sel = ParseLightSelection(ls);
+    if (!sel)
         throw SceneError(e.parameters.Loc("lightsampler"),
                          "unknown light sampler (expected \"bvh\", \"power\", \"uniform\" or "
                          "\"area\")",
                          ls);
+    s.lightSelection = options.lightSelection.value_or(*sel);
     return s;
 }
 
-void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const SceneOverrides& overrides,
+void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const RenderOptions& options,
                          Diagnostics& diag) {
     ObjectArena& arena = scene.arena;
     scene.filter =
@@ -76,28 +69,11 @@ void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const SceneOverri
     Float shutterClose = desc.camera.parameters.GetOneFloat("shutterclose", 1);
     if (shutterClose < shutterOpen)
         throw SceneError(desc.camera.loc, "shutterclose is before shutteropen", "shutterclose");
-    // Command-line overrides become film parameters
-    auto set = [&](const char* type, const char* name, auto fill) {
-        ParsedParameter p;
-        p.type = type;
-        p.name = name;
-        fill(p);
-        desc.film.parameters.Set(p);
-    };
-    if (const std::optional<Bounds2f>& c = overrides.cropWindow)
-        set("float", "cropwindow", [&](ParsedParameter& p) {
-            p.floats = {c->pMin.x, c->pMax.x, c->pMin.y, c->pMax.y};
-        });
-    if (const std::optional<Bounds2i>& b = overrides.pixelBounds) {
-        desc.film.parameters.Erase("cropwindow");
-        set("integer", "pixelbounds", [&](ParsedParameter& p) {
-            p.ints = {b->pMin.x, b->pMax.x, b->pMin.y, b->pMax.y};
-        });
-    }
-    if (overrides.stokes) set("bool", "stokes", [](ParsedParameter& p) { p.bools = {true}; });
     scene.autoExposure = desc.film.parameters.GetOneBool("autoexposure", false);
-    scene.film = RGBFilm::Create(desc.film.name, desc.film.parameters, shutterClose - shutterOpen,
-                                 *scene.filter, desc.filmColorSpace, desc.film.loc, arena, diag);
+    RGBFilm::Request request{options.cropWindow, options.pixelBounds, options.stokes};
+    scene.film =
+        RGBFilm::Create(desc.film.name, desc.film.parameters, shutterClose - shutterOpen,
+                        *scene.filter, desc.filmColorSpace, desc.film.loc, arena, diag, request);
     scene.camera =
         Camera::Create(desc.camera.name, desc.camera.parameters, desc.camera.cameraTransform,
                        scene.film->FullResolution(), desc.camera.loc, arena, diag);
@@ -108,11 +84,11 @@ void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const SceneOverri
                              "camera \"polarizer\" must be a finite angle in degrees", "polarizer");
         scene.cameraPolarizer = Radians(degrees);
     }
-    std::optional<int> seed = overrides.seed ? overrides.seed : desc.seedOption;
+    std::optional<int> seed = options.seed ? options.seed : desc.seedOption;
     scene.sampler =
         Sampler::Create(desc.sampler.name, desc.sampler.parameters, scene.film->FullResolution(),
-                        desc.sampler.loc, diag, overrides.samplesPerPixel, seed);
-    scene.integrator = CreateIntegratorSettings(desc.integrator, diag);
+                        desc.sampler.loc, diag, options.samplesPerPixel, seed);
+    scene.integrator = CreateIntegratorSettings(desc.integrator, options, diag);
     scene.disablePixelJitter = desc.disablePixelJitter;
     if (desc.accelerator.name != "bvh" && desc.accelerator.name != "kdtree")
         diag.Warn(desc.accelerator.loc,
@@ -121,36 +97,22 @@ void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const SceneOverri
                            &desc.sampler, &desc.integrator, &desc.accelerator})
         e->parameters.ReportUnused(diag);
     scene.shader = std::make_unique<SceneShader>(&*scene.camera, scene.sampler->SamplesPerPixel(),
-                                                 overrides.genericFootprints);
+                                                 options.genericFootprints);
 }
 
 // Textures
-// Sets "float <name>" to value unless the texture's parameters already have it.
-void SetIfAbsent(ParameterDictionary& params, const std::string& name, Float value) {
-    if (params.Has(name)) return;
-    ParsedParameter p;
-    p.type = "float";
-    p.name = name;
-    p.floats = {value};
-    params.Set(p);
-}
-
-NamedTextures& CreateTextures(SceneDescription& desc, const SceneOverrides& overrides, Scene& scene,
+NamedTextures& CreateTextures(SceneDescription& desc, const RenderOptions& options, Scene& scene,
                               Diagnostics& diag) {
     ObjectArena& arena = scene.arena;
     NamedTextures& textures = *arena.New<NamedTextures>();
     textures.renderFromWorld = desc.camera.cameraTransform.RenderFromWorld();
+    // The frame's time for time-dependent temperature textures
+    TextureAnimation animation{options.frame, options.timeSeconds};
     for (auto& [name, tex] : desc.floatTextures) {
-        // Animation time for time-dependent temperature textures
-        if (overrides.timeSeconds && (tex.texName == "cooling" || tex.texName == "keyframes"))
-            SetIfAbsent(tex.parameters, "time", *overrides.timeSeconds);
-        if (overrides.frame && tex.texName == "heatmap" &&
-            tex.parameters.GetOneString("filename", "").find('#') != std::string::npos)
-            SetIfAbsent(tex.parameters, "frame", Float(*overrides.frame));
         TextureParameterDictionary params(&tex.parameters, &textures);
         textures.floatTextures.insert_or_assign(
-            name,
-            CreateFloatTexture(tex.texName, tex.renderFromObject, params, tex.loc, arena, diag));
+            name, CreateFloatTexture(tex.texName, tex.renderFromObject, params, tex.loc, arena,
+                                     diag, animation));
         tex.parameters.ReportUnused(diag);
     }
     for (auto& [name, tex] : desc.spectrumTextures) {
@@ -451,7 +413,7 @@ void CreateLightSampler(Scene& scene) {
 SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
                              const std::vector<SceneShapes>& shapes,
                              const SceneMaterials& materials, const ThermalEmitters& emitters,
-                             const SceneOverrides& overrides) {
+                             const RenderOptions& options) {
     SceneFeatures f;
     for (const SceneShapes& s : shapes)
         if (s.heat.emission) {
@@ -468,9 +430,9 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
     };
     for (const auto& [name, m] : materials.named) count(m);
     for (const Material* m : materials.anonymous) count(m);
-    f.genericFootprints = overrides.genericFootprints;
-    f.genericAOVs = overrides.genericAOVs;
-    f.aovs = scene.film->UsesVisibleSurface() || overrides.genericAOVs;
+    f.genericFootprints = options.genericFootprints;
+    f.genericAOVs = options.genericAOVs;
+    f.aovs = scene.film->UsesVisibleSurface() || options.genericAOVs;
     f.singleWavelength = scene.integrator.singleWavelength;
     f.fixedPixelCenter = scene.disablePixelJitter;
     f.polarized = scene.emissivityTables->polarized;  // decided in Scene::Create
@@ -480,8 +442,8 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
         f.emissiveMedia += m.IsEmissive();
         f.thermalMedia += m.IsThermal();
     }
-    f.genericVolumes = overrides.genericVolumes;
-    f.volumetric = overrides.genericVolumes || (scene.integrator.volumetric && f.media > 0);
+    f.genericVolumes = options.genericVolumes;
+    f.volumetric = options.genericVolumes || (scene.integrator.volumetric && f.media > 0);
     f.areaLights = !desc.areaLights.empty();
     f.environmentLight = !scene.infiniteLights.empty();
     auto dispersive = [](const ParameterDictionary& p) {
@@ -506,20 +468,20 @@ bool NeedsPolarization(const Scene& scene, const SceneMaterials& materials) {
 }  // namespace
 
 // Every object of the scene, in pbrt-v4's order of creation
-static void CreateScene(Scene& scene, SceneDescription& desc, const SceneOverrides& overrides,
+static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOptions& options,
                         Diagnostics& diag) {
-    CreateCameraAndFilm(scene, desc, overrides, diag);
-    NamedTextures& textures = CreateTextures(desc, overrides, scene, diag);
+    CreateCameraAndFilm(scene, desc, options, diag);
+    NamedTextures& textures = CreateTextures(desc, options, scene, diag);
     SceneMaterials materials =
-        CreateMaterials(desc, textures, scene.arena, diag, overrides.layeredMIS);
+        CreateMaterials(desc, textures, scene.arena, diag, options.layeredMIS);
     MediumIndices media = CreateMedia(
         desc, textures, [&](const ShapeSceneEntity& s) { return materials.Of(s); },
-        overrides.emission, scene.media, scene.arena, diag);
+        options.emission, scene.media, scene.arena, diag);
     scene.cameraMedium = MediumIndex(desc.camera.medium, media, desc.camera.loc);
     scene.emissivityTables = std::make_unique<EmissivityTables>();
     scene.emissivityTables->polarized = NeedsPolarization(scene, materials);
     ThermalEmitters emitters(*scene.shader, *scene.emissivityTables, scene.arena, diag,
-                             overrides.emission, scene.integrator.emitterPowerSampling);
+                             options.emission, scene.integrator.emitterPowerSampling);
     std::vector<SceneShapes> shapes;
     for (ShapeSceneEntity& s : desc.shapes)
         shapes.push_back(CreateShapes(s, textures, materials, media, emitters, scene.arena, diag));
@@ -527,7 +489,7 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const SceneOverrid
     CreateAggregate(scene, desc, shapes, shapeLights, textures, materials, media, emitters, diag);
     PreprocessLights(scene);
     CreateLightSampler(scene);
-    scene.features = DecideFeatures(scene, desc, shapes, materials, emitters, overrides);
+    scene.features = DecideFeatures(scene, desc, shapes, materials, emitters, options);
     if (!scene.integrator.volumetric && !scene.media.empty())
         diag.Warn(desc.integrator.loc,
                   "integrator \"path\" ignores participating media (as pbrt-v4); use "
@@ -537,12 +499,12 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const SceneOverrid
         diag.Warn(FileLoc(), "the scene has no lights; the image will be black");
 }
 
-std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const SceneOverrides& overrides,
+std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const RenderOptions& options,
                                      Diagnostics& diag) {
     std::unique_ptr<Scene> scene(new Scene());
-    if (overrides.memoryLimitBytes) scene->arena.Budget().SetLimit(*overrides.memoryLimitBytes);
+    if (options.memoryLimitBytes) scene->arena.Budget().SetLimit(*options.memoryLimitBytes);
     try {
-        CreateScene(*scene, desc, overrides, diag);
+        CreateScene(*scene, desc, options, diag);
     } catch (const MemoryLimitError& e) {
         // Charges are reported at their directive where creation code can; the rest here
         throw SceneError(FileLoc(), e.what());

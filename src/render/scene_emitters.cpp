@@ -127,14 +127,10 @@ const MaterialAlbedo* ThermalEmitters::AlbedoOf(const Material* material, const 
 
 const Material* ThermalEmitters::Black() {
     if (black) return black;
-    ParsedParameter p;
-    p.type = "rgb";
-    p.name = "reflectance";
-    p.floats = {0, 0, 0};
-    ParameterDictionary dict({p}, nullptr);
-    NamedTextures none;
-    TextureParameterDictionary tp(&dict, &none);
-    black = arena.New<Material>(Material::Create("diffuse", tp, {}, FileLoc(), arena, diag));
+    // A diffuse material of reflectance 0: it absorbs everything and reflects nothing
+    const SpectrumConstantTexture* zero =
+        arena.New<SpectrumConstantTexture>(Spectrum(ConstantSpectrum(0)));
+    black = arena.New<Material>(arena.New<DiffuseMaterial>(SpectrumTexture(zero)));
     return black;
 }
 

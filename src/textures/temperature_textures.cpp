@@ -142,7 +142,7 @@ std::string HeatMapTexture::FrameFilename(const std::string& pattern, int frame)
 
 HeatMapTexture* HeatMapTexture::Create(const TextureParameterDictionary& params,
                                        const Transform& renderFromTexture, const FileLoc& loc,
-                                       ObjectArena& arena, Diagnostics& diag) {
+                                       ObjectArena& arena, Diagnostics& diag, Float frame) {
     std::string pattern = params.GetOneFilename("filename", "");
     if (pattern.empty()) throw SceneError(loc, "\"filename\" must be given for heatmap");
     TextureMapping2D mapping = TextureMapping2D::Create(params, renderFromTexture, loc);
@@ -190,7 +190,7 @@ HeatMapTexture* HeatMapTexture::Create(const TextureParameterDictionary& params,
         return m;
     };
 
-    Float frame = params.GetOneFloat("frame", 0);
+    frame = params.GetOneFloat("frame", frame);
     bool sequence = FrameFilename(pattern, 0) != pattern;
     int f0 = sequence ? int(std::floor(frame)) : 0;
     Float w = sequence ? frame - Float(f0) : 0;
@@ -231,7 +231,8 @@ VertexAttributeTexture* VertexAttributeTexture::Create(const TextureParameterDic
 
 // TimeFunctionTexture Method Definitions
 TimeFunctionTexture* TimeFunctionTexture::CreateCooling(const TextureParameterDictionary& params,
-                                                        const FileLoc& loc, ObjectArena& arena) {
+                                                        const FileLoc& loc, ObjectArena& arena,
+                                                        Float time) {
     auto positive = [&](const char* name, Float def) {
         Float v = params.GetOneFloat(name, def);
         if (!(v > 0))
@@ -261,12 +262,13 @@ TimeFunctionTexture* TimeFunctionTexture::CreateCooling(const TextureParameterDi
                          "cooling needs \"mass\", or \"density\" with \"thickness\" or "
                          "\"volume\"",
                          "cooling");
-    Float time = params.GetOneFloat("time", 0);
+    time = params.GetOneFloat("time", time);
     return arena.New<TimeFunctionTexture>(Float(CoolingModel(p).Temperature(time)));
 }
 
 TimeFunctionTexture* TimeFunctionTexture::CreateKeyframes(const TextureParameterDictionary& params,
-                                                          const FileLoc& loc, ObjectArena& arena) {
+                                                          const FileLoc& loc, ObjectArena& arena,
+                                                          Float time) {
     std::vector<Float> times = params.GetFloatArray("times");
     std::vector<Float> values = params.GetFloatArray("values");
     if (times.empty() || times.size() != values.size())
@@ -276,7 +278,7 @@ TimeFunctionTexture* TimeFunctionTexture::CreateKeyframes(const TextureParameter
     if (!std::is_sorted(times.begin(), times.end()))
         throw SceneError(LocOf(params, "times", loc), "keyframe \"times\" must not decrease",
                          "times");
-    Float t = params.GetOneFloat("time", 0);
+    Float t = params.GetOneFloat("time", time);
     Float value;
     if (t <= times.front()) {
         value = values.front();

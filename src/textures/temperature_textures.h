@@ -104,9 +104,10 @@ class HeatMapTexture {
     // replaced by the zero-padded frame number; `pattern` itself when it has no '#'.
     static std::string FrameFilename(const std::string& pattern, int frame);
 
+    // frame: the frame of a sequence unless "float frame" is given
     static HeatMapTexture* Create(const TextureParameterDictionary& params,
                                   const Transform& renderFromTexture, const FileLoc& loc,
-                                  ObjectArena& arena, Diagnostics& diag);
+                                  ObjectArena& arena, Diagnostics& diag, Float frame = 0);
 
   private:
     TextureMapping2D mapping;
@@ -148,10 +149,13 @@ class TimeFunctionTexture {
     Float Evaluate(const TextureEvalContext&) const { return value; }
     Float Value() const { return value; }
 
+    // time: seconds, unless "float time" is given
     static TimeFunctionTexture* CreateCooling(const TextureParameterDictionary& params,
-                                              const FileLoc& loc, ObjectArena& arena);
+                                              const FileLoc& loc, ObjectArena& arena,
+                                              Float time = 0);
     static TimeFunctionTexture* CreateKeyframes(const TextureParameterDictionary& params,
-                                                const FileLoc& loc, ObjectArena& arena);
+                                                const FileLoc& loc, ObjectArena& arena,
+                                                Float time = 0);
 
   private:
     Float value;

@@ -55,7 +55,8 @@ bool IsUnsupportedTexture(const std::string& name) {
 
 FloatTexture CreateFloatTexture(const std::string& name, const Transform& renderFromTexture,
                                 const TextureParameterDictionary& params, const FileLoc& loc,
-                                ObjectArena& arena, Diagnostics& diag) {
+                                ObjectArena& arena, Diagnostics& diag,
+                                const TextureAnimation& animation) {
     if (name == "constant") return FloatConstantTexture::Create(params, arena);
     if (name == "scale") return FloatScaledTexture::Create(params, arena);
     if (name == "mix") return FloatMixTexture::Create(params, arena);
@@ -74,10 +75,12 @@ FloatTexture CreateFloatTexture(const std::string& name, const Transform& render
     if (name == "gradient") return GradientTexture::Create(params, renderFromTexture, loc, arena);
     if (name == "noise") return ThermalNoiseTexture::Create(params, renderFromTexture, loc, arena);
     if (name == "heatmap")
-        return HeatMapTexture::Create(params, renderFromTexture, loc, arena, diag);
+        return HeatMapTexture::Create(params, renderFromTexture, loc, arena, diag,
+                                      Float(animation.frame.value_or(0)));
     if (name == "vertexattribute") return VertexAttributeTexture::Create(params, arena);
-    if (name == "cooling") return TimeFunctionTexture::CreateCooling(params, loc, arena);
-    if (name == "keyframes") return TimeFunctionTexture::CreateKeyframes(params, loc, arena);
+    Float time = animation.timeSeconds.value_or(0);
+    if (name == "cooling") return TimeFunctionTexture::CreateCooling(params, loc, arena, time);
+    if (name == "keyframes") return TimeFunctionTexture::CreateKeyframes(params, loc, arena, time);
     if (IsUnsupportedTexture(name)) {
         diag.Warn(loc, "\"" + name + "\" float texture is not supported; using constant 0.5");
         return arena.New<FloatConstantTexture>(0.5f);

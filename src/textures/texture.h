@@ -7,6 +7,8 @@
 // unbounded (e.g. index of refraction) or illuminant (relative emitted radiance).
 #pragma once
 
+#include <optional>
+
 #include <map>
 #include <memory>
 #include <string>
@@ -110,9 +112,17 @@ struct NamedTextures {
 // keyframes (temperature_textures.h); spectrum only: marble. ptex (and the float-only/spectrum-only
 // classes asked for the other kind) warn and give a constant 0.5. An unknown class throws
 // SceneError at loc.
+// animation: the frame being rendered and its time in seconds, which the time-dependent
+// textures take unless their parameters set them ("cooling" and "keyframes": "float time";
+// "heatmap" sequences: "float frame").
+struct TextureAnimation {
+    std::optional<int> frame;
+    std::optional<Float> timeSeconds;
+};
 FloatTexture CreateFloatTexture(const std::string& className, const Transform& renderFromTexture,
                                 const TextureParameterDictionary& params, const FileLoc& loc,
-                                ObjectArena& arena, Diagnostics& diag);
+                                ObjectArena& arena, Diagnostics& diag,
+                                const TextureAnimation& animation = {});
 SpectrumTexture CreateSpectrumTexture(const std::string& className,
                                       const Transform& renderFromTexture,
                                       const TextureParameterDictionary& params, SpectrumType type,

@@ -16,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
         kiln::SceneBuilder builder(diag);
         kiln::ParseString(builder, text, diag, "fuzz.pbrt", "/nonexistent-kiln-fuzz");
-        kiln::SceneOverrides overrides;
+        kiln::RenderOptions overrides;
         overrides.samplesPerPixel = 1;
         overrides.cropWindow = kiln::Bounds2f{{0.5f, 0.5f}, {0.51f, 0.51f}};
         std::unique_ptr<kiln::Scene> scene =

@@ -18,7 +18,7 @@ struct ImageStats {
 };
 
 inline ImageStats RenderStats(const std::string& text, int seed = 1, int spp = 16) {
-    SceneOverrides o;
+    RenderOptions o;
     o.seed = seed;
     o.samplesPerPixel = spp;
     RenderedScene r = RenderText(text, 0, o);

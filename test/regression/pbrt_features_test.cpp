@@ -36,7 +36,7 @@ TEST_P(PbrtFeatures, MatchReferenceWithinNoise) {
         Diagnostics diag(nullptr);
         SceneBuilder builder(diag);
         ParseFile(builder, file, diag);
-        SceneOverrides o;
+        RenderOptions o;
         o.samplesPerPixel = 1;
         Scene::Create(builder.Description(), o, diag);
         EXPECT_EQ(diag.WarningCount(), f.warnings);
@@ -47,7 +47,7 @@ TEST_P(PbrtFeatures, MatchReferenceWithinNoise) {
     std::vector<Image> renders;
     for (int k = 0; k < kSeeds; ++k) {
         std::optional<Image> r = testing::RenderSceneWindow(file, Bounds2f{{0, 0}, {1, 1}}, kSpp,
-                                                            k + 1, SceneOverrides());
+                                                            k + 1, RenderOptions());
         ASSERT_TRUE(r.has_value());
         ASSERT_EQ(r->Resolution(), reference.Resolution());
         renders.push_back(std::move(*r));

@@ -19,22 +19,13 @@ namespace {
 // selects polarised transport by itself (a polariser) and stokes is false.
 std::optional<Image> RenderWindow(const std::string& file, const Bounds2f& window, bool stokes,
                                   int spp, int seed) {
-    SceneOverrides o;
-    o.stokes = stokes;
-    auto edit = [&](SceneDescription& d) {
-        if (stokes) return;
-        // The unpolarised render of a scene that asks for Stokes output
-        ParsedParameter off;
-        off.type = "bool";
-        off.name = "stokes";
-        off.bools = {false};
-        d.film.parameters.Set(off);
-    };
+    RenderOptions o;
+    o.stokes = stokes;  // false: the unpolarised render of a scene that asks for Stokes output
     auto accept = [&](const Scene& scene) {
         EXPECT_TRUE(scene.features.polarized || !stokes);
         return stokes || !scene.features.polarized;
     };
-    return testing::RenderSceneWindow(file, window, spp, seed, o, edit, accept);
+    return testing::RenderSceneWindow(file, window, spp, seed, o, {}, accept);
 }
 
 }  // namespace

@@ -36,7 +36,7 @@ std::vector<Image> RenderSeeds(std::string sceneText, int firstSeed = 1) {
     if (at != std::string::npos) sceneText.replace(at, 8, "\"independent\"");
     std::vector<Image> images;
     for (int k = 0; k < kSeeds; ++k) {
-        SceneOverrides o;
+        RenderOptions o;
         o.samplesPerPixel = kSpp;
         o.seed = firstSeed + k;
         testing::RenderedScene r = testing::RenderText(sceneText, 0, o);

@@ -23,7 +23,7 @@ namespace kiln::testing {
 // regression_test.cpp) at spp samples per pixel with the given seed; edit changes the
 // description first. Nothing if accept rejects the created scene.
 inline std::optional<Image> RenderSceneWindow(
-    const std::string& file, const Bounds2f& window, int spp, int seed, SceneOverrides o,
+    const std::string& file, const Bounds2f& window, int spp, int seed, RenderOptions o,
     const std::function<void(SceneDescription&)>& edit = {},
     const std::function<bool(const Scene&)>& accept = {}) {
     Diagnostics diag(nullptr);

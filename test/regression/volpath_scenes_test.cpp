@@ -21,7 +21,7 @@ namespace {
 
 std::optional<Image> RenderWindow(const std::string& file, const Bounds2f& window, bool volpath,
                                   int spp, int seed) {
-    SceneOverrides o;
+    RenderOptions o;
     o.genericVolumes = volpath;
     auto accept = [&](const Scene& scene) {
         EXPECT_EQ(scene.features.volumetric, volpath || scene.features.media > 0);

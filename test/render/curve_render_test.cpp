@@ -18,7 +18,7 @@ namespace {
 std::pair<double, double> RelativeMean(const std::string& scene, double sky) {
     RunningStats means;
     for (int seed = 1; seed <= 8; ++seed) {
-        SceneOverrides o;
+        RenderOptions o;
         o.seed = seed;
         testing::RenderedScene r = testing::RenderText(scene, 0, o);
         for (const auto& w : r.warnings) ADD_FAILURE() << w.message;

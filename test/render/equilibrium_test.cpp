@@ -105,7 +105,7 @@ class PolarizedEquilibrium : public ::testing::TestWithParam<std::tuple<Case, bo
 TEST_P(PolarizedEquilibrium, CavityIsUnpolarisedBlackbody) {
     auto [c, meshes] = GetParam();
     const double T = 1000, B = testing::BlackbodyLuminance(T);
-    SceneOverrides overrides;
+    RenderOptions overrides;
     overrides.stokes = true;
     testing::RenderedScene r = testing::RenderText(Cavity(c, meshes, T, 256), 0, overrides);
     for (const auto& w : r.warnings) ADD_FAILURE() << w.message;

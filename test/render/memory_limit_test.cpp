@@ -1,4 +1,4 @@
-// kiln --memory-limit (SceneOverrides::memoryLimitBytes): a film, mesh, PLY file, curve or image
+// kiln --memory-limit (RenderOptions::memoryLimitBytes): a film, mesh, PLY file, curve or image
 // that would pass the limit is an error at its directive naming the object and its estimate,
 // raised before the memory is taken; scenes within the limit render as before.
 #include <gtest/gtest.h>
@@ -14,7 +14,7 @@ namespace {
 // The error creating `scene` under `limit` bytes, or "" if it was created.
 std::string ErrorUnderLimit(const std::string& scene, double limit) {
     Diagnostics diag(nullptr);
-    SceneOverrides o;
+    RenderOptions o;
     o.memoryLimitBytes = limit;
     try {
         testing::BuildScene(scene, diag, o);

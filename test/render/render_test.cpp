@@ -106,7 +106,7 @@ TEST(RenderTest, EveryBundledSceneRendersWithoutWarningsOrNaNs) {
     ASSERT_GE(scenes.size(), 3u);
     for (const std::string& file : scenes) {
         SCOPED_TRACE(file);
-        SceneOverrides overrides;
+        RenderOptions overrides;
         overrides.samplesPerPixel = 1;
         // A crop keeps this fast whatever the scene's resolution.
         overrides.cropWindow = Bounds2f{Point2f(0.3f, 0.3f), Point2f(0.6f, 0.6f)};

@@ -27,14 +27,14 @@ struct RenderedScene {
 };
 
 inline std::unique_ptr<Scene> BuildScene(const std::string& text, Diagnostics& diag,
-                                         SceneOverrides overrides = {}) {
+                                         RenderOptions overrides = {}) {
     SceneBuilder builder(diag);
     ParseString(builder, text, diag, "<test>");
     return Scene::Create(builder.Description(), overrides, diag);
 }
 
 inline RenderedScene RenderText(const std::string& text, int threads = 0,
-                                SceneOverrides overrides = {}) {
+                                RenderOptions overrides = {}) {
     Diagnostics diag(nullptr);
     RenderedScene r;
     r.scene = BuildScene(text, diag, overrides);
@@ -45,7 +45,7 @@ inline RenderedScene RenderText(const std::string& text, int threads = 0,
     return r;
 }
 
-inline RenderedScene RenderFile(const std::string& filename, SceneOverrides overrides = {}) {
+inline RenderedScene RenderFile(const std::string& filename, RenderOptions overrides = {}) {
     Diagnostics diag(nullptr);
     RenderedScene r;
     SceneBuilder builder(diag);

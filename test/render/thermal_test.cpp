@@ -227,7 +227,7 @@ AttributeBegin
                 0 0 -0.2  0 0 0.1  0 0.3 0.1  0 0.3 -0.2]
 AttributeEnd
 )";
-    SceneOverrides a, b;
+    RenderOptions a, b;
     a.seed = 1;
     b.seed = 2;
     testing::RenderedScene ra = testing::RenderText(scene, 0, a);

@@ -27,7 +27,8 @@ ColorMatrix MulM(const ColorMatrix& a, const ColorMatrix& b) {
 // RGBFilm Creation
 RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& params,
                          Float exposureTime, const Filter& filter, const RGBColorSpace* colorSpace,
-                         const FileLoc& loc, ObjectArena& arena, Diagnostics& diag) {
+                         const FileLoc& loc, ObjectArena& arena, Diagnostics& diag,
+                         const Request& request) {
     if (!colorSpace) colorSpace = &RGBColorSpace::sRGB();
     Options o;
     if (type != "rgb" && type != "gbuffer")
@@ -58,19 +59,35 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
         return c;
     };
 
-    // Pixel bounds: "pixelbounds", then "cropwindow" (which wins, as in pbrt-v4).
+    // Pixel bounds: the request's pixel bounds (which replace the scene's crop window and pixel
+    // bounds), else "pixelbounds", then the request's or the scene's crop window (which wins,
+    // as in pbrt-v4).
     std::vector<int> pb = params.GetIntArray("pixelbounds");
+    std::vector<Float> cr = params.GetFloatArray("cropwindow");
+    if (request.pixelBounds) {
+        const Bounds2i& b = *request.pixelBounds;
+        pb = {b.pMin.x, b.pMax.x, b.pMin.y, b.pMax.y};
+        cr.clear();
+    } else if (request.cropWindow) {
+        const Bounds2f& c = *request.cropWindow;
+        cr = {c.pMin.x, c.pMax.x, c.pMin.y, c.pMax.y};
+    }
+    // Where a bad value is reported: the scene's parameter, or the film for a request
+    auto where = [&](const char* name, bool requested) {
+        return !requested && params.Has(name) ? params.Loc(name) : loc;
+    };
+    FileLoc pbLoc = where("pixelbounds", request.pixelBounds.has_value());
+    FileLoc crLoc = where("cropwindow", request.cropWindow.has_value());
     if (!pb.empty()) {
         if (pb.size() != 4)
             throw SceneError(
-                params.Loc("pixelbounds"),
+                pbLoc,
                 std::to_string(pb.size()) + " values supplied for \"pixelbounds\". Expected 4.",
                 "pixelbounds");
-        bounds = clampToFull(Bounds2i{{pb[0], pb[2]}, {pb[1], pb[3]}}, params.Loc("pixelbounds"));
+        bounds = clampToFull(Bounds2i{{pb[0], pb[2]}, {pb[1], pb[3]}}, pbLoc);
     }
-    std::vector<Float> cr = params.GetFloatArray("cropwindow");
     if (!cr.empty()) {
-        FileLoc at = params.Loc("cropwindow");
+        FileLoc at = crLoc;
         if (cr.size() != 4)
             throw SceneError(
                 at, std::to_string(cr.size()) + " values supplied for \"cropwindow\". Expected 4.",
@@ -91,15 +108,15 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
                           {int(std::ceil(full.x * x1)), int(std::ceil(full.y * y1))}};
     }
     if (bounds.IsEmpty())
-        throw SceneError(!cr.empty()   ? params.Loc("cropwindow")
-                         : !pb.empty() ? params.Loc("pixelbounds")
+        throw SceneError(!cr.empty()   ? crLoc
+                         : !pb.empty() ? pbLoc
                                        : loc,
                          "Degenerate pixel bounds provided to film",
                          !cr.empty() ? "cropwindow" : "pixelbounds");
     o.pixelBounds = bounds;
     // The pixels rendered must fit in memory (checked before anything is allocated)
     const bool aovs = params.GetOneBool("writeaovs", type == "gbuffer");
-    const bool stokes = params.GetOneBool("stokes", false);
+    const bool stokes = request.stokes.value_or(params.GetOneBool("stokes", false));
     const double bytes = double(bounds.Area()) * RGBFilm::BytesPerPixel(aovs, stokes);
     const std::string what = "a film of " + std::to_string(bounds.pMax.x - bounds.pMin.x) + " x " +
                              std::to_string(bounds.pMax.y - bounds.pMin.y) + " pixels";

@@ -77,10 +77,18 @@ class RGBFilm {
     // polarised light).
     // type: "rgb" | "gbuffer"; others warn and use "rgb". exposureTime: camera shutter
     // interval, s. colorSpace: output colour space (nullptr: sRGB). Throws SceneError.
+    // request: what the render asks besides the scene's parameters (RenderOptions): pixel
+    // bounds that replace the scene's crop window and pixel bounds, a crop window that
+    // replaces the scene's, whether to record Stokes layers.
+    struct Request {
+        std::optional<Bounds2f> cropWindow;
+        std::optional<Bounds2i> pixelBounds;
+        std::optional<bool> stokes;
+    };
     static RGBFilm* Create(const std::string& type, const ParameterDictionary& params,
                            Float exposureTime, const Filter& filter,
                            const RGBColorSpace* colorSpace, const FileLoc& loc, ObjectArena& arena,
-                           Diagnostics& diag);
+                           Diagnostics& diag, const Request& request = {});
 
     struct Options {
         Point2i fullResolution{1280, 720};

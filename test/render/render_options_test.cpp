@@ -1,0 +1,111 @@
+// RenderOptions reach the objects they choose, typed: the scene description stays as parsed
+// (nothing is written back into it as scene-file parameters), and each option wins over the
+// scene file.
+#include <gtest/gtest.h>
+
+#include "core/parser/parser.h"
+#include "render/scene.h"
+#include "render/scene_builder.h"
+#include "textures/basic_textures.h"
+#include "textures/temperature_textures.h"
+
+namespace kiln {
+namespace {
+
+bool Same(const Bounds2i& a, const Bounds2i& b) { return a.pMin == b.pMin && a.pMax == b.pMax; }
+
+const char* kScene =
+    "Film \"rgb\" \"integer xresolution\" 40 \"integer yresolution\" 20\n"
+    "  \"float cropwindow\" [0 0.5 0 0.5]\n"
+    "Integrator \"volpath\" \"string lightsampler\" \"uniform\" \"string strategy\" \"light\"\n"
+    "Sampler \"independent\" \"integer pixelsamples\" 3\n"
+    "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
+    "WorldBegin\n"
+    "Texture \"cool\" \"float\" \"cooling\" \"float T0\" 1500 \"float mass\" 1\n"
+    "Material \"diffuse\" \"texture temperature\" \"cool\"\n"
+    "Shape \"sphere\" \"float radius\" 1\n";
+
+TEST(RenderOptions, WinOverTheSceneFileAndLeaveTheDescriptionAsParsed) {
+    Diagnostics diag(nullptr);
+    SceneBuilder builder(diag);
+    ParseString(builder, kScene, diag, "<test>");
+    SceneDescription& desc = builder.Description();
+
+    RenderOptions o;
+    o.pixelBounds = Bounds2i{{4, 2}, {12, 10}};
+    o.stokes = true;
+    o.samplesPerPixel = 5;
+    o.seed = 9;
+    o.lightSelection = LightSelection::Power;
+    o.strategy = LightStrategy::BSDFOnly;
+    o.emitterPowerSampling = false;
+    o.singleWavelength = true;
+    o.timeSeconds = 30;
+    std::unique_ptr<Scene> scene = Scene::Create(desc, o, diag);
+
+    EXPECT_TRUE(Same(scene->film->PixelBounds(), Bounds2i{{4, 2}, {12, 10}}));
+    EXPECT_TRUE(scene->film->WritesStokes());
+    EXPECT_EQ(scene->sampler->SamplesPerPixel(), 5);
+    EXPECT_EQ(scene->sampler->Seed(), 9);
+    EXPECT_EQ(scene->integrator.lightSelection, LightSelection::Power);
+    EXPECT_EQ(scene->integrator.strategy, LightStrategy::BSDFOnly);
+    EXPECT_FALSE(scene->integrator.emitterPowerSampling);
+    EXPECT_TRUE(scene->integrator.singleWavelength);
+    // The description holds only what the file said
+    EXPECT_FALSE(desc.film.parameters.Has("pixelbounds"));
+    EXPECT_FALSE(desc.film.parameters.Has("stokes"));
+    EXPECT_EQ(desc.film.parameters.GetFloatArray("cropwindow").size(), 4u);
+    EXPECT_EQ(desc.integrator.parameters.GetOneString("lightsampler", ""), "uniform");
+    EXPECT_FALSE(desc.integrator.parameters.Has("wavelengths"));
+    EXPECT_FALSE(desc.integrator.parameters.Has("emittersampling"));
+    ASSERT_EQ(desc.floatTextures.size(), 1u);
+    EXPECT_FALSE(desc.floatTextures[0].second.parameters.Has("time"));
+}
+
+TEST(RenderOptions, TheFrameTimeReachesTimeDependentTextures) {
+    // The cooling texture at the options' time equals the one whose file gives that time
+    auto temperature = [](const std::string& extra, std::optional<Float> time) {
+        Diagnostics diag(nullptr);
+        SceneBuilder builder(diag);
+        std::string text = kScene;
+        text.insert(text.find("\"float mass\" 1") + 14, extra);
+        ParseString(builder, text, diag, "<test>");
+        RenderOptions o;
+        o.timeSeconds = time;
+        std::unique_ptr<Scene> scene = Scene::Create(builder.Description(), o, diag);
+        if (scene->lights.empty() || !scene->lights[0].Is<ThermalAreaLight>()) {
+            ADD_FAILURE() << "no thermal light";
+            return Float(-1);
+        }
+        const FloatTexture& t =
+            scene->lights[0].GetIf<ThermalAreaLight>()->Emission().TemperatureTexture();
+        return t.GetIf<TimeFunctionTexture>()->Value();
+    };
+    Float atZero = temperature("", std::nullopt);
+    Float fromOptions = temperature("", 120);
+    Float fromFile = temperature(" \"float time\" 120", std::nullopt);
+    Float fileWins = temperature(" \"float time\" 120", 5);
+    EXPECT_FLOAT_EQ(atZero, 1500);
+    EXPECT_LT(fromOptions, 1400);
+    EXPECT_EQ(fromOptions, fromFile);
+    EXPECT_EQ(fileWins, fromFile);
+}
+
+TEST(RenderOptions, ACropWindowReplacesTheScenesAndPixelBoundsReplaceBoth) {
+    Diagnostics diag(nullptr);
+    auto bounds = [&](RenderOptions o) {
+        SceneBuilder builder(diag);
+        ParseString(builder, kScene, diag, "<test>");
+        return Scene::Create(builder.Description(), o, diag)->film->PixelBounds();
+    };
+    EXPECT_TRUE(Same(bounds({}), Bounds2i{{0, 0}, {20, 10}}));
+    RenderOptions crop;
+    crop.cropWindow = Bounds2f{{0.5f, 0.5f}, {1, 1}};
+    EXPECT_TRUE(Same(bounds(crop), Bounds2i{{20, 10}, {40, 20}}));
+    RenderOptions both = crop;
+    both.pixelBounds = Bounds2i{{1, 1}, {3, 4}};
+    EXPECT_TRUE(Same(bounds(both), Bounds2i{{1, 1}, {3, 4}}));
+}
+
+}  // namespace
+}  // namespace kiln
