@@ -372,7 +372,7 @@ void BM_RenderCornellBox(benchmark::State& state) {
     int64_t paths = 0;
     double seconds = 0, cpuSeconds = 0;
     for (auto _ : state) {
-        scene->film->Clear();
+        scene->job->film->Clear();
         double c0 = ProcessCPUSeconds();
         RenderStats stats = Render(*scene, settings);
         cpuSeconds += ProcessCPUSeconds() - c0;

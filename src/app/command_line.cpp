@@ -349,7 +349,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
         return 1;
     }
     for (const std::string& pattern : outputPatterns.empty()
-                                          ? std::vector<std::string>{scene->film->Filename()}
+                                          ? std::vector<std::string>{scene->job->film->Filename()}
                                           : outputPatterns)
         outputs.push_back(frame ? FrameFilename(pattern, *frame) : pattern);
 
@@ -362,12 +362,13 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     // resume from this render's checkpoint, and write one periodically
     std::string checkpoint;
     CheckpointIdentity identity{SceneFileHash(options.sceneFile),
-                                frame ? std::to_string(*frame) : "", scene->sampler->Seed(),
-                                scene->sampler->SamplesPerPixel(), scene->film->PixelBounds()};
+                                frame ? std::to_string(*frame) : "", scene->job->sampler->Seed(),
+                                scene->job->sampler->SamplesPerPixel(),
+                                scene->job->film->PixelBounds()};
     if (options.checkpointSeconds && !outputs.empty()) {
         checkpoint = CheckpointFile(outputs[0]);
         std::string why;
-        settings.startSample = ReadCheckpoint(checkpoint, identity, *scene->film, &why);
+        settings.startSample = ReadCheckpoint(checkpoint, identity, *scene->job->film, &why);
         if (!why.empty()) std::cerr << "kiln: warning: ignoring " << why << "\n";
         if (settings.startSample > 0 && !options.quiet)
             std::cerr << "kiln: resuming from " << checkpoint << " at " << settings.startSample
@@ -375,7 +376,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
         settings.checkpointSeconds = *options.checkpointSeconds;
         settings.checkpoint = [&](int completed) {
             try {
-                WriteCheckpoint(checkpoint, identity, completed, *scene->film);
+                WriteCheckpoint(checkpoint, identity, completed, *scene->job->film);
                 if (options.verbose)
                     std::cerr << "kiln: checkpoint at " << completed << " spp in " << checkpoint
                               << "\n";
@@ -386,35 +387,35 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     }
     RenderStats stats = Render(*scene, settings);
 
-    if (int64_t bad = scene->film->NonFiniteSampleCount(); bad > 0) {
-        Point2i p = scene->film->FirstNonFinitePixel().value_or(Point2i(-1, -1));
+    if (int64_t bad = scene->job->film->NonFiniteSampleCount(); bad > 0) {
+        Point2i p = scene->job->film->FirstNonFinitePixel().value_or(Point2i(-1, -1));
         std::cerr << "kiln: warning: " << bad << " NaN/Inf radiance samples were discarded "
                   << "(first at pixel " << p.x << ", " << p.y << ")\n";
     }
     // Exposure: the film's "exposure", plus --exposure stops or automatic exposure
-    Float ev = scene->film->GetOptions().exposureEV;
+    Float ev = scene->job->film->GetOptions().exposureEV;
     if (options.exposure && *options.exposure != "auto") ev += std::stof(*options.exposure);
     if (scene->autoExposure || (options.exposure && *options.exposure == "auto")) {
-        ev += AutoExposureEV(*scene->film);
+        ev += AutoExposureEV(*scene->job->film);
         if (options.verbose) std::fprintf(stderr, "kiln: automatic exposure %+.2f EV\n", ev);
     }
     // The sum (film, --exposure, automatic) is held to the same bound as each part, so that
     // 2^ev times any radiance stays finite in float
     ev = std::clamp(ev, -RGBFilm::kMaxExposureEV, RGBFilm::kMaxExposureEV);
-    scene->film->SetExposureEV(ev);
+    scene->job->film->SetExposureEV(ev);
     ImageMetadata metadata;
     metadata.strings["kiln:exposureEV"] = std::to_string(ev);
     metadata.renderTimeSeconds = float(stats.seconds);
     metadata.samplesPerPixel = stats.cancelled ? stats.completedSamples : stats.samplesPerPixel;
     if (stats.cancelled) metadata.strings["kiln:partial"] = "true";
     // What kiln merge checks parts against: the same scene (its file's bytes), frame and seed
-    metadata.strings["kiln:seed"] = std::to_string(scene->sampler->Seed());
+    metadata.strings["kiln:seed"] = std::to_string(scene->job->sampler->Seed());
     metadata.strings["kiln:scene"] = identity.scene;
     if (frame) metadata.strings["kiln:frame"] = std::to_string(*frame);
     int status = 0;
     for (const std::string& out : outputs) {
         try {
-            scene->film->WriteImage(out, metadata, options.view, &diag);
+            scene->job->film->WriteImage(out, metadata, options.view, &diag);
         } catch (const std::exception& e) {
             std::cerr << "kiln: error: " << e.what() << "\n";
             status = 1;
@@ -428,8 +429,8 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
             std::string stem = out.substr(
                 0, out.size() - FileExtension(out).size() - (FileExtension(out).empty() ? 0 : 1));
             try {
-                for (const auto& [name, picture] :
-                     PolarizationViews(scene->film->GetImage(nullptr), *scene->film->ColorSpace()))
+                for (const auto& [name, picture] : PolarizationViews(
+                         scene->job->film->GetImage(nullptr), *scene->job->film->ColorSpace()))
                     picture.Write(stem + "-" + name + ".png", metadata);
             } catch (const std::exception& e) {
                 std::cerr << "kiln: error: " << e.what() << "\n";

@@ -40,6 +40,11 @@ void MemoryBudget::Charge(double bytes, const std::string& what) {
     committed += bytes;
 }
 
+void MemoryBudget::Release(double bytes) {
+    std::lock_guard<std::mutex> lock(mutex);
+    committed = bytes > 0 && bytes < committed ? committed - bytes : (bytes > 0 ? 0 : committed);
+}
+
 std::optional<double> MemoryBudget::ParseSize(std::string_view text) {
     std::string s(text);
     char* end = nullptr;

@@ -45,6 +45,8 @@ class MemoryBudget {
     // it is made. Thread-safe. Throws MemoryLimitError when the total would pass the limit:
     // "<what> needs <bytes>, which with the <committed> already committed passes <the limit>".
     void Charge(double bytes, const std::string& what);
+    // Gives back `bytes` charged earlier (their allocation was freed). Thread-safe.
+    void Release(double bytes);
 
     // "2G", "512M", "1.5GB", "64 MiB", "800000": decimal (k, M, G, T) or binary (Ki, Mi, Gi,
     // Ti) multiples of bytes, optionally followed by B; nullopt unless positive and finite.

@@ -16,6 +16,8 @@ namespace kiln {
 class ObjectArena {
   public:
     ObjectArena() = default;
+    // An arena that charges another arena's budget (a render job's, the scene's).
+    explicit ObjectArena(MemoryBudget& shared) : budget_(&shared) {}
     ObjectArena(const ObjectArena&) = delete;
     ObjectArena& operator=(const ObjectArena&) = delete;
     // Objects are destroyed in reverse order of creation.
@@ -33,10 +35,11 @@ class ObjectArena {
         return raw;
     }
 
-    MemoryBudget& Budget() { return budget_; }
+    MemoryBudget& Budget() { return *budget_; }
 
   private:
-    MemoryBudget budget_;
+    MemoryBudget ownBudget_;
+    MemoryBudget* budget_ = &ownBudget_;
     std::mutex mutex_;
     std::vector<std::shared_ptr<void>> objects_;
 };

@@ -159,7 +159,7 @@ class PathIntegrator {
         Throughput f = bsdf.f<Throughput>(wo, wi);
         if (!f) return {};
         if (scene.aggregate->IntersectP(intr.SpawnRayTo(ls->pLight), 1 - ShadowEpsilon)) return {};
-        Spectrum Li = light.DeferredL<Spectrum>(*ls, lambda, *scene.shader);
+        Spectrum Li = light.DeferredL<Spectrum>(*ls, lambda, *scene.job->shader);
         if (!Li) return {};
 
         Float lightPdf = sampled->p * ls->pdf;

@@ -55,7 +55,7 @@ void RenderPixelSample(const Scene& scene, const Integrator& integrator, kiln::S
     sampler.StartPixelSample(pPixel, sampleIndex);
     // Wavelengths first, then the camera sample (pbrt-v4's order)
     Float lu = sampler.Get1D();
-    SampledWavelengths lambda = scene.film->SampleWavelengths(lu);
+    SampledWavelengths lambda = scene.job->film->SampleWavelengths(lu);
     if constexpr (SingleWavelength) lambda.TerminateSecondary();
     CameraSample cs = GetCameraSample(sampler, pPixel, *scene.filter);
     if constexpr (FixedPixelCenter) {
@@ -72,7 +72,7 @@ void RenderPixelSample(const Scene& scene, const Integrator& integrator, kiln::S
         L = cameraRay->weight * integrator.Li(cameraRay->ray, lambda, sampler, pVisible);
         if constexpr (Radiance::Polarized) L = ToFilmFrame(scene, L, -cameraRay->ray.d);
     }
-    scene.film->AddSample(pPixel, L, lambda, pVisible, cs.filterWeight);
+    scene.job->film->AddSample(pPixel, L, lambda, pVisible, cs.filterWeight);
 }
 
 template <typename Integrator>
@@ -100,10 +100,10 @@ namespace {
 template <typename Integrator>
 RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
     RenderStats stats;
-    Bounds2i pixelBounds = scene.film->PixelBounds();
+    Bounds2i pixelBounds = scene.job->film->PixelBounds();
     Point2i res(pixelBounds.pMax.x - pixelBounds.pMin.x, pixelBounds.pMax.y - pixelBounds.pMin.y);
     stats.resolution = res;
-    const int spp = scene.sampler->SamplesPerPixel();
+    const int spp = scene.job->sampler->SamplesPerPixel();
     stats.samplesPerPixel = spp;
     if (res.x <= 0 || res.y <= 0 || spp <= 0) return stats;
 
@@ -116,7 +116,8 @@ RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
     const SceneFeatures& f = scene.features;
     const PixelSampleFunction<Integrator> renderPixelSample =
         PixelSampleFor<Integrator>({f.aovs, f.singleWavelength, f.fixedPixelCenter});
-    tbb::enumerable_thread_specific<kiln::Sampler> samplers([&] { return scene.sampler->Clone(); });
+    tbb::enumerable_thread_specific<kiln::Sampler> samplers(
+        [&] { return scene.job->sampler->Clone(); });
 
     std::ostringstream title;
     title << "Rendering " << res.x << "x" << res.y << " @ " << spp << " spp";

@@ -104,6 +104,24 @@ class SceneShader final {
     bool footprintsAlways;
 };
 
+// A render of a loaded scene: what may change from one render of it to the next (samples per
+// pixel, seed, crop window, pixel bounds) without re-parsing or rebuilding anything else:
+// the film, the sampler, and the shader (whose texture footprints depend on the samples per
+// pixel). Its film lives in its own arena, charged to the scene's memory budget while the job
+// lasts.
+struct RenderJob {
+    explicit RenderJob(MemoryBudget& budget) : arena(budget) {}
+    ~RenderJob() { arena.Budget().Release(chargedBytes); }
+    RenderJob(const RenderJob&) = delete;
+    RenderJob& operator=(const RenderJob&) = delete;
+
+    ObjectArena arena;
+    RGBFilm* film = nullptr;
+    std::optional<kiln::Sampler> sampler;  // prototype: each thread renders with a Clone()
+    std::unique_ptr<SceneShader> shader;
+    double chargedBytes = 0;  // what the film charged to the scene's budget
+};
+
 class Scene {
   public:
     // Creates every object; throws SceneError for invalid input and reports warnings
@@ -114,10 +132,19 @@ class Scene {
     Scene& operator=(const Scene&) = delete;
     ~Scene();
 
+    // Replaces the render job (the film, with what it accumulated, included): samples per
+    // pixel, seed, crop window and pixel bounds from options (unset: the scene file's); every
+    // other option stays as the scene was created with, since it chose what was built at
+    // load (emission models and tables, lights, media, the textures of a frame, Stokes
+    // layers, the integrator). Throws SceneError for an invalid film or sampler, as Create,
+    // and then keeps the current job (the two films are charged to the memory budget
+    // together while the new one is made).
+    void SetJob(const RenderOptions& options, Diagnostics& diag);
+
     // The BSDF at a surface hit (SceneShader::GetBSDF): invalid for interface materials;
     // isect.material becomes the material that built it (a mix's component).
     BSDF GetBSDF(SurfaceInteraction& isect, SampledWavelengths& lambda) const {
-        return shader->GetBSDF(isect, lambda);
+        return job->shader->GetBSDF(isect, lambda);
     }
     // Radiance the surface at isect emits towards wo: its thermal emission, or its area
     // light's. bsdf: the BSDF GetBSDF returned there. Radiance: SampledSpectrum or Stokes
@@ -133,12 +160,21 @@ class Scene {
     VisibleSurface MakeVisibleSurface(const SurfaceInteraction& isect, const BSDF& bsdf,
                                       const SampledWavelengths& lambda) const;
 
-    ObjectArena arena;  // owns everything below that is held by pointer
+    ObjectArena arena;               // owns everything below that is held by pointer
+    std::unique_ptr<RenderJob> job;  // the film, sampler and shader of the next render
+    // What SetJob builds a job from: the scene file's film and sampler, and what the scene was
+    // created with
+    struct JobRecipe {
+        SceneEntity film, sampler;
+        std::optional<int> seed;  // the file's (or pbrt-v4's --seed in the description)
+        Float exposureTime = 1;   // the camera's shutter interval
+        const RGBColorSpace* colorSpace = nullptr;
+        std::optional<bool> stokes;
+        bool genericFootprints = false;
+    };
+    JobRecipe jobRecipe;
     std::optional<Filter> filter;
-    RGBFilm* film = nullptr;
     std::optional<Camera> camera;
-    std::optional<kiln::Sampler> sampler;  // prototype: each thread renders with a Clone()
-    std::unique_ptr<SceneShader> shader;
     std::unique_ptr<EmissivityTables> emissivityTables;
     std::unique_ptr<kiln::Accelerator> aggregate;
     std::vector<Light> lights;        // identified by index (SurfaceInteraction::lightIndex)

@@ -60,6 +60,28 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOpti
     return s;
 }
 
+// The render job's film (from the recipe and the options' crop window and pixel bounds), its
+// charge to the scene's budget recorded
+void CreateJobFilm(Scene& scene, RenderJob& job, const RenderOptions& options, Diagnostics& diag) {
+    const Scene::JobRecipe& r = scene.jobRecipe;
+    RGBFilm::Request request{options.cropWindow, options.pixelBounds, r.stokes};
+    double before = job.arena.Budget().Committed();
+    job.film = RGBFilm::Create(r.film.name, r.film.parameters, r.exposureTime, *scene.filter,
+                               r.colorSpace, r.film.loc, job.arena, diag, request);
+    job.chargedBytes = job.arena.Budget().Committed() - before;
+}
+
+// The render job's sampler (the options' samples per pixel and seed) and shader
+void CreateJobSamplerAndShader(Scene& scene, RenderJob& job, const RenderOptions& options,
+                               Diagnostics& diag) {
+    const Scene::JobRecipe& r = scene.jobRecipe;
+    std::optional<int> seed = options.seed ? options.seed : r.seed;
+    job.sampler = Sampler::Create(r.sampler.name, r.sampler.parameters, job.film->FullResolution(),
+                                  r.sampler.loc, diag, options.samplesPerPixel, seed);
+    job.shader = std::make_unique<SceneShader>(&*scene.camera, job.sampler->SamplesPerPixel(),
+                                               r.genericFootprints);
+}
+
 void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const RenderOptions& options,
                          Diagnostics& diag) {
     ObjectArena& arena = scene.arena;
@@ -70,13 +92,15 @@ void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const RenderOptio
     if (shutterClose < shutterOpen)
         throw SceneError(desc.camera.loc, "shutterclose is before shutteropen", "shutterclose");
     scene.autoExposure = desc.film.parameters.GetOneBool("autoexposure", false);
-    RGBFilm::Request request{options.cropWindow, options.pixelBounds, options.stokes};
-    scene.film =
-        RGBFilm::Create(desc.film.name, desc.film.parameters, shutterClose - shutterOpen,
-                        *scene.filter, desc.filmColorSpace, desc.film.loc, arena, diag, request);
+    // The first render job; later ones (Scene::SetJob) are built from the same recipe
+    scene.jobRecipe = Scene::JobRecipe{
+        desc.film,           desc.sampler,   desc.seedOption,          shutterClose - shutterOpen,
+        desc.filmColorSpace, options.stokes, options.genericFootprints};
+    scene.job = std::make_unique<RenderJob>(arena.Budget());
+    CreateJobFilm(scene, *scene.job, options, diag);
     scene.camera =
         Camera::Create(desc.camera.name, desc.camera.parameters, desc.camera.cameraTransform,
-                       scene.film->FullResolution(), desc.camera.loc, arena, diag);
+                       scene.job->film->FullResolution(), desc.camera.loc, arena, diag);
     if (desc.camera.parameters.Has("polarizer")) {
         Float degrees = desc.camera.parameters.GetOneFloat("polarizer", 0);
         if (!std::isfinite(degrees))
@@ -84,20 +108,17 @@ void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const RenderOptio
                              "camera \"polarizer\" must be a finite angle in degrees", "polarizer");
         scene.cameraPolarizer = Radians(degrees);
     }
-    std::optional<int> seed = options.seed ? options.seed : desc.seedOption;
-    scene.sampler =
-        Sampler::Create(desc.sampler.name, desc.sampler.parameters, scene.film->FullResolution(),
-                        desc.sampler.loc, diag, options.samplesPerPixel, seed);
+    CreateJobSamplerAndShader(scene, *scene.job, options, diag);
     scene.integrator = CreateIntegratorSettings(desc.integrator, options, diag);
     scene.disablePixelJitter = desc.disablePixelJitter;
     if (desc.accelerator.name != "bvh" && desc.accelerator.name != "kdtree")
         diag.Warn(desc.accelerator.loc,
                   "unknown accelerator \"" + desc.accelerator.name + "\"; kiln uses Embree");
-    for (SceneEntity* e : {&desc.filter, &desc.film, static_cast<SceneEntity*>(&desc.camera),
-                           &desc.sampler, &desc.integrator, &desc.accelerator})
+    // (The film's and the sampler's parameters were read from the recipe's copies)
+    for (SceneEntity* e :
+         {&desc.filter, &scene.jobRecipe.film, static_cast<SceneEntity*>(&desc.camera),
+          &scene.jobRecipe.sampler, &desc.integrator, &desc.accelerator})
         e->parameters.ReportUnused(diag);
-    scene.shader = std::make_unique<SceneShader>(&*scene.camera, scene.sampler->SamplesPerPixel(),
-                                                 options.genericFootprints);
 }
 
 // Textures
@@ -432,7 +453,7 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
     for (const Material* m : materials.anonymous) count(m);
     f.genericFootprints = options.genericFootprints;
     f.genericAOVs = options.genericAOVs;
-    f.aovs = scene.film->UsesVisibleSurface() || options.genericAOVs;
+    f.aovs = scene.job->film->UsesVisibleSurface() || options.genericAOVs;
     f.singleWavelength = scene.integrator.singleWavelength;
     f.fixedPixelCenter = scene.disablePixelJitter;
     f.polarized = scene.emissivityTables->polarized;  // decided in Scene::Create
@@ -458,7 +479,7 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
 // Polarised transport (render/radiance.h) when the film records Stokes layers, the camera
 // carries a polariser or a material is a polarising filter.
 bool NeedsPolarization(const Scene& scene, const SceneMaterials& materials) {
-    if (scene.film->WritesStokes() || scene.cameraPolarizer) return true;
+    if (scene.job->film->WritesStokes() || scene.cameraPolarizer) return true;
     auto filter = [](const Material* m) { return m->Is<PolarizingFilterMaterial>(); };
     for (const auto& [name, m] : materials.named)
         if (filter(m)) return true;
@@ -480,7 +501,11 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
     scene.cameraMedium = MediumIndex(desc.camera.medium, media, desc.camera.loc);
     scene.emissivityTables = std::make_unique<EmissivityTables>();
     scene.emissivityTables->polarized = NeedsPolarization(scene, materials);
-    ThermalEmitters emitters(*scene.shader, *scene.emissivityTables, scene.arena, diag,
+    // The shader thermal lights estimate their power with: the job's but for the texture
+    // footprint, taken at one sample per pixel, so that what is built at load does not depend on
+    // the render job
+    SceneShader loadShader(&*scene.camera, 1, options.genericFootprints);
+    ThermalEmitters emitters(loadShader, *scene.emissivityTables, scene.arena, diag,
                              options.emission, scene.integrator.emitterPowerSampling);
     std::vector<SceneShapes> shapes;
     for (ShapeSceneEntity& s : desc.shapes)
@@ -497,6 +522,14 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
     if (scene.lights.empty() && !scene.features.thermalEmission &&
         !(scene.features.volumetric && scene.features.emissiveMedia > 0))
         diag.Warn(FileLoc(), "the scene has no lights; the image will be black");
+}
+
+void Scene::SetJob(const RenderOptions& options, Diagnostics& diag) {
+    // Built beside the current job, which stays if this one fails
+    auto next = std::make_unique<RenderJob>(arena.Budget());
+    CreateJobFilm(*this, *next, options, diag);
+    CreateJobSamplerAndShader(*this, *next, options, diag);
+    job = std::move(next);
 }
 
 std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const RenderOptions& options,

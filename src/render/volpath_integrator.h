@@ -302,7 +302,7 @@ class VolPathIntegrator {
             lightRay = si->intr.SpawnRayTo(ls->pLight);
         }
 
-        Spectrum Li = light.DeferredL<Spectrum>(*ls, lambda, *scene.shader);
+        Spectrum Li = light.DeferredL<Spectrum>(*ls, lambda, *scene.job->shader);
         if (!Li) return {};
         r_l *= r_p * p_l;
         r_u *= r_p * scatterPDF;

@@ -24,11 +24,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         kiln::RenderSettings settings;
         settings.threads = 1;
         kiln::Render(*scene, settings);
-        kiln::Bounds2i b = scene->film->PixelBounds();
+        kiln::Bounds2i b = scene->job->film->PixelBounds();
         for (int y = b.pMin.y; y < b.pMax.y; ++y)
             for (int x = b.pMin.x; x < b.pMax.x; ++x) {
                 for (int k = 0; k < 4; ++k) {  // RGB (k = 0) and Stokes layers, if any
-                    kiln::RGB rgb = scene->film->GetPixelStokes({x, y}, k);
+                    kiln::RGB rgb = scene->job->film->GetPixelStokes({x, y}, k);
                     if (!std::isfinite(rgb.r) || !std::isfinite(rgb.g) || !std::isfinite(rgb.b))
                         __builtin_trap();  // a non-finite pixel is a bug to find, not to clamp
                 }

@@ -188,7 +188,7 @@ Translate 1e15 0 0
 Material "conductor" "float roughness" 0.1 "float temperature" 1800
 Shape "sphere" "float radius" 0.5
 )");
-    EXPECT_EQ(far.scene->film->NonFiniteSampleCount(), 0);
+    EXPECT_EQ(far.scene->job->film->NonFiniteSampleCount(), 0);
 }
 
 TEST(HostileInput, PerVertexTemperaturesMustBeKelvin) {

@@ -23,8 +23,8 @@ inline ImageStats RenderStats(const std::string& text, int seed = 1, int spp = 1
     o.samplesPerPixel = spp;
     RenderedScene r = RenderText(text, 0, o);
     ImageStats s;
-    s.nonFinite = r.scene->film->NonFiniteSampleCount();
-    Bounds2i b = r.scene->film->PixelBounds();
+    s.nonFinite = r.scene->job->film->NonFiniteSampleCount();
+    Bounds2i b = r.scene->job->film->PixelBounds();
     for (int y = b.pMin.y; y < b.pMax.y; ++y)
         for (int x = b.pMin.x; x < b.pMax.x; ++x) {
             Float Y = PixelY(*r.scene, {x, y});

@@ -45,12 +45,11 @@ TEST_P(PbrtFeatures, MatchReferenceWithinNoise) {
     Image reference =
         Image::Read(kDir + "references/" + f.scene + ".exr").SelectChannels({"R", "G", "B"});
     std::vector<Image> renders;
+    std::unique_ptr<Scene> scene = testing::LoadScene(file, RenderOptions());
     for (int k = 0; k < kSeeds; ++k) {
-        std::optional<Image> r = testing::RenderSceneWindow(file, Bounds2f{{0, 0}, {1, 1}}, kSpp,
-                                                            k + 1, RenderOptions());
-        ASSERT_TRUE(r.has_value());
-        ASSERT_EQ(r->Resolution(), reference.Resolution());
-        renders.push_back(std::move(*r));
+        Image r = testing::RenderWindow(*scene, Bounds2f{{0, 0}, {1, 1}}, kSpp, k + 1);
+        ASSERT_EQ(r.Resolution(), reference.Resolution());
+        renders.push_back(std::move(r));
     }
     testing::NoiseComparison c = testing::CompareWithNoise(renders, reference, kSpp, kReferenceSpp);
     EXPECT_TRUE(c.Pass()) << f.scene << ": " << c;

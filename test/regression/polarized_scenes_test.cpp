@@ -15,17 +15,16 @@
 namespace kiln {
 namespace {
 
-// The render of a window of the scene, polarised (Stokes output) or not; nothing if the scene
+// The scene loaded for polarised (Stokes output) or unpolarised transport; nothing if the scene
 // selects polarised transport by itself (a polariser) and stokes is false.
-std::optional<Image> RenderWindow(const std::string& file, const Bounds2f& window, bool stokes,
-                                  int spp, int seed) {
+std::unique_ptr<Scene> Load(const std::string& file, bool stokes) {
     RenderOptions o;
     o.stokes = stokes;  // false: the unpolarised render of a scene that asks for Stokes output
     auto accept = [&](const Scene& scene) {
         EXPECT_TRUE(scene.features.polarized || !stokes);
         return stokes || !scene.features.polarized;
     };
-    return testing::RenderSceneWindow(file, window, spp, seed, o, {}, accept);
+    return testing::LoadScene(file, o, {}, accept);
 }
 
 }  // namespace
@@ -37,7 +36,7 @@ TEST(PolarizedSceneSet, CoversTheBundledScenes) { EXPECT_GE(testing::SceneFiles(
 // The comparison can see a 10 % error in intensity (most scenes 5 %; lava.pbrt, the noisiest,
 // not at these sample counts)
 TEST_P(PolarizedScenes, IntensityMatchesTheUnpolarisedRender) {
-    if (!testing::CompareScene(GetParam(), RenderWindow, 4, 8, 128))
+    if (!testing::CompareScene(GetParam(), Load, 4, 8, 128))
         GTEST_SKIP() << "the scene has a polariser: no unpolarised counterpart";
 }
 

@@ -34,14 +34,19 @@ std::string ReadText(const std::string& file) {
 std::vector<Image> RenderSeeds(std::string sceneText, int firstSeed = 1) {
     size_t at = sceneText.find("\"zsobol\"");
     if (at != std::string::npos) sceneText.replace(at, 8, "\"independent\"");
+    // One scene, rendered as a new job per seed
+    Diagnostics diag(nullptr);
+    std::unique_ptr<Scene> scene = testing::BuildScene(sceneText, diag);
     std::vector<Image> images;
     for (int k = 0; k < kSeeds; ++k) {
-        RenderOptions o;
-        o.samplesPerPixel = kSpp;
-        o.seed = firstSeed + k;
-        testing::RenderedScene r = testing::RenderText(sceneText, 0, o);
-        EXPECT_EQ(r.scene->film->NonFiniteSampleCount(), 0);
-        images.push_back(r.scene->film->GetImage(nullptr).SelectChannels({"R", "G", "B"}));
+        RenderOptions job;
+        job.samplesPerPixel = kSpp;
+        job.seed = firstSeed + k;
+        scene->SetJob(job, diag);
+        RenderSettings settings;
+        Render(*scene, settings);
+        EXPECT_EQ(scene->job->film->NonFiniteSampleCount(), 0);
+        images.push_back(scene->job->film->GetImage(nullptr).SelectChannels({"R", "G", "B"}));
     }
     return images;
 }

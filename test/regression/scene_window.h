@@ -18,28 +18,35 @@
 
 namespace kiln::testing {
 
-// The scene's window (NDC) rendered with the "independent" sampler (renders with different
-// seeds must be independent for the across-seed variance to measure the error, as in
-// regression_test.cpp) at spp samples per pixel with the given seed; edit changes the
-// description first. Nothing if accept rejects the created scene.
-inline std::optional<Image> RenderSceneWindow(
-    const std::string& file, const Bounds2f& window, int spp, int seed, RenderOptions o,
-    const std::function<void(SceneDescription&)>& edit = {},
-    const std::function<bool(const Scene&)>& accept = {}) {
+// A scene file loaded once with the "independent" sampler (renders with different seeds must
+// be independent for the across-seed variance to measure the error, as in regression_test.cpp)
+// and options o; edit changes the description first. Nothing if accept rejects the scene.
+inline std::unique_ptr<Scene> LoadScene(const std::string& file, const RenderOptions& o,
+                                        const std::function<void(SceneDescription&)>& edit = {},
+                                        const std::function<bool(const Scene&)>& accept = {}) {
     Diagnostics diag(nullptr);
     SceneBuilder builder(diag);
     ParseFile(builder, file, diag);
     builder.Description().sampler.name = "independent";
     if (edit) edit(builder.Description());
-    o.samplesPerPixel = spp;
-    o.seed = seed;
-    o.cropWindow = window;
     std::unique_ptr<Scene> scene = Scene::Create(builder.Description(), o, diag);
-    if (accept && !accept(*scene)) return std::nullopt;
+    if (accept && !accept(*scene)) return nullptr;
+    return scene;
+}
+
+// A window (NDC) of a loaded scene at spp samples per pixel with the given seed: a new render
+// job of the same scene (Scene::SetJob), nothing re-parsed or rebuilt.
+inline Image RenderWindow(Scene& scene, const Bounds2f& window, int spp, int seed) {
+    Diagnostics diag(nullptr);
+    RenderOptions job;
+    job.samplesPerPixel = spp;
+    job.seed = seed;
+    job.cropWindow = window;
+    scene.SetJob(job, diag);
     RenderSettings settings;
-    Render(*scene, settings);
-    EXPECT_EQ(scene->film->NonFiniteSampleCount(), 0);
-    return scene->film->GetImage(nullptr).SelectChannels({"R", "G", "B"});
+    Render(scene, settings);
+    EXPECT_EQ(scene.job->film->NonFiniteSampleCount(), 0);
+    return scene.job->film->GetImage(nullptr).SelectChannels({"R", "G", "B"});
 }
 
 inline bool IsBlack(const Image& image) {
@@ -80,31 +87,40 @@ inline std::string SceneTestName(const ::testing::TestParamInfo<std::string>& in
     return rel;
 }
 
-// A scene rendered two ways and compared within the Monte Carlo noise: render(file, window,
-// alternative, spp, seed) renders a window of a scene the plain way (alternative false) or the
-// way under test, or returns nothing to skip the scene. The plain render at referenceSpp is the
-// reference for `seeds` renders of the alternative at spp samples per pixel with independent seeds
-// (noise_comparison.h), over the centre of the image (or below it, where the centre is black).
-// Accepted within `sigmas` (noise_comparison.h); the comparison must also see a 10 % error.
-// Returns whether the scene was compared (false: render skipped it).
-using WindowRenderer = std::function<std::optional<Image>(
-    const std::string& file, const Bounds2f& window, bool alternative, int spp, int seed)>;
-inline bool CompareScene(const std::string& file, const WindowRenderer& render, int kSpp,
-                         int kSeeds, int kReferenceSpp, double sigmas = 4) {
+// A scene rendered two ways and compared within the Monte Carlo noise: load(file,
+// alternative) loads the scene the plain way (alternative false) or the way under test
+// (LoadScene), or returns nothing to skip it. A render of the plain scene at referenceSpp is
+// the reference for `seeds` renders of the alternative at spp samples per pixel with
+// independent seeds (noise_comparison.h), over the centre of the image (or below it, where the
+// centre is black); each scene is loaded once and rendered as new jobs. Accepted within
+// `sigmas` (noise_comparison.h); the comparison must also see a 10 % error. Returns whether
+// the scene was compared (false: load skipped it).
+using SceneLoader =
+    std::function<std::unique_ptr<Scene>(const std::string& file, bool alternative)>;
+inline bool CompareScene(const std::string& file, const SceneLoader& load, int kSpp, int kSeeds,
+                         int kReferenceSpp, double sigmas = 4) {
     SCOPED_TRACE(file);
     std::string name = std::filesystem::path(file).filename().string();
+    std::unique_ptr<Scene> plain = load(file, false);
+    if (!plain) return false;
     Bounds2f window{{0.45f, 0.45f}, {0.55f, 0.55f}};
-    std::optional<Image> reference = render(file, window, false, kReferenceSpp, 1000);
-    if (reference && IsBlack(*reference)) {
+    Image reference = RenderWindow(*plain, window, kReferenceSpp, 1000);
+    if (IsBlack(reference)) {
         window = Bounds2f{{0.45f, 0.7f}, {0.55f, 0.8f}};
-        reference = render(file, window, false, kReferenceSpp, 1000);
+        reference = RenderWindow(*plain, window, kReferenceSpp, 1000);
     }
-    if (!reference) return false;
+    plain.reset();
+    std::unique_ptr<Scene> alternative = load(file, true);
+    if (!alternative) {
+        ADD_FAILURE() << "the alternative of a compared scene did not load";
+        return false;
+    }
     std::vector<Image> renders;
-    for (int k = 0; k < kSeeds; ++k) renders.push_back(*render(file, window, true, kSpp, k + 1));
-    NoiseComparison c = CompareWithNoise(renders, *reference, kSpp, kReferenceSpp, sigmas);
+    for (int k = 0; k < kSeeds; ++k)
+        renders.push_back(RenderWindow(*alternative, window, kSpp, k + 1));
+    NoiseComparison c = CompareWithNoise(renders, reference, kSpp, kReferenceSpp, sigmas);
     EXPECT_TRUE(c.Pass()) << c;
-    EXPECT_FALSE(CompareWithNoise(renders, *reference, kSpp, kReferenceSpp, sigmas, 1.1).Pass());
+    EXPECT_FALSE(CompareWithNoise(renders, reference, kSpp, kReferenceSpp, sigmas, 1.1).Pass());
     std::printf("%s: %s\n", name.c_str(), ::testing::PrintToString(c).c_str());
     return true;
 }

@@ -19,15 +19,14 @@
 namespace kiln {
 namespace {
 
-std::optional<Image> RenderWindow(const std::string& file, const Bounds2f& window, bool volpath,
-                                  int spp, int seed) {
+std::unique_ptr<Scene> Load(const std::string& file, bool volpath) {
     RenderOptions o;
     o.genericVolumes = volpath;
     auto accept = [&](const Scene& scene) {
         EXPECT_EQ(scene.features.volumetric, volpath || scene.features.media > 0);
         return scene.features.media == 0;
     };
-    return testing::RenderSceneWindow(file, window, spp, seed, o, {}, accept);
+    return testing::LoadScene(file, o, {}, accept);
 }
 
 }  // namespace
@@ -39,7 +38,7 @@ TEST(VolPathSceneSet, CoversEveryFolderOfScenes) {
 }
 
 TEST_P(VolPathScenes, WithoutMediaVolPathRendersWhatPathRenders) {
-    bool compared = testing::CompareScene(GetParam(), RenderWindow, 8, 16, 512, 5);
+    bool compared = testing::CompareScene(GetParam(), Load, 8, 16, 512, 5);
     // scenes/media has no scene without media; every other folder's first scene is compared
     if (GetParam().find("/scenes/media/") != std::string::npos)
         EXPECT_FALSE(compared);

@@ -22,9 +22,9 @@ std::pair<double, double> RelativeMean(const std::string& scene, double sky) {
         o.seed = seed;
         testing::RenderedScene r = testing::RenderText(scene, 0, o);
         for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
-        EXPECT_EQ(r.scene->film->NonFiniteSampleCount(), 0);
+        EXPECT_EQ(r.scene->job->film->NonFiniteSampleCount(), 0);
         RunningStats s;
-        Bounds2i b = r.scene->film->PixelBounds();
+        Bounds2i b = r.scene->job->film->PixelBounds();
         for (int y = b.pMin.y; y < b.pMax.y; ++y)
             for (int x = b.pMin.x; x < b.pMax.x; ++x)
                 s.Add(testing::PixelY(*r.scene, {x, y}) / sky);

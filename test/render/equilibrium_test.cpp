@@ -114,13 +114,13 @@ TEST_P(PolarizedEquilibrium, CavityIsUnpolarisedBlackbody) {
     // centre (where the object's emission and reflection polarisations point: a mean over the
     // image of S1 or S2 alone would cancel), and S3
     RunningStats s[4];
-    Bounds2i b = r.scene->film->PixelBounds();
-    const RGBColorSpace* cs = r.scene->film->ColorSpace();
+    Bounds2i b = r.scene->job->film->PixelBounds();
+    const RGBColorSpace* cs = r.scene->job->film->ColorSpace();
     for (int y = b.pMin.y; y < b.pMax.y; ++y)
         for (int x = b.pMin.x; x < b.pMax.x; ++x) {
             double S[4];
             for (int k = 0; k < 4; ++k)
-                S[k] = cs->ToXYZ(r.scene->film->GetPixelStokes({x, y}, k)).Y / B;
+                S[k] = cs->ToXYZ(r.scene->job->film->GetPixelStokes({x, y}, k)).Y / B;
             // Image up is -y in raster space
             double phi = std::atan2(-(y + 0.5 - (b.pMin.y + b.pMax.y) / 2.0),
                                     x + 0.5 - (b.pMin.x + b.pMax.x) / 2.0);

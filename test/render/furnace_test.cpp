@@ -31,7 +31,7 @@ std::string FurnaceScene(Float albedo, const std::string& sampler) {
 // Mean pixel luminance and its standard error (pixels are independent estimates).
 RunningStats PixelLuminance(const Scene& scene) {
     RunningStats stats;
-    Bounds2i b = scene.film->PixelBounds();
+    Bounds2i b = scene.job->film->PixelBounds();
     for (int y = b.pMin.y; y < b.pMax.y; ++y)
         for (int x = b.pMin.x; x < b.pMax.x; ++x) stats.Add(testing::PixelY(scene, {x, y}));
     return stats;
@@ -47,7 +47,7 @@ TEST_P(FurnaceTest, DiffuseSphereReflectsItsAlbedo) {
         double standardError = std::sqrt(s.Variance() / s.Count());
         // Five standard errors plus float round-off in the colour conversions.
         EXPECT_NEAR(s.Mean(), a, 5 * standardError + 2e-3) << sampler;
-        EXPECT_EQ(r.scene->film->NonFiniteSampleCount(), 0);
+        EXPECT_EQ(r.scene->job->film->NonFiniteSampleCount(), 0);
     }
 }
 

@@ -60,7 +60,7 @@ std::string Sheets(std::vector<std::string> materials, std::optional<Float> came
 }
 
 RunningStats PixelStats(const Scene& scene) {
-    Bounds2i b = scene.film->PixelBounds();
+    Bounds2i b = scene.job->film->PixelBounds();
     RunningStats stats;
     for (int y = b.pMin.y; y < b.pMax.y; ++y)
         for (int x = b.pMin.x; x < b.pMax.x; ++x) stats.Add(testing::PixelY(scene, {x, y}));

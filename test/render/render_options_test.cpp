@@ -43,10 +43,10 @@ TEST(RenderOptions, WinOverTheSceneFileAndLeaveTheDescriptionAsParsed) {
     o.timeSeconds = 30;
     std::unique_ptr<Scene> scene = Scene::Create(desc, o, diag);
 
-    EXPECT_TRUE(Same(scene->film->PixelBounds(), Bounds2i{{4, 2}, {12, 10}}));
-    EXPECT_TRUE(scene->film->WritesStokes());
-    EXPECT_EQ(scene->sampler->SamplesPerPixel(), 5);
-    EXPECT_EQ(scene->sampler->Seed(), 9);
+    EXPECT_TRUE(Same(scene->job->film->PixelBounds(), Bounds2i{{4, 2}, {12, 10}}));
+    EXPECT_TRUE(scene->job->film->WritesStokes());
+    EXPECT_EQ(scene->job->sampler->SamplesPerPixel(), 5);
+    EXPECT_EQ(scene->job->sampler->Seed(), 9);
     EXPECT_EQ(scene->integrator.lightSelection, LightSelection::Power);
     EXPECT_EQ(scene->integrator.strategy, LightStrategy::BSDFOnly);
     EXPECT_FALSE(scene->integrator.emitterPowerSampling);
@@ -96,7 +96,7 @@ TEST(RenderOptions, ACropWindowReplacesTheScenesAndPixelBoundsReplaceBoth) {
     auto bounds = [&](RenderOptions o) {
         SceneBuilder builder(diag);
         ParseString(builder, kScene, diag, "<test>");
-        return Scene::Create(builder.Description(), o, diag)->film->PixelBounds();
+        return Scene::Create(builder.Description(), o, diag)->job->film->PixelBounds();
     };
     EXPECT_TRUE(Same(bounds({}), Bounds2i{{0, 0}, {20, 10}}));
     RenderOptions crop;

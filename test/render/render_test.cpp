@@ -40,11 +40,12 @@ Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]
 TEST(RenderTest, ImageIsIdenticalForOneAndTwoThreads) {
     testing::RenderedScene one = testing::RenderText(kSmallScene, 1);
     testing::RenderedScene two = testing::RenderText(kSmallScene, 2);
-    Bounds2i b = one.scene->film->PixelBounds();
+    Bounds2i b = one.scene->job->film->PixelBounds();
     int nonBlack = 0;
     for (int y = b.pMin.y; y < b.pMax.y; ++y)
         for (int x = b.pMin.x; x < b.pMax.x; ++x) {
-            RGB a = one.scene->film->GetPixelRGB({x, y}), c = two.scene->film->GetPixelRGB({x, y});
+            RGB a = one.scene->job->film->GetPixelRGB({x, y}),
+                c = two.scene->job->film->GetPixelRGB({x, y});
             ASSERT_EQ(a.r, c.r) << x << "," << y;
             ASSERT_EQ(a.g, c.g) << x << "," << y;
             ASSERT_EQ(a.b, c.b) << x << "," << y;
@@ -59,9 +60,9 @@ TEST(RenderTest, ExrOutputRoundTripsThroughOpenImageIO) {
     fs::create_directories(dir);
     fs::path exr = dir / "roundtrip.exr";
     ImageMetadata md;
-    r.scene->film->WriteImage(exr.string(), md);
+    r.scene->job->film->WriteImage(exr.string(), md);
     Image img = Image::Read(exr.string());
-    Bounds2i b = r.scene->film->PixelBounds();
+    Bounds2i b = r.scene->job->film->PixelBounds();
     ASSERT_EQ(img.Resolution().x, b.pMax.x - b.pMin.x);
     ASSERT_EQ(img.Resolution().y, b.pMax.y - b.pMin.y);
     int R = img.ChannelIndex("R"), G = img.ChannelIndex("G"), B = img.ChannelIndex("B");
@@ -70,7 +71,7 @@ TEST(RenderTest, ExrOutputRoundTripsThroughOpenImageIO) {
     ASSERT_GE(B, 0);
     for (int y = 0; y < img.Resolution().y; ++y)
         for (int x = 0; x < img.Resolution().x; ++x) {
-            RGB want = r.scene->film->GetPixelRGB({x + b.pMin.x, y + b.pMin.y});
+            RGB want = r.scene->job->film->GetPixelRGB({x + b.pMin.x, y + b.pMin.y});
             // Half floats: 11 significant bits.
             EXPECT_NEAR(img.GetChannel({x, y}, R), want.r, 1e-3f + 1e-3f * std::abs(want.r));
             EXPECT_NEAR(img.GetChannel({x, y}, G), want.g, 1e-3f + 1e-3f * std::abs(want.g));
@@ -78,7 +79,7 @@ TEST(RenderTest, ExrOutputRoundTripsThroughOpenImageIO) {
         }
     // PNG output goes through the display transform: 8-bit, same size.
     fs::path png = dir / "roundtrip.png";
-    r.scene->film->WriteImage(png.string(), md);
+    r.scene->job->film->WriteImage(png.string(), md);
     Image display = Image::Read(png.string());
     EXPECT_EQ(display.Resolution().x, img.Resolution().x);
     EXPECT_EQ(display.NChannels() >= 3, true);
@@ -113,7 +114,7 @@ TEST(RenderTest, EveryBundledSceneRendersWithoutWarningsOrNaNs) {
         testing::RenderedScene r = testing::RenderFile(file, overrides);
         for (const Diagnostics::Warning& w : r.warnings)
             ADD_FAILURE() << w.loc.ToString() << ": " << w.message;
-        EXPECT_EQ(r.scene->film->NonFiniteSampleCount(), 0);
+        EXPECT_EQ(r.scene->job->film->NonFiniteSampleCount(), 0);
         EXPECT_GT(r.stats.cameraPaths, 0);
     }
 }
@@ -126,7 +127,7 @@ namespace {
 
 TEST(RenderTest, AutoExposureBringsTheBrightPercentileToTheTarget) {
     testing::RenderedScene r = testing::RenderText(kSmallScene, 2);
-    RGBFilm& film = *r.scene->film;
+    RGBFilm& film = *r.scene->job->film;
     Float ev = AutoExposureEV(film, 0.99f, 0.9f);
     EXPECT_TRUE(std::isfinite(ev));
     film.SetExposureEV(ev);
@@ -161,7 +162,7 @@ TEST(RenderTest, CancelStopsTheRenderAndKeepsAWritableFilm) {
     EXPECT_EQ(stats.cameraPaths, 0);
     fs::path out = fs::path(KILN_BINARY_DIR) / "test-output" / "cancelled.exr";
     fs::create_directories(out.parent_path());
-    scene->film->WriteImage(out.string(), ImageMetadata());
+    scene->job->film->WriteImage(out.string(), ImageMetadata());
     EXPECT_TRUE(fs::exists(out));
 }
 

@@ -111,8 +111,8 @@ std::string CavityCaseName(const ::testing::TestParamInfo<std::tuple<Case, bool>
 
 // Luminance Y of a film pixel (colour space of the film).
 inline Float PixelY(const Scene& scene, Point2i p) {
-    RGB rgb = scene.film->GetPixelRGB(p);
-    return scene.film->ColorSpace()->ToXYZ(rgb).Y;
+    RGB rgb = scene.job->film->GetPixelRGB(p);
+    return scene.job->film->ColorSpace()->ToXYZ(rgb).Y;
 }
 
 // An equilibrium cavity render at temperature T (label: what it holds): no warnings, and the
@@ -122,7 +122,7 @@ inline void ExpectBlackbodyImage(const RenderedScene& r, double T, const std::st
     for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
     const double B = BlackbodyLuminance(T);
     RunningStats s;
-    Bounds2i b = r.scene->film->PixelBounds();
+    Bounds2i b = r.scene->job->film->PixelBounds();
     for (int y = b.pMin.y; y < b.pMax.y; ++y)
         for (int x = b.pMin.x; x < b.pMax.x; ++x) s.Add(PixelY(*r.scene, {x, y}) / B);
     double se = s.StandardError();

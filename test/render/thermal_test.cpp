@@ -22,7 +22,7 @@ namespace {
 // convention), by the same 1 nm sum the film's colour matching uses.
 RunningStats ImageLuminance(const Scene& scene) {
     RunningStats stats;
-    Bounds2i b = scene.film->PixelBounds();
+    Bounds2i b = scene.job->film->PixelBounds();
     for (int y = b.pMin.y; y < b.pMax.y; ++y)
         for (int x = b.pMin.x; x < b.pMax.x; ++x) stats.Add(testing::PixelY(scene, {x, y}));
     return stats;
@@ -78,7 +78,7 @@ TEST(ThermalTest, KirchhoffCavityIsInEquilibriumAtEveryPixel) {
                     s.Mean() / expected, sigma);
         EXPECT_NEAR(s.Mean() / expected, 1.0, std::min(0.01, 4 * standardError + 1e-3));
         EXPECT_LT(sigma, 0.05);
-        Bounds2i b = r.scene->film->PixelBounds();
+        Bounds2i b = r.scene->job->film->PixelBounds();
         for (int y = b.pMin.y; y < b.pMax.y; ++y)
             for (int x = b.pMin.x; x < b.pMax.x; ++x)
                 EXPECT_NEAR(testing::PixelY(*r.scene, {x, y}) / expected, 1.0, 4.5 * sigma)
@@ -136,10 +136,11 @@ XYZ GlowXYZ(const std::string& material) {
         material + "\nShape \"sphere\" \"float radius\" 1 \"float temperature\" 1300\n";
     testing::RenderedScene r = testing::RenderText(text);
     XYZ sum;
-    Bounds2i b = r.scene->film->PixelBounds();
+    Bounds2i b = r.scene->job->film->PixelBounds();
     for (int y = b.pMin.y; y < b.pMax.y; ++y)
         for (int x = b.pMin.x; x < b.pMax.x; ++x)
-            sum = sum + r.scene->film->ColorSpace()->ToXYZ(r.scene->film->GetPixelRGB({x, y}));
+            sum = sum +
+                  r.scene->job->film->ColorSpace()->ToXYZ(r.scene->job->film->GetPixelRGB({x, y}));
     return sum / Float(b.Area());
 }
 
@@ -252,7 +253,7 @@ AttributeEnd
     EXPECT_LT(maxDiff, 8 * rms) << "max " << maxDiff << " at pixel " << maxAt % 64 << ","
                                 << 31 + maxAt / 64 << ", rms " << rms;
     EXPECT_LT(rms, 0.2 * floor.Mean());
-    EXPECT_EQ(ra.scene->film->NonFiniteSampleCount(), 0);
+    EXPECT_EQ(ra.scene->job->film->NonFiniteSampleCount(), 0);
 }
 
 // T = 0 K emits exactly nothing (and nothing goes non-finite), whatever the model; a tiny
@@ -267,7 +268,7 @@ TEST(ThermalTest, ZeroAndTinyTemperaturesAreExact) {
                  << "WorldBegin\nMaterial \"conductor\" \"string emission\" \"" << model
                  << "\"\nShape \"sphere\" \"float temperature\" " << T << "\n";
             testing::RenderedScene r = testing::RenderText(text.str());
-            EXPECT_EQ(r.scene->film->NonFiniteSampleCount(), 0);
+            EXPECT_EQ(r.scene->job->film->NonFiniteSampleCount(), 0);
             double maxY = 0;
             for (int y = 0; y < 8; ++y)
                 for (int x = 0; x < 8; ++x)
@@ -484,7 +485,7 @@ TEST(ThermalTest, LightSamplesEmitWhatRayHitsThereEmit) {
         SampledWavelengths l = lambda;
         BSDF bsdf = s->GetBSDF(hit->intr, l);
         SampledSpectrum Le = s->SurfaceLe(hit->intr, bsdf, -ls->wi, lambda);
-        SampledSpectrum Ls = light.DeferredL(*ls, lambda, *s->shader);
+        SampledSpectrum Ls = light.DeferredL(*ls, lambda, *s->job->shader);
         ++compared;
         for (int i = 0; i < NSpectrumSamples; ++i)
             if (std::abs(Le[i] - Ls[i]) > 1e-3f * std::max(Le[i], Ls[i])) {

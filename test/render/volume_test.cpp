@@ -19,7 +19,7 @@ namespace {
 // Pixel luminance statistics over the film (or a central window of it).
 RunningStats ImageY(const Scene& scene, Float scale = 1) {
     RunningStats s;
-    Bounds2i b = scene.film->PixelBounds();
+    Bounds2i b = scene.job->film->PixelBounds();
     for (int y = b.pMin.y; y < b.pMax.y; ++y)
         for (int x = b.pMin.x; x < b.pMax.x; ++x) s.Add(testing::PixelY(scene, {x, y}) * scale);
     return s;
@@ -206,7 +206,7 @@ TEST(VolumeTest, HostileMajorantsEndRatherThanHang) {
         "\"point3 p1\" [1 1 1]\n"
         "Material \"interface\"\nMediumInterface \"m\" \"\"\nShape \"sphere\" \"float radius\" "
         "1\n");
-    EXPECT_EQ(r.scene->film->NonFiniteSampleCount(), 0);
+    EXPECT_EQ(r.scene->job->film->NonFiniteSampleCount(), 0);
     EXPECT_EQ(r.stats.completedSamples, 1);
 }
 
