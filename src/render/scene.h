@@ -1,8 +1,10 @@
 // Scene: the renderable objects created from a SceneDescription (pbrt-v4's BasicScene
-// creation step): camera, film, sampler, textures, materials, lights, shapes in an Embree
-// accelerator, and the integrator's settings. Creation runs in named steps
-// (scene_create.cpp: camera and film, textures, materials, shapes and their heat
-// (scene_emitters.h), lights, aggregate, light sampler, features).
+// creation step) and RenderOptions: what is loaded once (camera, textures, materials, lights,
+// media, shapes in an Embree accelerator, emissivity tables, the integrator's settings) and the
+// current render job (film, sampler, shader: RenderJob), which SetJob replaces to render the
+// loaded scene again with other samples per pixel, seed, crop window or pixel bounds.
+// Creation runs in named steps (scene_create.cpp: camera and film, textures, materials, shapes
+// and their heat (scene_emitters.h), lights, aggregate, light sampler, features).
 #pragma once
 
 #include <map>
