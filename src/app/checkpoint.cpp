@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "base/atomic_file.h"
+#include "base/file_reading.h"
 #include "core/film/film.h"
 
 namespace kiln {
@@ -30,23 +32,25 @@ std::string CheckpointFile(const std::string& output) { return output + ".checkp
 
 void WriteCheckpoint(const std::string& file, const CheckpointIdentity& id, int completed,
                      const RGBFilm& film) {
-    std::string tmp = file + ".writing";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out << Header(id, completed) << film.SaveState();
-        out.flush();
-        if (!out) throw std::runtime_error(tmp + ": cannot write the checkpoint");
+    try {
+        WriteFileAtomically(file, Header(id, completed) + film.SaveState());
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(std::string("cannot write the checkpoint: ") + e.what());
     }
-    std::error_code ec;
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) throw std::runtime_error(file + ": cannot write the checkpoint: " + ec.message());
 }
 
 int ReadCheckpoint(const std::string& file, const CheckpointIdentity& id, RGBFilm& film,
                    std::string* why) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return 0;
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::error_code ec;
+    if (!std::filesystem::exists(std::filesystem::symlink_status(file, ec))) return 0;
+    // Only a regular file no larger than this film's state and a header (not a directory, a
+    // FIFO or a device, which would never end)
+    std::string bytes, error;
+    uint64_t maxBytes = film.SaveState().size() + 4096;
+    if (!ReadFileBytes(file, &bytes, &error, maxBytes)) {
+        *why = file + ": " + error;
+        return 0;
+    }
     size_t end = bytes.find("\n\n");
     if (bytes.compare(0, sizeof(kMagic) - 1, kMagic) != 0 || end == std::string::npos) {
         *why = file + " is not a kiln checkpoint";
@@ -68,9 +72,12 @@ int ReadCheckpoint(const std::string& file, const CheckpointIdentity& id, RGBFil
 }
 
 void RemoveCheckpoint(const std::string& file) {
+    // Only a checkpoint kiln could have written: a regular file (not what else has the name),
+    // and the temporaries of writes that a kill interrupted
     std::error_code ec;
-    std::filesystem::remove(file, ec);
-    std::filesystem::remove(file + ".writing", ec);
+    if (std::filesystem::is_regular_file(std::filesystem::symlink_status(file, ec)))
+        std::filesystem::remove(file, ec);
+    RemoveStaleTemporaries(file);
 }
 
 }  // namespace kiln

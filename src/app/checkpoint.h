@@ -2,8 +2,9 @@
 // pixel, with what identifies the render it belongs to (scene file hash, frame, seed, spp,
 // pixel bounds), so that a render killed at any moment and started again with the same command
 // resumes and ends bit-identical to an uninterrupted one (render/renderer.h, startSample).
-// Written atomically: to FILE.writing, renamed to FILE (a kill leaves the previous checkpoint
-// whole; a stale FILE.writing is overwritten by the next write and removed at the end).
+// Written atomically (base/atomic_file.h: a new temporary file beside FILE, renamed to FILE; a
+// kill leaves the previous checkpoint whole). Read only from a regular file of at most the
+// film's state and a header; anything else is ignored with a reason.
 #pragma once
 
 #include <string>
@@ -33,7 +34,8 @@ void WriteCheckpoint(const std::string& file, const CheckpointIdentity& id, int 
 int ReadCheckpoint(const std::string& file, const CheckpointIdentity& id, RGBFilm& film,
                    std::string* why);
 
-// Removes the checkpoint and any temporary file of it (after the output is written).
+// Removes the checkpoint (after the output is written) if it is a regular file, and the
+// temporaries of checkpoint writes that a kill interrupted.
 void RemoveCheckpoint(const std::string& file);
 
 }  // namespace kiln

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <stdexcept>
 
 #include "app/command_line.h"
+#include "base/atomic_file.h"
 #include "core/parser/parser.h"
 #include "render/scene_builder.h"
 
@@ -92,8 +94,10 @@ std::string RenderScript(const FarmPlan& p) {
       << "# kiln farm: one task per tile and frame (array index = (frame - " << p.frames.first
       << ") * " << n << " + tile)\n"
       << "#SBATCH --job-name=kiln-render\n"
-      << "#SBATCH --output=" << p.dir << "/logs/render-%A_%a.log\n"
+      << "#SBATCH --output=/dev/null\n"
       << "set -euo pipefail\n"
+      << "exec >> " << Quote(p.dir + "/logs/render-")
+      << "\"${SLURM_ARRAY_JOB_ID:-local}_${SLURM_ARRAY_TASK_ID:-0}.log\" 2>&1\n"
       << "TILES=(";
     for (const Bounds2i& b : p.tiles)
         s << " \"" << b.pMin.x << " " << b.pMax.x << " " << b.pMin.y << " " << b.pMax.y << "\"";
@@ -116,8 +120,9 @@ std::string MergeScript(const FarmPlan& p) {
     s << "#!/bin/bash\n"
       << "# kiln farm: each frame's tiles merged (kiln merge refuses missing or foreign parts)\n"
       << "#SBATCH --job-name=kiln-merge\n"
-      << "#SBATCH --output=" << p.dir << "/logs/merge-%j.log\n"
-      << "set -euo pipefail\n";
+      << "#SBATCH --output=/dev/null\n"
+      << "set -euo pipefail\n"
+      << "exec >> " << Quote(p.dir + "/logs/merge-") << "\"${SLURM_JOB_ID:-local}.log\" 2>&1\n";
     for (int f = p.frames.first; f <= p.frames.second; ++f) {
         std::vector<std::string> words = {p.kiln, "merge"};
         for (int t = 0; t < int(p.tiles.size()); ++t) words.push_back(p.PartFile(f, t));
@@ -196,6 +201,20 @@ int RunFarm(const std::vector<std::string>& args) {
         return 1;
     }
     if (plan.resolution.x < 1 || plan.resolution.y < 1) return usage("the film has no pixels");
+    // Paths go into shell scripts quoted, and into Slurm's options: no control characters (a
+    // newline would end a script line); the merge writes EXR only
+    auto hasControl = [](const std::string& s) {
+        return std::any_of(s.begin(), s.end(), [](char c) {
+            return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+        });
+    };
+    if (hasControl(scene)) return usage("the scene path contains a control character");
+    if (hasControl(plan.output)) return usage("-o contains a control character");
+    std::string extension = fs::path(plan.output).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    if (extension != ".exr")
+        return usage("kiln merge writes OpenEXR: -o must end in .exr (got '" + plan.output + "')");
     if (plan.animation && plan.frames.first != plan.frames.second &&
         plan.output.find('#') == std::string::npos)
         return usage("with --frames, -o needs '#' for the frame number");
@@ -224,10 +243,16 @@ int RunFarm(const std::vector<std::string>& args) {
 
     std::string render = RenderScript(plan), merge = MergeScript(plan);
     std::string renderFile = plan.dir + "/render.sbatch", mergeFile = plan.dir + "/merge.sbatch";
+    // The jobs run in the farm folder. Slurm expands '%' anywhere in a log path it is given,
+    // the working folder included, so it is given none (/dev/null): the scripts send their
+    // output to logs/ themselves, with bash's quoting; no path of the user's is in an #SBATCH
+    // line.
+    std::string chdir = " " + Quote("--chdir=" + plan.dir);
     std::string submitRender = "sbatch --parsable --array=0-" + std::to_string(plan.Tasks() - 1) +
+                               chdir +
                                (plan.sbatchOptions.empty() ? "" : " " + Join(plan.sbatchOptions)) +
                                " " + Quote(renderFile);
-    std::string submitMerge = "sbatch --parsable --dependency=afterok:JOB" +
+    std::string submitMerge = "sbatch --parsable --dependency=afterok:JOB" + chdir +
                               (plan.sbatchOptions.empty() ? "" : " " + Join(plan.sbatchOptions)) +
                               " " + Quote(mergeFile);
     if (dryRun) {
@@ -241,8 +266,8 @@ int RunFarm(const std::vector<std::string>& args) {
     try {
         fs::create_directories(plan.dir + "/parts");
         fs::create_directories(plan.dir + "/logs");
-        std::ofstream(renderFile) << render;
-        std::ofstream(mergeFile) << merge;
+        WriteFileAtomically(renderFile, render, true);
+        WriteFileAtomically(mergeFile, merge, true);
         std::string job = Capture(submitRender);
         job = job.substr(0, job.find(';'));  // "id;cluster"
         std::string mergeCommand = submitMerge;

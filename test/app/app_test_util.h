@@ -20,6 +20,13 @@ inline std::vector<float> Pixels(const std::string& file) {
     return v;
 }
 
+// A word for a test's shell commands: single-quoted, single quotes escaped
+inline std::string ShellQuote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
 // The whole content of a file ("" if it cannot be read)
 inline std::string ReadAll(const std::string& file) {
     std::ifstream in(file);

@@ -2,7 +2,9 @@
 // array, the user's options and an afterok dependency (checked with a stand-in sbatch that
 // records its arguments); and the batch scripts it writes, run as Slurm would run them (each
 // array index, then the merge), give frames bit-identical to single-process renders. (A real
-// Slurm cluster runs them in slurm_cluster_test.cpp.)
+// Slurm cluster runs them in slurm_cluster_test.cpp.) The scene and the output live in a folder
+// whose name has spaces, quotes and '%'; -o with a control character or a format the merge
+// cannot write is refused before anything is written or submitted.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -23,6 +25,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
+using testing::ShellQuote;
+constexpr auto Q = ShellQuote;
+
 TEST(Farm, TilesCoverTheFilmOnce) {
     for (Point2i res : {Point2i(24, 20), Point2i(1920, 1080), Point2i(3, 700), Point2i(1, 1)})
         for (int n : {1, 2, 3, 4, 6, 7, 12, 64}) {
@@ -42,7 +47,8 @@ TEST(Farm, TilesCoverTheFilmOnce) {
 }
 
 TEST(Farm, ScriptsRunAsSlurmWouldGiveTheSingleProcessRender) {
-    fs::path dir = fs::path(::testing::TempDir()) / ("kiln_farm_" + std::to_string(getpid()));
+    fs::path dir =
+        fs::path(::testing::TempDir()) / ("kiln farm 'q' \"dq\" 100% " + std::to_string(getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir / "bin");
     const std::string kiln = std::string(KILN_BINARY_DIR) + "/kiln";
@@ -57,40 +63,63 @@ TEST(Farm, ScriptsRunAsSlurmWouldGiveTheSingleProcessRender) {
     const std::string log = (dir / "sbatch.log").string();
     {
         std::ofstream fake(dir / "bin" / "sbatch");
-        fake << "#!/bin/bash\necho \"$@\" >> '" << log << "'\n"
-             << "n=$(wc -l < '" << log << "')\necho $((99 + n))\n";
+        fake << "#!/bin/bash\necho \"$@\" >> " << Q(log) << "\n"
+             << "n=$(wc -l < " << Q(log) << ")\necho $((99 + n))\n";
     }
     fs::permissions(dir / "bin" / "sbatch", fs::perms::owner_all);
-    const std::string env = "PATH='" + (dir / "bin").string() + "':\"$PATH\" ";
+    const std::string env = "PATH=" + Q((dir / "bin").string()) + ":\"$PATH\" ";
     const std::string out = (dir / "out#.exr").string();
     const std::string farm =
-        env + "'" + kiln + "' farm '" + scene + "' --tiles 4 --frames 0-1 --spp 8 -o '" + out + "'";
+        env + Q(kiln) + " farm " + Q(scene) + " --tiles 4 --frames 0-1 --spp 8 -o " + Q(out);
     const std::string stdoutFile = (dir / "stdout.txt").string();
-    ASSERT_EQ(std::system((farm + " -- --partition=test > '" + stdoutFile + "'").c_str()), 0);
+    // Refused before anything is written or submitted: a newline in -o, a format the merge
+    // cannot write
+    for (std::string bad : {(dir / "a\nb#.exr").string(), (dir / "out#.png").string()}) {
+        std::string refused = env + Q(kiln) + " farm " + Q(scene) + " --frames 0-1 -o " + Q(bad);
+        EXPECT_NE(std::system((refused + " 2> " + Q(stdoutFile)).c_str()), 0) << bad;
+        EXPECT_NE(testing::ReadAll(stdoutFile).find("kiln farm: "), std::string::npos);
+    }
+    EXPECT_FALSE(fs::exists(log));
+    EXPECT_FALSE(fs::exists(dir / "a\nb.exr.farm"));
+    EXPECT_FALSE(fs::exists(dir / "out.png.farm"));
+    ASSERT_EQ(std::system((farm + " -- --partition=test > " + Q(stdoutFile)).c_str()), 0);
     EXPECT_NE(testing::ReadAll(stdoutFile).find("render job 100 (8 tasks), merge job 101"),
               std::string::npos)
         << testing::ReadAll(stdoutFile);
     std::string calls = testing::ReadAll(log);
-    EXPECT_NE(calls.find("--parsable --array=0-7 --partition=test"), std::string::npos) << calls;
-    EXPECT_NE(calls.find("--dependency=afterok:100 --partition=test"), std::string::npos) << calls;
-    // Nothing rendered yet: --status lists the 8 parts
-    EXPECT_NE(std::system((farm + " --status > '" + stdoutFile + "'").c_str()), 0);
-    EXPECT_NE(testing::ReadAll(stdoutFile).find("8 parts missing"), std::string::npos);
-    // What Slurm would run: every array index, then the merge
     const std::string farmDir = (dir / "out.exr.farm").string();
+    // Both jobs run in the farm folder (the scripts' logs/ is there)
+    EXPECT_NE(calls.find("--parsable --array=0-7 --chdir=" + farmDir + " --partition=test"),
+              std::string::npos)
+        << calls;
+    EXPECT_NE(calls.find("--dependency=afterok:100 --chdir=" + farmDir + " --partition=test"),
+              std::string::npos)
+        << calls;
+    // No path of the user's in an #SBATCH line
+    for (const char* script : {"/render.sbatch", "/merge.sbatch"})
+        for (std::istringstream lines(testing::ReadAll(farmDir + script)); !lines.eof();) {
+            std::string line;
+            std::getline(lines, line);
+            if (line.rfind("#SBATCH", 0) == 0)
+                EXPECT_EQ(line.find(dir.string()), std::string::npos) << line;
+        }
+    // Nothing rendered yet: --status lists the 8 parts
+    EXPECT_NE(std::system((farm + " --status > " + Q(stdoutFile)).c_str()), 0);
+    EXPECT_NE(testing::ReadAll(stdoutFile).find("8 parts missing"), std::string::npos);
+    // What Slurm would run, in the farm folder: every array index, then the merge
     for (int i = 0; i < 8; ++i)
-        ASSERT_EQ(std::system(("SLURM_ARRAY_TASK_ID=" + std::to_string(i) + " bash '" + farmDir +
-                               "/render.sbatch'")
+        ASSERT_EQ(std::system(("cd " + Q(farmDir) + " && SLURM_ARRAY_TASK_ID=" + std::to_string(i) +
+                               " bash render.sbatch")
                                   .c_str()),
                   0)
             << i;
-    ASSERT_EQ(std::system(("bash '" + farmDir + "/merge.sbatch'").c_str()), 0);
-    EXPECT_EQ(std::system((farm + " --status > '" + stdoutFile + "'").c_str()), 0);
+    ASSERT_EQ(std::system(("cd " + Q(farmDir) + " && bash merge.sbatch").c_str()), 0);
+    EXPECT_EQ(std::system((farm + " --status > " + Q(stdoutFile)).c_str()), 0);
     // Each frame as one process renders it
     for (int f = 0; f < 2; ++f) {
         std::string single = (dir / ("single" + std::to_string(f) + ".exr")).string();
-        ASSERT_EQ(std::system(("'" + kiln + "' '" + scene + "' --frames " + std::to_string(f) +
-                               "-" + std::to_string(f) + " --spp 8 --quiet -o '" + single + "'")
+        ASSERT_EQ(std::system((Q(kiln) + " " + Q(scene) + " --frames " + std::to_string(f) + "-" +
+                               std::to_string(f) + " --spp 8 --quiet -o " + Q(single))
                                   .c_str()),
                   0);
         EXPECT_EQ(testing::Pixels((dir / ("out" + std::to_string(f) + ".exr")).string()),

@@ -4,7 +4,9 @@
 // --checkpoint killed outright (SIGKILL, as a preempted job) and started again with the same
 // command resumes and ends bit-identical to an uninterrupted render. Runs the kiln binary.
 #include <gtest/gtest.h>
+
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -141,20 +143,23 @@ INSTANTIATE_TEST_SUITE_P(TermAndInt, Signals, ::testing::Values(SIGTERM, SIGINT)
                              return std::string(info.param == SIGTERM ? "SIGTERM" : "SIGINT");
                          });
 
+// Runs the kiln binary with args and then extra to its end; returns what it wrote to stderr
+// (expecting exit status 0).
+std::string RunToEnd(std::vector<std::string> args, const std::vector<std::string>& extra) {
+    args.insert(args.end(), extra.begin(), extra.end());
+    Child c = Spawn(args);
+    std::string seen;
+    ReadUntil(c.stderrFd, "\x04", &seen);
+    EXPECT_EQ(ExitStatus(c), 0) << seen;
+    return seen;
+}
+
 TEST(Checkpoints, AKilledRenderResumesBitIdentical) {
     SceneDir dir;
     std::string scene = (dir.path / "scene.pbrt").string();
     std::string ref = (dir.path / "ref.exr").string(), out = (dir.path / "out.exr").string();
     const std::vector<std::string> common = {scene, "--spp", "96", "--seed", "7", "--threads", "2"};
-    auto run = [&](std::vector<std::string> extra) {
-        std::vector<std::string> args = common;
-        args.insert(args.end(), extra.begin(), extra.end());
-        Child c = Spawn(args);
-        std::string seen;
-        ReadUntil(c.stderrFd, "\x04", &seen);
-        EXPECT_EQ(ExitStatus(c), 0) << seen;
-        return seen;
-    };
+    auto run = [&](const std::vector<std::string>& extra) { return RunToEnd(common, extra); };
     run({"-o", ref, "--quiet"});
     // Killed after some checkpoints (a different number each time), then resumed
     for (int kills : {1, 5}) {
@@ -183,6 +188,44 @@ TEST(Checkpoints, AKilledRenderResumesBitIdentical) {
     std::string again = run({"-o", out, "--checkpoint", "0"});
     EXPECT_NE(again.find("ignoring"), std::string::npos) << again;
     EXPECT_EQ(testing::Pixels(out), testing::Pixels(ref));
+}
+
+// What else may be found where the checkpoint goes: a directory, a FIFO, a link to /dev/zero, a
+// link planted at any name kiln might write through. None of them hangs, crashes or is written
+// through: each is ignored with a warning, the render ends as an uninterrupted one, and what the
+// name pointed at is untouched.
+TEST(Checkpoints, HostileCheckpointFilesAreIgnoredNotFollowed) {
+    SceneDir dir;
+    std::string scene = (dir.path / "scene.pbrt").string();
+    std::string ref = (dir.path / "ref.exr").string(), out = (dir.path / "out.exr").string();
+    const std::string checkpoint = out + ".checkpoint";
+    const std::vector<std::string> common = {scene, "--spp", "24", "--seed", "3", "--threads", "2"};
+    auto run = [&](const std::vector<std::string>& extra) { return RunToEnd(common, extra); };
+    run({"-o", ref, "--quiet"});
+    const fs::path victim = dir.path / "victim.txt";
+    auto plant = [&](const std::string& kind) {
+        fs::remove_all(checkpoint);
+        if (kind == "directory") fs::create_directories(fs::path(checkpoint) / "inside");
+        if (kind == "fifo") ASSERT_EQ(mkfifo(checkpoint.c_str(), 0644), 0);
+        if (kind == "devzero") fs::create_symlink("/dev/zero", checkpoint);
+        if (kind == "link") {
+            std::ofstream(victim) << "precious";
+            fs::create_symlink(victim, checkpoint);
+            for (const char* suffix : {".writing", ".tmp"})
+                fs::create_symlink(victim, checkpoint + suffix);
+        }
+    };
+    for (const std::string kind : {"directory", "fifo", "devzero", "link"}) {
+        SCOPED_TRACE(kind);
+        plant(kind);
+        std::string seen = run({"-o", out, "--checkpoint", "0"});
+        if (kind != "link") EXPECT_NE(seen.find("ignoring"), std::string::npos) << seen;
+        EXPECT_EQ(testing::Pixels(out), testing::Pixels(ref));
+        if (kind == "directory") EXPECT_TRUE(fs::is_directory(fs::path(checkpoint) / "inside"));
+        if (kind == "link") EXPECT_EQ(testing::ReadAll(victim.string()), "precious");
+        fs::remove_all(checkpoint);
+        for (const char* suffix : {".writing", ".tmp"}) fs::remove(checkpoint + suffix);
+    }
 }
 
 }  // namespace

@@ -4,7 +4,8 @@
 // `kiln farm` and waits for the merge job (bounded, by a dependent `srun`). The merged
 // frames must equal single-process renders bit for bit. It then re-submits one finished array
 // index and the merge, as a requeue or a manual re-run would, and the frames must stay the same.
-// When Slurm cannot start, the test fails and prints the daemons' logs; it never skips.
+// The scene and the frames live in a folder whose name has spaces, quotes and '%'. When Slurm
+// cannot start, the test fails and prints the daemons' logs; it never skips.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -67,8 +68,12 @@ TEST(SlurmCluster, FarmOnLocalhostGivesTheSingleProcessRender) {
                                << start.output;
     const std::string env = "SLURM_CONF='" + cluster.dir + "/slurm.conf' ";
 
-    // A steel blade cooling from 1500 K: the two frames differ in time, so in temperature
-    const fs::path scene = dir / "blade.pbrt";
+    // A steel blade cooling from 1500 K: the two frames differ in time, so in temperature. In
+    // a folder whose name the farm's scripts and Slurm's options must quote or escape.
+    const fs::path work = dir / "farm 'q' \"dq\" 100%A";
+    fs::create_directories(work);
+    const auto Q = testing::ShellQuote;
+    const fs::path scene = work / "blade.pbrt";
     std::ofstream(scene)
         << "Film \"rgb\" \"integer xresolution\" 32 \"integer yresolution\" 20\n"
            "Sampler \"zsobol\" \"integer pixelsamples\" 8\n"
@@ -81,10 +86,10 @@ TEST(SlurmCluster, FarmOnLocalhostGivesTheSingleProcessRender) {
            "    \"float roughness\" 0.2 \"texture temperature\" \"heat\"\n"
            "Shape \"trianglemesh\" \"integer indices\" [0 1 2  0 2 3]\n"
            "    \"point3 P\" [-0.2 0 -0.03  0.12 0 -0.03  0.12 0 0.03  -0.2 0 0.03]\n";
-    const fs::path farmDir = dir / "blade.exr.farm";
-    const std::string farm = env + "'" + kiln + "' farm '" + scene.string() +
-                             "' --tiles 4 --frames 0-1 --spp 8 -o '" +
-                             (dir / "blade#.exr").string() + "'";
+    const fs::path farmDir = work / "blade.exr.farm";
+    const std::string farm = env + Q(kiln) + " farm " + Q(scene.string()) +
+                             " --tiles 4 --frames 0-1 --spp 8 -o " +
+                             Q((work / "blade#.exr").string());
     Result submit = Shell(farm);
     ASSERT_EQ(submit.status, 0) << submit.output;
     std::smatch ids;
@@ -118,12 +123,12 @@ TEST(SlurmCluster, FarmOnLocalhostGivesTheSingleProcessRender) {
     // Each frame as one process renders it
     std::vector<float> single[2];
     for (int f = 0; f < 2; ++f) {
-        const fs::path out = dir / ("single" + std::to_string(f) + ".exr");
-        Result r = Shell("'" + kiln + "' '" + scene.string() + "' --frames " + std::to_string(f) +
-                         "-" + std::to_string(f) + " --spp 8 --quiet -o '" + out.string() + "'");
+        const fs::path out = work / ("single" + std::to_string(f) + ".exr");
+        Result r = Shell(Q(kiln) + " " + Q(scene.string()) + " --frames " + std::to_string(f) +
+                         "-" + std::to_string(f) + " --spp 8 --quiet -o " + Q(out.string()));
         ASSERT_EQ(r.status, 0) << r.output;
         single[f] = testing::Pixels(out.string());
-        EXPECT_EQ(testing::Pixels((dir / ("blade" + std::to_string(f) + ".exr")).string()),
+        EXPECT_EQ(testing::Pixels((work / ("blade" + std::to_string(f) + ".exr")).string()),
                   single[f])
             << "frame " << f;
     }
@@ -132,13 +137,13 @@ TEST(SlurmCluster, FarmOnLocalhostGivesTheSingleProcessRender) {
     // A re-run of a finished task (Slurm's requeue, or a manual re-submit) and of the merge
     // overwrite their own outputs with the same pixels
     for (const char* script : {"--array=5 render.sbatch", "merge.sbatch"}) {
-        Result job = Shell("cd '" + farmDir.string() + "' && " + env + "sbatch --parsable " +
+        Result job = Shell("cd " + Q(farmDir.string()) + " && " + env + "sbatch --parsable " +
                            std::string(script));
         ASSERT_EQ(job.status, 0) << job.output;
         expectCompleted(job.output.substr(0, job.output.find_first_of(";\n")), 1);
     }
     for (int f = 0; f < 2; ++f)
-        EXPECT_EQ(testing::Pixels((dir / ("blade" + std::to_string(f) + ".exr")).string()),
+        EXPECT_EQ(testing::Pixels((work / ("blade" + std::to_string(f) + ".exr")).string()),
                   single[f])
             << "frame " << f << " after a re-run";
     Shell("'" + cluster.script + "' stop '" + cluster.dir + "'");
