@@ -1,10 +1,13 @@
 #include "app/merge.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <limits>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "base/file_reading.h"
 #include "base/rng.h"
@@ -56,6 +59,16 @@ void CheckConsistent(const std::vector<RenderPart>& parts, bool tiles) {
                    std::to_string(b.x) + "x" + std::to_string(b.y));
         if (p.image.ChannelNames() != first.image.ChannelNames())
             throw std::runtime_error(p.file + " and " + first.file + " have different channels");
+        // kiln writes no NaN or infinity: a part that has one is damaged
+        std::vector<std::string> names = p.image.ChannelNames();
+        for (int y = 0; y < p.image.Resolution().y; ++y)
+            for (int x = 0; x < p.image.Resolution().x; ++x)
+                for (int c = 0; c < p.image.NChannels(); ++c)
+                    if (!std::isfinite(p.image.GetChannel({x, y}, c)))
+                        throw std::runtime_error(p.file + ": pixel " + std::to_string(x) + ", " +
+                                                 std::to_string(y) + " " + names[size_t(c)] +
+                                                 " is not finite; kiln writes no such value, so "
+                                                 "the part is damaged");
         if (tiles) {
             if (Meta(p, "kiln:seed") != Meta(first, "kiln:seed"))
                 differ("seeds", Meta(first, "kiln:seed"), Meta(p, "kiln:seed"));
@@ -81,47 +94,74 @@ std::string SceneFileHash(const std::string& filename) {
     return hex;
 }
 
-Image MergeTiles(const std::vector<RenderPart>& parts, ImageMetadata* metadata) {
-    CheckConsistent(parts, true);
-    const RenderPart& first = parts[0];
-    Point2i res = FullResolution(first);
-    Image full(PixelFormat::Float, res, first.image.ChannelNames());
-    // Which part covers each pixel (-1: none)
-    std::vector<int> owner(size_t(res.x) * size_t(res.y), -1);
-    float seconds = 0;
-    for (size_t i = 0; i < parts.size(); ++i) {
-        const RenderPart& p = parts[i];
+namespace {
+
+// Whether the parts' pixel bounds tile the frame exactly: each inside it and of its image's
+// size, no two overlapping, no pixel left out. Works on the rectangles (rows of intervals for the
+// holes), so a frame that the parts' headers claim to be huge is refused before anything of its
+// size is allocated.
+void CheckTiling(const std::vector<RenderPart>& parts, Point2i res) {
+    std::vector<Bounds2i> bounds;
+    for (const RenderPart& p : parts) {
         Bounds2i b = PixelBounds(p);
         if (b.pMin.x < 0 || b.pMin.y < 0 || b.pMax.x > res.x || b.pMax.y > res.y ||
             p.image.Resolution() != Point2i(b.pMax.x - b.pMin.x, b.pMax.y - b.pMin.y))
             throw std::runtime_error(p.file + ": its pixels " + ToString(b) +
                                      " do not fit the frame");
-        for (int y = b.pMin.y; y < b.pMax.y; ++y)
-            for (int x = b.pMin.x; x < b.pMax.x; ++x) {
-                int& o = owner[size_t(y) * res.x + x];
-                if (o >= 0)
-                    throw std::runtime_error(p.file + " and " + parts[size_t(o)].file +
-                                             " overlap (both have pixel " + std::to_string(x) +
-                                             ", " + std::to_string(y) + ")");
-                o = int(i);
-                for (int c = 0; c < full.NChannels(); ++c)
-                    full.SetChannel({x, y}, c, p.image.GetChannel({x - b.pMin.x, y - b.pMin.y}, c));
-            }
-        seconds += p.metadata.renderTimeSeconds.value_or(0);
+        for (size_t o = 0; o < bounds.size(); ++o) {
+            Point2i lo(std::max(b.pMin.x, bounds[o].pMin.x), std::max(b.pMin.y, bounds[o].pMin.y));
+            Point2i hi(std::min(b.pMax.x, bounds[o].pMax.x), std::min(b.pMax.y, bounds[o].pMax.y));
+            if (lo.x < hi.x && lo.y < hi.y)
+                throw std::runtime_error(p.file + " and " + parts[o].file +
+                                         " overlap (both have pixel " + std::to_string(lo.x) +
+                                         ", " + std::to_string(lo.y) + ")");
+        }
+        bounds.push_back(b);
     }
+    // Holes, row by row: the gaps between the covering parts' intervals
     int64_t missing = 0;
     Bounds2i hole{{res.x, res.y}, {0, 0}};
-    for (int y = 0; y < res.y; ++y)
-        for (int x = 0; x < res.x; ++x)
-            if (owner[size_t(y) * res.x + x] < 0) {
-                ++missing;
+    std::vector<std::pair<int, int>> spans;
+    for (int y = 0; y < res.y; ++y) {
+        spans.clear();
+        for (const Bounds2i& b : bounds)
+            if (y >= b.pMin.y && y < b.pMax.y) spans.push_back({b.pMin.x, b.pMax.x});
+        std::sort(spans.begin(), spans.end());
+        int x = 0;
+        spans.push_back({res.x, res.x});
+        for (const auto& [x0, x1] : spans) {
+            if (x0 > x) {
+                missing += x0 - x;
                 hole.pMin = Point2i(std::min(hole.pMin.x, x), std::min(hole.pMin.y, y));
-                hole.pMax = Point2i(std::max(hole.pMax.x, x + 1), std::max(hole.pMax.y, y + 1));
+                hole.pMax = Point2i(std::max(hole.pMax.x, x0), std::max(hole.pMax.y, y + 1));
             }
+            x = std::max(x, x1);
+        }
+    }
     if (missing > 0)
         throw std::runtime_error(std::to_string(missing) + " of the frame's " +
                                  std::to_string(int64_t(res.x) * res.y) +
                                  " pixels are in no part (all within " + ToString(hole) + ")");
+}
+
+}  // namespace
+
+Image MergeTiles(const std::vector<RenderPart>& parts, ImageMetadata* metadata) {
+    CheckConsistent(parts, true);
+    const RenderPart& first = parts[0];
+    Point2i res = FullResolution(first);
+    CheckTiling(parts, res);
+    // The parts tile the frame: it holds no more pixels than they do
+    Image full(PixelFormat::Float, res, first.image.ChannelNames());
+    float seconds = 0;
+    for (const RenderPart& p : parts) {
+        Bounds2i b = PixelBounds(p);
+        for (int y = b.pMin.y; y < b.pMax.y; ++y)
+            for (int x = b.pMin.x; x < b.pMax.x; ++x)
+                for (int c = 0; c < full.NChannels(); ++c)
+                    full.SetChannel({x, y}, c, p.image.GetChannel({x - b.pMin.x, y - b.pMin.y}, c));
+        seconds += p.metadata.renderTimeSeconds.value_or(0);
+    }
     *metadata = first.metadata;
     metadata->pixelBounds.reset();
     metadata->fullResolution.reset();

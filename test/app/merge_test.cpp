@@ -6,8 +6,10 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -175,6 +177,70 @@ TEST(Merge, SamplesAreWeightedBySamplesPerPixel) {
     // The same seed twice is the same samples
     EXPECT_EQ(Kiln({"merge", "--samples", a, a, "-o", dir / "aa.exr"}), 1);
     EXPECT_FALSE(fs::exists(dir / "aa.exr"));
+}
+
+// Parts that no render of kiln's could have written are refused, with nothing written: a
+// non-finite pixel (an infinity here: Image::SetChannel stores NaN as 0, so a test cannot write
+// a NaN part; the check is the same), and headers that claim a frame far larger than the parts
+// (refused from the rectangles, before a frame of that size is allocated)
+TEST(Merge, DamagedAndOverclaimingPartsAreRefused) {
+    Dir dir;
+    auto part = [&](const std::string& name, Point2i full, Bounds2i bounds, float value) {
+        Point2i size(bounds.pMax.x - bounds.pMin.x, bounds.pMax.y - bounds.pMin.y);
+        Image im(PixelFormat::Float, size, {"R", "G", "B"});
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x)
+                for (int c = 0; c < 3; ++c)
+                    im.SetChannel({x, y}, c, x == 1 && y == 0 ? value : 0.5f);
+        ImageMetadata md;
+        md.samplesPerPixel = 8;
+        md.fullResolution = full;
+        md.pixelBounds = bounds;
+        md.strings["kiln:scene"] = "0123456789abcdef";
+        md.strings["kiln:seed"] = "1";
+        md.strings["kiln:savefp16"] = "false";
+        std::string file = dir / name;
+        im.Write(file, md);
+        RenderPart p;
+        p.file = file;
+        p.image = Image::Read(file, &p.metadata);
+        return p;
+    };
+    auto refusal = [&](const std::vector<RenderPart>& parts) {
+        ImageMetadata meta;
+        try {
+            MergeTiles(parts, &meta);
+        } catch (const std::runtime_error& e) {
+            return std::string(e.what());
+        }
+        return std::string("merged");
+    };
+    const Point2i full(4, 2);
+    RenderPart left = part("left.exr", full, {{0, 0}, {2, 2}}, 0.5f);
+    RenderPart right = part("right.exr", full, {{2, 0}, {4, 2}}, 0.5f);
+    EXPECT_EQ(refusal({left, right}), "merged");
+    for (float bad :
+         {std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()}) {
+        RenderPart damaged = part("damaged.exr", full, {{2, 0}, {4, 2}}, bad);
+        std::string why = refusal({left, damaged});
+        EXPECT_NE(why.find("damaged.exr: pixel 1, 0 R is not finite"), std::string::npos) << why;
+    }
+    // Four 2 x 2 tiles whose headers claim a 60000 x 60000 frame
+    std::vector<RenderPart> claims;
+    for (int t = 0; t < 4; ++t)
+        claims.push_back(part("claim" + std::to_string(t) + ".exr", Point2i(60000, 60000),
+                              {{2 * t, 0}, {2 * t + 2, 2}}, 0.5f));
+    std::string why = refusal(claims);
+    EXPECT_NE(why.find("3599999984 of the frame's 3600000000 pixels are in no part"),
+              std::string::npos)
+        << why;
+    // Through the command: nothing written
+    std::string out = dir / "out.exr";
+    std::vector<std::string> args = {"merge"};
+    for (const RenderPart& p : claims) args.push_back(p.file);
+    args.insert(args.end(), {"-o", out});
+    EXPECT_EQ(Kiln(args), 1);
+    EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace
