@@ -2,8 +2,10 @@
 // README "Glowing objects"):
 //   "float temperature" T | "texture temperature" "name"   kelvin, any float texture
 //   "string emission" "kirchhoff" | "additive" | "diffuse" | "none"
-// A material owns its temperature and model (a hot material); a shape's own values override
-// its material's, and an Attribute "shape" temperature applies to the shapes that follow.
+// A material's parameters give it a temperature and model (a hot material; scene creation reads
+// them, render/scene_create.cpp, the Material does not keep them); a shape's own values
+// override its material's, and an Attribute "shape" temperature applies to the shapes that
+// follow.
 #pragma once
 
 #include <optional>
