@@ -15,14 +15,14 @@ namespace kiln {
 
 namespace {
 
-constexpr char kMagic[] = "kiln checkpoint 1\n";
+constexpr char kMagic[] = "kiln checkpoint 2\n";
 
 std::string Header(const CheckpointIdentity& id, int completed) {
     std::ostringstream s;
-    s << kMagic << "scene " << id.scene << "\nframe " << id.frame << "\nseed " << id.seed
-      << "\nspp " << id.spp << "\nbounds " << id.pixelBounds.pMin.x << " " << id.pixelBounds.pMin.y
-      << " " << id.pixelBounds.pMax.x << " " << id.pixelBounds.pMax.y << "\ncompleted " << completed
-      << "\n\n";
+    s << kMagic << "scene " << id.scene << "\noptions " << id.options << "\nframe " << id.frame
+      << "\nseed " << id.seed << "\nspp " << id.spp << "\nbounds " << id.pixelBounds.pMin.x << " "
+      << id.pixelBounds.pMin.y << " " << id.pixelBounds.pMax.x << " " << id.pixelBounds.pMax.y
+      << "\ncompleted " << completed << "\n\n";
     return s.str();
 }
 
@@ -61,7 +61,7 @@ int ReadCheckpoint(const std::string& file, const CheckpointIdentity& id, RGBFil
     size_t at = header.find("completed ");
     int completed = at == std::string::npos ? 0 : std::atoi(header.c_str() + at + 10);
     if (completed <= 0 || completed >= id.spp || header != Header(id, completed)) {
-        *why = file + " is from another render (scene, frame, seed, spp or pixels differ)";
+        *why = file + " is from another render (scene, options, frame, seed, spp or pixels differ)";
         return 0;
     }
     if (!film.LoadState(std::string_view(bytes).substr(end + 2))) {

@@ -300,6 +300,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     Diagnostics diag(&std::cerr);
     std::unique_ptr<Scene> scene;
     std::vector<std::string> outputs;
+    std::string optionsKey;  // RenderOptionsKey: in the output's metadata and the checkpoints
     try {
         SceneBuilder builder(diag);
         ParseFile(builder, options.sceneFile, diag);
@@ -324,6 +325,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
             renderOptions.emitterPowerSampling =
                 ParseEmitterPowerSampling(*options.emitterSampling);
         if (options.wavelengths) renderOptions.singleWavelength = *options.wavelengths == 1;
+        optionsKey = RenderOptionsKey(renderOptions);
         scene = Scene::Create(builder.Description(), renderOptions, diag);
         diag.ReportRepeats();
         if (interruptRequested.load()) {
@@ -361,10 +363,10 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     // What identifies this render (its output's metadata, its checkpoints); --checkpoint:
     // resume from this render's checkpoint, and write one periodically
     std::string checkpoint;
-    CheckpointIdentity identity{SceneFileHash(options.sceneFile),
-                                frame ? std::to_string(*frame) : "", scene->job->sampler->Seed(),
-                                scene->job->sampler->SamplesPerPixel(),
-                                scene->job->film->PixelBounds()};
+    CheckpointIdentity identity{
+        SceneFileHash(options.sceneFile),       optionsKey,
+        frame ? std::to_string(*frame) : "",    scene->job->sampler->Seed(),
+        scene->job->sampler->SamplesPerPixel(), scene->job->film->PixelBounds()};
     if (options.checkpointSeconds && !outputs.empty()) {
         checkpoint = CheckpointFile(outputs[0]);
         std::string why;
@@ -411,6 +413,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     // What kiln merge checks parts against: the same scene (its file's bytes), frame and seed
     metadata.strings["kiln:seed"] = std::to_string(scene->job->sampler->Seed());
     metadata.strings["kiln:scene"] = identity.scene;
+    metadata.strings["kiln:options"] = optionsKey;
     if (frame) metadata.strings["kiln:frame"] = std::to_string(*frame);
     int status = 0;
     for (const std::string& out : outputs) {

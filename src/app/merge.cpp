@@ -49,6 +49,8 @@ void CheckConsistent(const std::vector<RenderPart>& parts, bool tiles) {
             throw std::runtime_error(p.file + " was not rendered by kiln (no kiln:scene)");
         if (Meta(p, "kiln:scene") != Meta(first, "kiln:scene"))
             differ("scenes", Meta(first, "kiln:scene"), Meta(p, "kiln:scene"));
+        if (Meta(p, "kiln:options") != Meta(first, "kiln:options"))
+            differ("render options", Meta(first, "kiln:options"), Meta(p, "kiln:options"));
         if (Meta(p, "kiln:frame") != Meta(first, "kiln:frame"))
             differ("frames", Meta(first, "kiln:frame"), Meta(p, "kiln:frame"));
         if (Meta(p, "kiln:exposureEV") != Meta(first, "kiln:exposureEV"))

@@ -10,9 +10,10 @@
 // then written as the whole-frame render would have been (half float if every part asked for
 // it and no value passes 65504), so it is bit-identical to a single-process render of the same
 // scene, seed and spp. Refused, with nothing written: parts from different scenes (kiln:scene,
-// the hash of the scene file's bytes), frames, seeds, sample counts, exposures, resolutions or
-// channels; partial (interrupted) tiles; overlapping tiles (both named); missing pixels (how
-// many, and the box around them).
+// the hash of the scene file's bytes), render options that change pixels (kiln:options,
+// render/render_options.h: RenderOptionsKey), frames, seeds, sample counts, exposures,
+// resolutions or channels; parts with a non-finite pixel; partial (interrupted) tiles;
+// overlapping tiles (both named); missing pixels (how many, and the box around them).
 //
 // --samples: the parts cover the same pixels with different seeds (the same seed twice is the
 // same samples and is refused); the result is sum(spp_i v_i) / sum(spp_i) with spp = sum(spp_i):

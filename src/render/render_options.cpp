@@ -23,4 +23,25 @@ std::optional<bool> ParseEmitterPowerSampling(std::string_view name) {
     return std::nullopt;
 }
 
+std::string RenderOptionsKey(const RenderOptions& o) {
+    auto optional = [](const auto& v, auto text) { return v ? std::string(text(*v)) : ""; };
+    std::string key;
+    key += "emission=" + optional(o.emission, [](EmissionModel m) { return EmissionModelName(m); });
+    key += ";layeredmis=" + std::string(o.layeredMIS == LayeredMIS::PbrtV4 ? "pbrt-v4" : "kiln");
+    key += ";volpath=" + std::string(o.genericVolumes ? "1" : "0");
+    key += ";stokes=" + optional(o.stokes, [](bool b) { return b ? "1" : "0"; });
+    key += ";lightsampler=" + optional(o.lightSelection, [](LightSelection s) {
+               const char* names[] = {"bvh", "power", "uniform", "area"};
+               return names[int(s)];
+           });
+    key += ";strategy=" + optional(o.strategy, [](LightStrategy s) {
+               const char* names[] = {"mis", "light", "bsdf"};
+               return names[int(s)];
+           });
+    key += ";emittersampling=" +
+           optional(o.emitterPowerSampling, [](bool b) { return b ? "power" : "shape"; });
+    key += ";wavelengths=" + optional(o.singleWavelength, [](bool b) { return b ? "1" : "4"; });
+    return key;
+}
+
 }  // namespace kiln

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "base/vecmath.h"
@@ -62,5 +63,12 @@ struct RenderOptions {
     std::optional<bool> emitterPowerSampling;
     std::optional<bool> singleWavelength;  // one wavelength per path rather than four
 };
+
+// The options that change what a render's pixels are, as canonical text (unset ones empty: the
+// scene file decides, and it is identified apart): emission model, coated MIS weights, generic
+// volumetric integrator, Stokes layers, light selection, strategy, emitter sampling,
+// wavelengths per path. Two renders with different keys must not be merged or resumed from one
+// another (app/merge.h, app/checkpoint.h).
+std::string RenderOptionsKey(const RenderOptions& options);
 
 }  // namespace kiln

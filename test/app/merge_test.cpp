@@ -133,6 +133,12 @@ TEST(Merge, WrongMergesAreRefusedAndWriteNothing) {
     std::string other = WriteScene(dir, false, "other.pbrt");
     std::vector<std::string> otherTiles = RenderTiles(dir, other, "other");
     EXPECT_EQ(merge({tiles[0], tiles[1], tiles[2], otherTiles[3]}), 1);
+    // The last tile rendered with another emission model (same scene, seed and pixels)
+    std::string additive = dir / "additive3.exr";
+    ASSERT_EQ(Kiln({scene, "--seed", "3", "--pixelbounds", "17", "24", "7", "20", "--emission",
+                    "additive", "-o", additive}),
+              0);
+    EXPECT_EQ(merge({tiles[0], tiles[1], tiles[2], additive}), 1);
     EXPECT_FALSE(fs::exists(out));
     // The library says what is wrong
     std::vector<RenderPart> parts;

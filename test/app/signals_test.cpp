@@ -182,6 +182,27 @@ TEST(Checkpoints, AKilledRenderResumesBitIdentical) {
         // Done: no checkpoint is left
         EXPECT_EQ(dir.Files(), (std::vector<std::string>{"out.exr", "ref.exr", "scene.pbrt"}));
     }
+    // A checkpoint of the same scene, seed and pixels rendered with other options (another
+    // emission model) is another render: ignored, with a warning
+    {
+        Child c = Spawn([&] {
+            std::vector<std::string> args = common;
+            args.insert(args.end(), {"-o", out, "--checkpoint", "0", "--verbose"});
+            return args;
+        }());
+        std::string seen;
+        ASSERT_TRUE(ReadUntil(c.stderrFd, "checkpoint at", &seen));
+        kill(c.pid, SIGKILL);
+        int status = 0;
+        waitpid(c.pid, &status, 0);
+        close(c.stderrFd);
+        ASSERT_TRUE(fs::exists(out + ".checkpoint"));
+        std::string other = run({"-o", out, "--checkpoint", "0", "--emission", "additive"});
+        EXPECT_NE(other.find("another render"), std::string::npos) << other;
+        EXPECT_EQ(other.find("resuming from"), std::string::npos) << other;
+        // (the scene has nothing hot, so the additive render is the same image)
+        EXPECT_EQ(testing::Pixels(out), testing::Pixels(ref));
+    }
     // A damaged checkpoint, or one of another render, is ignored (with a warning): the render
     // starts over and still ends the same
     std::ofstream(out + ".checkpoint") << "kiln checkpoint 1\nscene 0\n\ngarbage";

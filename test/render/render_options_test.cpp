@@ -62,6 +62,30 @@ TEST(RenderOptions, WinOverTheSceneFileAndLeaveTheDescriptionAsParsed) {
     EXPECT_FALSE(desc.floatTextures[0].second.parameters.Has("time"));
 }
 
+// The key that identifies a render's pixel-changing options (merges and checkpoints compare it)
+TEST(RenderOptions, EveryPixelChangingOptionChangesTheKey) {
+    std::vector<RenderOptions> variants(9);
+    variants[1].emission = EmissionModel::Additive;
+    variants[2].emission = EmissionModel::Kirchhoff;  // explicit, not the scene file's
+    variants[3].layeredMIS = LayeredMIS::PbrtV4;
+    variants[4].genericVolumes = true;
+    variants[5].stokes = false;
+    variants[6].lightSelection = LightSelection::Uniform;
+    variants[7].strategy = LightStrategy::BSDFOnly;
+    variants[8].singleWavelength = true;
+    for (size_t i = 0; i < variants.size(); ++i)
+        for (size_t j = 0; j < i; ++j)
+            EXPECT_NE(RenderOptionsKey(variants[i]), RenderOptionsKey(variants[j]))
+                << i << " " << j;
+    // What does not change pixels does not change the key
+    RenderOptions job;
+    job.seed = 4;
+    job.samplesPerPixel = 9;
+    job.cropWindow = Bounds2f{{0, 0}, {0.5f, 0.5f}};
+    job.genericFootprints = job.genericAOVs = true;
+    EXPECT_EQ(RenderOptionsKey(job), RenderOptionsKey(RenderOptions()));
+}
+
 TEST(RenderOptions, TheFrameTimeReachesTimeDependentTextures) {
     // The cooling texture at the options' time equals the one whose file gives that time
     auto temperature = [](const std::string& extra, std::optional<Float> time) {
