@@ -387,7 +387,13 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
             }
         };
     }
-    RenderStats stats = Render(*scene, settings);
+    RenderStats stats;
+    try {
+        stats = Render(*scene, settings);
+    } catch (const std::exception& e) {
+        std::cerr << "kiln: error: " << e.what() << "; nothing written\n";
+        return 1;
+    }
 
     if (int64_t bad = scene->job->film->NonFiniteSampleCount(); bad > 0) {
         Point2i p = scene->job->film->FirstNonFinitePixel().value_or(Point2i(-1, -1));

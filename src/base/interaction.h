@@ -79,11 +79,12 @@ struct SurfaceInteraction : Interaction {
     MediumInterface mediumInterface;
 
     SurfaceInteraction() = default;
-    // pbrt-v4 convention: n = normalize(cross(dpdu, dpdv)), flipped when flipNormal is true
-    // (ReverseOrientation xor handedness swap); shading frame initialised to the geometric one.
+    // pbrt-v4 convention: n = normalize(cross(dpdu, dpdv)) (in double), flipped when flipNormal is
+    // true (ReverseOrientation xor handedness swap); shading frame initialised to the geometric
+    // one.
     SurfaceInteraction(Point3f p, Point2f uv, Vector3f wo, Vector3f dpdu, Vector3f dpdv,
                        Normal3f dndu, Normal3f dndv, Float time, bool flipNormal)
-        : Interaction(p, Normal3f(Normalize(Cross(dpdu, dpdv))), uv, wo, time),
+        : Interaction(p, Normal3f(NormalizedCross(dpdu, dpdv)), uv, wo, time),
           dpdu(dpdu),
           dpdv(dpdv),
           dndu(dndu),

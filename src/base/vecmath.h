@@ -213,13 +213,39 @@ template <typename T>
 inline Float LengthSquared(const T& v) {
     return Dot(v, v);
 }
+// Length and Normalize of vectors whose squared length leaves float's normal range (a
+// component beyond ~1e19 or below ~1e-19: a sphere of radius 1e10 has dp/du near 1e10 and a
+// cross product of its derivatives near 1e20; a hit within 1e-22 of a sphere's pole has dp/du
+// near 1e-22) square in double; in float they would come out infinite or zero and the
+// direction zero or NaN. Other vectors take the float path, bit for bit as before.
+template <typename T>
+inline double LengthDouble(const T& v) {
+    return std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
+}
+constexpr Float kMinFloatSquaredLength = 1e-36f, kMaxFloatSquaredLength = 1e36f;
 template <typename T>
 inline Float Length(const T& v) {
-    return std::sqrt(LengthSquared(v));
+    Float l2 = LengthSquared(v);
+    if (l2 > kMinFloatSquaredLength && l2 < kMaxFloatSquaredLength) return std::sqrt(l2);
+    return Float(LengthDouble(v));
 }
 template <typename T>
 inline T Normalize(const T& v) {
-    return v / Length(v);
+    Float l2 = LengthSquared(v);
+    if (l2 > kMinFloatSquaredLength && l2 < kMaxFloatSquaredLength) return v / std::sqrt(l2);
+    double length = LengthDouble(v);
+    return T(Float(v.x / length), Float(v.y / length), Float(v.z / length));
+}
+// Normalize(Cross(a, b)) without the cross product leaving float range in between (edges
+// near 1e-30 have a cross product near 1e-60, which is 0 in float).
+inline Vector3f NormalizedCross(const Vector3f& a, const Vector3f& b) {
+    double ax = a.x, ay = a.y, az = a.z, bx = b.x, by = b.y, bz = b.z;
+    double x = ay * bz - az * by, y = az * bx - ax * bz, z = ax * by - ay * bx;
+    double l2 = x * x + y * y + z * z;
+    if (l2 > kMinFloatSquaredLength && l2 < kMaxFloatSquaredLength)
+        return Normalize(Vector3f(Float(x), Float(y), Float(z)));
+    double length = std::sqrt(l2);
+    return {Float(x / length), Float(y / length), Float(z / length)};
 }
 inline Float Distance(Point3f a, Point3f b) { return Length(a - b); }
 inline Float DistanceSquared(Point3f a, Point3f b) { return LengthSquared(a - b); }
@@ -349,6 +375,21 @@ inline Bounds3f Union(const Bounds3f& a, const Bounds3f& b) {
     r.pMin = Min(a.pMin, b.pMin);
     r.pMax = Max(a.pMax, b.pMax);
     return r;
+}
+
+// The largest render-space coordinate kiln traces rays at. Embree refuses ray origins and
+// directions with a component beyond 1.844e18; a shadow ray runs from a surface point to a
+// point up to twice the scene's bounding radius beyond it (infinite and distant lights), so
+// shapes and camera rays stay within a tenth of that. Shapes beyond it are skipped at their
+// directive, cameras that would start rays beyond it are errors at theirs.
+constexpr Float kMaxRenderCoordinate = 1e17f;
+// Whether b lies within +-kMaxRenderCoordinate on every axis (false for NaN or infinite bounds).
+inline bool InRenderRange(const Bounds3f& b) {
+    for (Point3f p : {b.pMin, b.pMax})
+        if (!(std::abs(p.x) <= kMaxRenderCoordinate && std::abs(p.y) <= kMaxRenderCoordinate &&
+              std::abs(p.z) <= kMaxRenderCoordinate))
+            return false;
+    return true;
 }
 
 // Rays: origin, unit (or not) direction, time in [0, 1] of the shutter interval.

@@ -398,7 +398,11 @@ void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<Sce
         }
         scene.aggregate->AddInstance(it->second, inst.renderFromInstance);
     }
-    scene.aggregate->Commit();
+    for (int i : scene.aggregate->Commit())
+        diag.Warn(desc.instances[size_t(i)].loc,
+                  "instance of \"" + desc.instances[size_t(i)].name +
+                      "\" under a singular transform, or one that takes it or the scene's rays "
+                      "beyond the range kiln traces rays in; skipped");
 }
 
 // Light selection for next-event estimation (after PreprocessLights: the power of distant and

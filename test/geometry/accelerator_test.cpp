@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
 #include "test_util.h"
 
 namespace kiln {
@@ -105,6 +109,40 @@ TEST(Accelerator, InstancesArePlaced) {
     test::ExpectNearV(h->intr.n, Normal3f(0, 0, 1), 1e-5f);
     EXPECT_FALSE(accel.Intersect(Ray(Point3f(0, 0, -5), Vector3f(0, 0, 1))));
     EXPECT_TRUE(accel.IntersectP(Ray(Point3f(-8.5f, 1.5f, -5), Vector3f(0, 0, 1))));
+}
+
+// Embree aborts the process on such rays; kiln reports them as a bug instead
+TEST(Accelerator, InvalidRaysAreRefusedNotTraced) {
+    Scene s;
+    Accelerator accel;
+    std::vector<Shape> quadric = {Shape(&s.sphere)};
+    accel.Add(quadric, Tag(1), {}, nullptr);
+    accel.Commit();
+    Float nan = std::numeric_limits<Float>::quiet_NaN();
+    EXPECT_THROW(accel.Intersect(Ray(Point3f(0, 0, 0), Vector3f(nan, 0, 1))), std::logic_error);
+    EXPECT_THROW(accel.IntersectP(Ray(Point3f(1e19f, 0, 0), Vector3f(0, 0, 1))), std::logic_error);
+    EXPECT_THROW(accel.Intersect(Ray(Point3f(0, 0, 0), Vector3f(0, 0, 1)), nan), std::logic_error);
+    EXPECT_TRUE(accel.Intersect(Ray(Point3f(0, 0, 0), Vector3f(0, 0, 1))));
+}
+
+TEST(Accelerator, InstancesThatCannotBeTracedAreLeftOut) {
+    Accelerator accel;
+    int def = accel.NewInstanceDefinition();
+    Transform id;
+    Sphere unit(&id, &id, false, 1, -1, 1, 360);
+    std::vector<Shape> shapes = {Shape(&unit)};
+    accel.AddToInstanceDefinition(def, shapes, Tag(3), nullptr);
+    accel.AddInstance(def, Translate(Vector3f(0, 0, 5)));
+    accel.AddInstance(def, Scale(1e-30f, 1e-30f, 1e-30f));     // rays 1e30 times too long
+    accel.AddInstance(def, Translate(Vector3f(2e17f, 0, 0)));  // beyond the range
+    accel.AddInstance(def, Scale(0, 1, 1));                    // singular
+    accel.AddInstance(def, Translate(Vector3f(0, 0, -5)) * Scale(1e-3f, 1e-3f, 1e-3f));
+    EXPECT_EQ(accel.Commit(), (std::vector<int>{1, 2, 3}));
+    EXPECT_TRUE(accel.Intersect(Ray(Point3f(0, 0, 0), Vector3f(0, 0, 1))));
+    auto small = accel.Intersect(Ray(Point3f(0, 0, 0), Vector3f(0, 0, -1)));
+    ASSERT_TRUE(small);
+    EXPECT_NEAR(small->tHit, 5 - 1e-3f, 1e-5f);
+    EXPECT_FALSE(accel.Intersect(Ray(Point3f(0, 0, 0), Vector3f(1, 0, 0))));
 }
 
 TEST(Accelerator, NoSelfIntersectionFarFromOrigin) {

@@ -1,6 +1,8 @@
 // Camera creation from scene parameters (pbrt-v4 names and defaults).
 #include "core/camera/camera.h"
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -31,8 +33,12 @@ Bounds2f ScreenWindow(const ParameterDictionary& params, Point2i fullResolution)
                              "\"screenwindow\" should have four values");
         screen.pMin = Point2f(sw[0], sw[2]);
         screen.pMax = Point2f(sw[1], sw[3]);
-        if (screen.pMin.x == screen.pMax.x || screen.pMin.y == screen.pMax.y)
-            throw SceneError(params.Loc("screenwindow"), "\"screenwindow\" is degenerate");
+        // Raster coordinates divide by the window's width and height
+        Float w = std::abs(screen.pMax.x - screen.pMin.x),
+              h = std::abs(screen.pMax.y - screen.pMin.y);
+        if (!(std::isfinite(w) && std::isfinite(h) && std::isfinite(1 / w) && std::isfinite(1 / h)))
+            throw SceneError(params.Loc("screenwindow"),
+                             "\"screenwindow\" is degenerate or not finite");
     }
     return screen;
 }
@@ -62,10 +68,29 @@ Camera Camera::Create(const std::string& name, const ParameterDictionary& params
     }
     Float lensRadius = params.GetOneFloat("lensradius", 0.f);
     Float focalDistance = params.GetOneFloat("focaldistance", 1e6f);
-    if (lensRadius < 0) throw SceneError(params.Loc("lensradius"), "\"lensradius\" is negative");
-    if (lensRadius > 0 && !(focalDistance > 0))
-        throw SceneError(params.Loc("focaldistance"), "\"focaldistance\" must be positive");
+    if (!(lensRadius >= 0 && std::isfinite(lensRadius)))
+        throw SceneError(params.Loc("lensradius"),
+                         "\"lensradius\" must be finite and not negative");
+    if (lensRadius > 0 && !(focalDistance > 0 && std::isfinite(focalDistance)))
+        throw SceneError(params.Loc("focaldistance"),
+                         "\"focaldistance\" must be finite and positive");
     Bounds2f screen = ScreenWindow(params, fullResolution);
+    // Rays start on the lens around the camera (perspective) or on the screen window
+    // (orthographic); they must start within the range kiln traces rays in
+    Float reach = lensRadius;
+    if (type == "orthographic")
+        reach += std::max({std::abs(screen.pMin.x), std::abs(screen.pMax.x),
+                           std::abs(screen.pMin.y), std::abs(screen.pMax.y)});
+    Bounds3f start(Point3f(-reach, -reach, 0), Point3f(reach, reach, 0));
+    if (!InRenderRange(cameraTransform.RenderFromCamera()(start))) {
+        const char* cause = lensRadius > kMaxRenderCoordinate / 2 ? "lensradius"
+                            : params.Has("screenwindow")          ? "screenwindow"
+                                                                  : nullptr;
+        throw SceneError(cause ? params.Loc(cause) : loc,
+                         "camera rays would start beyond +-1e17 (render space), the range kiln "
+                         "traces rays in",
+                         cause ? cause : name);
+    }
 
     if (type == "orthographic")
         return arena.New<OrthographicCamera>(cameraTransform, shutterOpen, shutterClose, screen,

@@ -1,12 +1,12 @@
 #include "core/geometry/accelerator.h"
 
 #include <atomic>
-#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "base/rng.h"
@@ -35,6 +35,7 @@ struct GeomRecord {
 struct SceneBVH {
     RTCScene scene = nullptr;
     std::vector<std::unique_ptr<GeomRecord>> records;  // indexed by geomID
+    Bounds3f bounds;                                   // of everything added
 };
 
 // Intersection context carrying the closest user-geometry hit back from the callbacks.
@@ -168,6 +169,12 @@ struct Accelerator::Impl {
     size_t primitives = 0;  // added to the top-level scene and to instance definitions
     SceneBVH top;
     std::vector<SceneBVH> definitions;
+    struct PlacedInstance {
+        unsigned geomID;  // in top; RTC_INVALID_GEOMETRY_ID for an empty definition
+        Transform renderFromInstance;
+        Bounds3f definitionBounds;
+    };
+    std::vector<PlacedInstance> instances;
     bool committed = false;
 
     SceneBVH NewScene() {
@@ -187,6 +194,7 @@ struct Accelerator::Impl {
     void AddShapes(SceneBVH& s, std::span<const Shape> shapes, const Material* material,
                    std::span<const int> areaLights, const ThermalEmission* thermal,
                    MediumInterface media, const AlphaMask* alpha);
+    std::vector<int> RemoveUntraceableInstances();
 };
 
 // Adding shapes
@@ -195,6 +203,7 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
                                   const ThermalEmission* thermal, MediumInterface media,
                                   const AlphaMask* alpha) {
     primitives += shapes.size();
+    for (const Shape& shape : shapes) s.bounds = Union(s.bounds, shape.Bounds());
     bool haveLights = !areaLights.empty();
     // Triangles grouped by mesh (first-seen order), everything else as one user geometry.
     std::vector<std::pair<const TriangleMesh*, std::vector<uint32_t>>> meshes;
@@ -322,7 +331,10 @@ void Accelerator::AddToInstanceDefinition(int definition, std::span<const Shape>
 
 void Accelerator::AddInstance(int definition, const Transform& renderFromInstance) {
     SceneBVH& def = impl->definitions.at(definition);
+    // Every call gets an entry, so that Commit can name instances by their call order
+    impl->instances.push_back({RTC_INVALID_GEOMETRY_ID, renderFromInstance, def.bounds});
     if (def.records.empty()) return;
+    impl->instances.back().geomID = unsigned(impl->top.records.size());
     auto rec = std::make_unique<GeomRecord>();
     rec->kind = GeomRecord::Kind::Instance;
     rec->renderFromInstance = renderFromInstance;
@@ -345,6 +357,7 @@ void Accelerator::AddCurves(const CurveSet& curves, const Material* material,
     int n = curves.NumSegments();
     if (n == 0) return;
     impl->primitives += size_t(n);
+    s.bounds = Union(s.bounds, curves.Bounds());
     auto rec = std::make_unique<GeomRecord>();
     rec->kind = GeomRecord::Kind::Curves;
     rec->curves = &curves;
@@ -376,7 +389,8 @@ void Accelerator::AddCurves(const CurveSet& curves, const Material* material,
     impl->Attach(s, g, std::move(rec));
 }
 
-void Accelerator::Commit() {
+std::vector<int> Accelerator::Commit() {
+    std::vector<int> skipped = impl->RemoveUntraceableInstances();
     // Large scenes trade a little traversal speed for half the BVH memory
     if (Compact()) {
         for (SceneBVH& d : impl->definitions)
@@ -386,22 +400,65 @@ void Accelerator::Commit() {
     for (SceneBVH& d : impl->definitions) rtcCommitScene(d.scene);
     rtcCommitScene(impl->top.scene);
     impl->committed = true;
+    return skipped;
+}
+
+// Embree traces an instance in its own space: rays go through the inverse transform, and must
+// stay within its range there too. Rays start and end within `reach` of the render-space
+// origin (the camera, the scene, and points two scene radii beyond it for infinite and
+// distant lights), so an instance's rays stay within
+// |inverse linear part| (2 reach) + |inverse translation|.
+std::vector<int> Accelerator::Impl::RemoveUntraceableInstances() {
+    // The scene: the top-level shapes and the instances that are in range themselves
+    std::vector<bool> traceable(instances.size());
+    Bounds3f scene = top.bounds;
+    for (size_t i = 0; i < instances.size(); ++i) {
+        const PlacedInstance& inst = instances[i];
+        if (inst.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+        Bounds3f b = inst.renderFromInstance(inst.definitionBounds);
+        traceable[i] = !inst.renderFromInstance.IsSingular() && InRenderRange(b);
+        if (traceable[i]) scene = Union(scene, b);
+    }
+    auto maxAbs = [](Point3f p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}); };
+    double reach = scene.IsEmpty() ? 0 : 4.0 * std::max(maxAbs(scene.pMin), maxAbs(scene.pMax));
+    std::vector<int> skipped;
+    for (size_t i = 0; i < instances.size(); ++i) {
+        const PlacedInstance& inst = instances[i];
+        if (inst.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+        if (traceable[i]) {
+            const SquareMatrix4& inv = inst.renderFromInstance.InverseMatrix();
+            double linear = 0, translation = 0;
+            for (int r = 0; r < 3; ++r) {
+                linear = std::max(linear, double(std::abs(inv.m[r][0])) + std::abs(inv.m[r][1]) +
+                                              std::abs(inv.m[r][2]));
+                translation = std::max(translation, double(std::abs(inv.m[r][3])));
+            }
+            traceable[i] = linear * 2 * reach + translation <= 1e18;  // Embree: 1.844e18
+        }
+        if (!traceable[i]) {
+            rtcDetachGeometry(top.scene, inst.geomID);
+            skipped.push_back(int(i));
+        }
+    }
+    return skipped;
 }
 
 // Ray queries
-// Rays reach Embree finite (its own assertion aborts otherwise): causes are fixed where they
-// arise (parameters validated at load, shapes with non-finite extents dropped); debug builds
-// check here
-static void AssertFiniteRay(const Ray& ray, Float tMax) {
-    assert(IsFinite(ray.o.x) && IsFinite(ray.o.y) && IsFinite(ray.o.z));
-    assert(IsFinite(ray.d.x) && IsFinite(ray.d.y) && IsFinite(ray.d.z));
-    assert(!(tMax < 0) && !std::isnan(tMax));
-    (void)ray;
-    (void)tMax;
+static void CheckRayForEmbree(const Ray& ray, Float tMax) {
+    auto valid = [](Float v) { return std::abs(v) <= 1.844e18f; };
+    if (valid(ray.o.x) && valid(ray.o.y) && valid(ray.o.z) && valid(ray.d.x) && valid(ray.d.y) &&
+        valid(ray.d.z) && tMax >= 0)
+        return;
+    char text[256];
+    std::snprintf(text, sizeof(text),
+                  "internal error: a ray with origin (%g, %g, %g), direction (%g, %g, %g) and "
+                  "tMax %g reached the ray tracer",
+                  ray.o.x, ray.o.y, ray.o.z, ray.d.x, ray.d.y, ray.d.z, tMax);
+    throw std::logic_error(text);
 }
 
 RTCRayHit MakeEmbreeRayHit(const Ray& ray, Float tMax) {
-    AssertFiniteRay(ray, tMax);
+    CheckRayForEmbree(ray, tMax);
     RTCRayHit rh;
     rh.ray.org_x = ray.o.x, rh.ray.org_y = ray.o.y, rh.ray.org_z = ray.o.z;
     rh.ray.dir_x = ray.d.x, rh.ray.dir_y = ray.d.y, rh.ray.dir_z = ray.d.z;
@@ -464,7 +521,7 @@ std::optional<ShapeIntersection> Accelerator::Intersect(const Ray& ray, Float tM
 bool Accelerator::IntersectP(const Ray& ray, Float tMax) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    AssertFiniteRay(ray, tMax);
+    CheckRayForEmbree(ray, tMax);
     RTCRay r;
     r.org_x = ray.o.x, r.org_y = ray.o.y, r.org_z = ray.o.z;
     r.dir_x = ray.d.x, r.dir_y = ray.d.y, r.dir_z = ray.d.z;

@@ -56,14 +56,18 @@ class Accelerator {
     void AddToInstanceDefinition(int definition, std::span<const Shape> shapes,
                                  const Material* material, const ThermalEmission* thermal,
                                  MediumInterface media = {}, const AlphaMask* alpha = nullptr);
+    // Places a definition.
     void AddInstance(int definition, const Transform& renderFromInstance);
     // A curve (curve.h) as Embree curve primitives, at the top level (definition -1) or in an
     // instance definition; it must outlive the accelerator. Curves are not lights.
     void AddCurves(const CurveSet& curves, const Material* material, const ThermalEmission* thermal,
                    MediumInterface media = {}, const AlphaMask* alpha = nullptr,
                    int definition = -1);
-    // Builds the BVHs; call once after everything has been added.
-    void Commit();
+    // Builds the BVHs; call once after everything has been added. Returns the instances (by
+    // the order of their AddInstance calls) left out because rays cannot be traced in their
+    // space: a singular transform, or one that takes them, or the scene's rays in their own
+    // space, beyond the range Embree accepts.
+    std::vector<int> Commit();
 
     // Closest hit with t in (0, tMax), t in the parametric units of ray.
     std::optional<ShapeIntersection> Intersect(const Ray& ray, Float tMax = Infinity) const;

@@ -286,6 +286,12 @@ const CurveSet* CurveSet::Create(const Transform& renderFromObject, bool reverse
         else
             set->AddSegment(bez, w0, w1);
     }
+    // Width included: Embree traces curves as the tubes or ribbons the widths make
+    if (!InRenderRange(set->Bounds()))
+        throw SceneError(at("P"),
+                         "curve reaches beyond +-1e17 (render space), the range kiln traces "
+                         "rays in",
+                         "P");
     return set->NumSegments() > 0 ? set : nullptr;
 }
 

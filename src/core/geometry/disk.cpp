@@ -37,7 +37,7 @@ std::optional<std::pair<Float, Point3f>> Disk::BasicIntersect(const Ray& r, Floa
 SurfaceInteraction Disk::InteractionFromHit(Point3f pHit, Vector3f woObject, Float time) const {
     Float phi = std::atan2(pHit.y, pHit.x);
     if (phi < 0) phi += 2 * Pi;
-    Float rHit = std::sqrt(Sqr(pHit.x) + Sqr(pHit.y));
+    Float rHit = std::hypot(pHit.x, pHit.y);  // no underflow next to the centre
     Float u = phi / phiMax, v = (radius - rHit) / (radius - innerRadius);
     Vector3f dpdu(-phiMax * pHit.y, phiMax * pHit.x, 0);
     Vector3f dpdv = rHit > 0 ? Vector3f(pHit.x, pHit.y, 0) * (innerRadius - radius) / rHit

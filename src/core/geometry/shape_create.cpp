@@ -1,5 +1,6 @@
 // Shape::Create: shapes from "Shape" directives, with pbrt-v4 parameter names and defaults.
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "core/geometry/ply_reader.h"
@@ -377,19 +378,20 @@ std::vector<Shape> Shape::Create(const std::string& name, const Transform* rende
     std::vector<Shape> shapes =
         CreateShapes(name, renderFromObject, objectFromRender, reverseOrientation, params, loc,
                      arena, diag, displacement);
-    // Nothing with a non-finite extent reaches the accelerator (vertices or radii that
-    // overflow float, e.g. 1e30 under a Scale of 1e30)
+    // Nothing beyond the range kiln traces rays in reaches the accelerator (vertices or radii
+    // that overflow float, e.g. 1e30 under a Scale of 1e30, or merely pass 1e17)
     size_t kept = 0;
     for (const Shape& shape : shapes) {
-        Bounds3f b = shape.Bounds();
-        if (IsFinite(b.pMin.x) && IsFinite(b.pMin.y) && IsFinite(b.pMin.z) && IsFinite(b.pMax.x) &&
-            IsFinite(b.pMax.y) && IsFinite(b.pMax.z))
-            shapes[kept++] = shape;
+        if (InRenderRange(shape.Bounds())) shapes[kept++] = shape;
     }
-    if (kept < shapes.size())
+    if (kept < shapes.size()) {
+        char limit[32];
+        std::snprintf(limit, sizeof(limit), "%g", double(kMaxRenderCoordinate));
         diag.Warn(loc, std::to_string(shapes.size() - kept) + " of " +
                            std::to_string(shapes.size()) + " \"" + name +
-                           "\" primitives extend beyond float range; skipped");
+                           "\" primitives extend beyond float range or +-" + limit +
+                           " (render space), the range kiln traces rays in; skipped");
+    }
     shapes.resize(kept);
     return shapes;
 }

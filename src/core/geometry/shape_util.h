@@ -25,9 +25,13 @@ inline T SafeNormalize(const T& v) {
 inline void WeingartenNormalDerivatives(Vector3f dpdu, Vector3f dpdv, Vector3f d2Pduu,
                                         Vector3f d2Pduv, Vector3f d2Pdvv, Normal3f* dndu,
                                         Normal3f* dndv) {
-    double E = Dot(dpdu, dpdu), F = Dot(dpdu, dpdv), G = Dot(dpdv, dpdv);
+    // In double: E G reaches 1e40 for a sphere of radius 1e10
+    auto dot = [](Vector3f a, Vector3f b) {
+        return double(a.x) * b.x + double(a.y) * b.y + double(a.z) * b.z;
+    };
+    double E = dot(dpdu, dpdu), F = dot(dpdu, dpdv), G = dot(dpdv, dpdv);
     Vector3f N = SafeNormalize(Cross(dpdu, dpdv));
-    double e = Dot(N, d2Pduu), f = Dot(N, d2Pduv), g = Dot(N, d2Pdvv);
+    double e = dot(N, d2Pduu), f = dot(N, d2Pduv), g = dot(N, d2Pdvv);
     double EGF2 = E * G - F * F;
     double inv = EGF2 == 0 ? 0 : 1 / EGF2;
     *dndu = Normal3f(Float((f * F - e * G) * inv) * dpdu + Float((e * F - f * E) * inv) * dpdv);

@@ -64,7 +64,8 @@ SurfaceInteraction Sphere::InteractionFromHit(Point3f pHit, Vector3f woObject, F
     Float u = phi / phiMax;
     Float cosTheta = pHit.z / radius, theta = SafeACos(cosTheta);
     Float v = (theta - thetaZMin) / (thetaZMax - thetaZMin);
-    Float zRadius = std::sqrt(Sqr(pHit.x) + Sqr(pHit.y));
+    // hypot: the sum of squares underflows within ~1e-19 of the poles (fov 1e-20 hits them)
+    Float zRadius = std::hypot(pHit.x, pHit.y);
     Float cosPhi = pHit.x / zRadius, sinPhi = pHit.y / zRadius;
     Vector3f dpdu(-phiMax * pHit.y, phiMax * pHit.x, 0);
     Float sinTheta = SafeSqrt(1 - Sqr(cosTheta));
