@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "media/vdb_file.h"
+#include "spectral/planck.h"
 #include "thermal/thermal_properties.h"
 
 namespace kiln {
@@ -76,7 +77,14 @@ MediumEmission ReadGridEmission(const TextureParameterDictionary& params,
     Float tScale = params.GetOneFloat("temperaturescale", 1);
     if (!temperature.Empty()) {
         if (params.Has("emission")) {
-            // kiln: kelvin, thermal emission in absolute units
+            // kiln: kelvin, thermal emission in absolute units, up to kMaxRenderTemperature
+            Float hottest = temperature.MaxValue(Bounds3f(Point3f(0, 0, 0), Point3f(1, 1, 1)),
+                                                 [&](Float T) { return (T - offset) * tScale; });
+            if (!(hottest <= kMaxRenderTemperature))
+                throw SceneError(params.Loc("temperature"),
+                                 "grid temperatures must be kelvin up to 1e27 (after "
+                                 "\"temperatureoffset\" and \"temperaturescale\")",
+                                 FormatKelvin(hottest));
             ThermalProperties t = ReadThermalProperties(params, true, arena);
             EmissionModel model =
                 modelOverride ? *modelOverride : t.model.value_or(EmissionModel::Kirchhoff);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "spectral/planck.h"
 #include "textures/basic_textures.h"
 #include "textures/texture_parameter_dictionary.h"
 
@@ -17,10 +18,10 @@ ThermalProperties ReadThermalProperties(const TextureParameterDictionary& params
         if (values.size() > 1 && perVertexAllowed) {
             // One value per vertex: the mesh keeps them (see geometry/triangle.h).
         } else if (values.size() == 1) {
-            if (values[0] < 0 || !std::isfinite(values[0]))
+            if (!(values[0] >= 0 && values[0] <= kMaxRenderTemperature))
                 throw SceneError(params.Loc("temperature"),
-                                 "temperature must be a finite, non-negative number of kelvin",
-                                 std::to_string(values[0]));
+                                 "temperature must be a number of kelvin from 0 to 1e27",
+                                 FormatKelvin(values[0]));
             t.temperature = FloatTexture(arena.New<FloatConstantTexture>(values[0]));
         } else {
             throw SceneError(params.Loc("temperature"),

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <filesystem>
 #include <random>
 
@@ -124,6 +126,29 @@ TEST(RGBFilm, ExposureAndMaxComponent) {
     c->AddSample({0, 0}, bright, lambda, nullptr, 1);
     XYZ xyz = RGBColorSpace::sRGB().ToXYZ(c->GetPixelRGB({0, 0}));
     EXPECT_NEAR(std::max({xyz.X, xyz.Y, xyz.Z}), 2, 1e-3);
+}
+
+// Issue 23: a silver sphere at 1e38 K gave finite spectra whose sensor response overflowed:
+// S0 was written 0 and S1, S2 infinite. Such a sample is rejected whole, in every layer.
+TEST(RGBFilm, SamplesWhoseSensorResponseOverflowsAreRejectedInEveryLayer) {
+    FilmFixture f;
+    ParsedParameterVector params = SmallRes();
+    params.push_back(Param("bool", "stokes", {}, {}, {}, {1}));
+    RGBFilm* film = f.Make(std::move(params));
+    ASSERT_TRUE(film->WritesStokes());
+    SampledWavelengths lambda = film->SampleWavelengths(0.5f);
+    film->AddSample({3, 2},
+                    Stokes(SampledSpectrum(0.5f), SampledSpectrum(0.1f), SampledSpectrum(-0.1f),
+                           SampledSpectrum(0.f)),
+                    lambda, nullptr, 1);
+    std::array<RGB, 4> before;
+    for (int k = 0; k < 4; ++k) before[k] = film->GetPixelStokes({3, 2}, k);
+    SampledSpectrum huge(3e38f);
+    for (const Stokes& S : {Stokes(huge, SampledSpectrum(1.f), SampledSpectrum(1.f), {}),
+                            Stokes(SampledSpectrum(1.f), huge, -huge, {})})
+        film->AddSample({3, 2}, S, lambda, nullptr, 1);
+    EXPECT_EQ(film->NonFiniteSampleCount(), 2);
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(film->GetPixelStokes({3, 2}, k), before[k]) << k;
 }
 
 TEST(RGBFilm, NonFiniteSamplesAreCountedAndRejected) {

@@ -3,7 +3,9 @@
 // every kind of object. Each either renders only finite values or is an error at its location.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "image_stats.h"
@@ -198,6 +200,56 @@ Shape "trianglemesh" "integer indices" [0 1 2] "point3 P" [0 0 0 1 0 0 0 1 0]
 )");
     EXPECT_NE(error.find("<test>:9:"), std::string::npos) << error;
     EXPECT_NE(error.find("vertex 1 has temperature -5"), std::string::npos) << error;
+}
+
+// Issue 23: a silver sphere at 1e38 K rendered with Stokes layers wrote S0 = 0 and S1, S2
+// infinite. Temperatures are refused above 1e27 K (spectral/planck.h); just below, every
+// layer is finite and the sphere is bright.
+TEST(HostileInput, HotterThanRenderableIsAnErrorAndJustBelowIsFinite) {
+    const char* hot = R"(WorldBegin
+Material "conductor" "spectrum eta" "metal-Ag-eta" "spectrum k" "metal-Ag-k"
+    "float temperature" %s
+Shape "sphere" "float radius" 0.5
+)";
+    char scene[512];
+    std::snprintf(scene, sizeof(scene), hot, "1e38");
+    std::string error = ErrorOf(std::string(kView) + scene);
+    EXPECT_NE(error.find("<test>:9:5: error: temperature must be a number of kelvin from 0 to "
+                         "1e27 (at '1e+38')"),
+              std::string::npos)
+        << error;
+    std::string mesh = std::string(kView) + R"(WorldBegin
+Shape "trianglemesh" "integer indices" [0 1 2] "point3 P" [0 0 0 1 0 0 0 1 0]
+    "float temperature" [300 2e27 300]
+)";
+    EXPECT_NE(ErrorOf(mesh).find("vertex 1 has temperature 2e+27"), std::string::npos);
+    std::string grid = std::string(kView) + R"(WorldBegin
+MakeNamedMedium "hot" "string type" "uniformgrid" "integer nx" 2 "integer ny" 1 "integer nz" 1
+    "float density" [1 1] "float temperature" [1000 1e10] "float temperaturescale" 1e18
+    "string emission" "kirchhoff"
+)";
+    EXPECT_NE(ErrorOf(grid).find("<test>:9:27: error: grid temperatures must be kelvin up to 1e27"),
+              std::string::npos)
+        << ErrorOf(grid);
+
+    std::snprintf(scene, sizeof(scene), hot, "1e26");
+    RenderOptions o;
+    o.samplesPerPixel = 4;
+    o.stokes = true;
+    testing::RenderedScene r = testing::RenderText(std::string(kView) + scene, 0, o);
+    const RGBFilm& film = *r.scene->job->film;
+    EXPECT_EQ(film.NonFiniteSampleCount(), 0);
+    Float brightest = 0;
+    Bounds2i b = film.PixelBounds();
+    for (int y = b.pMin.y; y < b.pMax.y; ++y)
+        for (int x = b.pMin.x; x < b.pMax.x; ++x)
+            for (int k = 0; k < 4; ++k) {
+                RGB c = film.GetPixelStokes({x, y}, k);
+                ASSERT_TRUE(std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b))
+                    << "S" << k << " at " << x << ", " << y;
+                if (k == 0) brightest = std::max(brightest, c.g);
+            }
+    EXPECT_GT(brightest, 1e20f);
 }
 
 TEST(HostileInput, PrimitivesBeyondFloatRangeAreSkipped) {

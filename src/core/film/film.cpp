@@ -2,6 +2,7 @@
 #include "core/film/film.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -180,29 +181,39 @@ size_t RGBFilm::PixelIndex(Point2i p) const {
 void RGBFilm::AddSample(Point2i pPixel, const SampledSpectrum& L, const Stokes* S,
                         const SampledWavelengths& lambda, const VisibleSurface* visibleSurface,
                         Float weight) {
-    // Reject NaN/Inf radiance (and weights): count them, remember the first pixel.
-    bool finite = std::isfinite(weight) && L.IsFinite() && (!S || S->IsFinite());
+    // Reject NaN/Inf radiance and weights, and radiance so large that its sensor response
+    // overflows float (a finite spectrum near 1e38 times the matching functions): count them,
+    // remember the first pixel. Nothing of a rejected sample reaches any layer.
     size_t idx = PixelIndex(pPixel);
-    if (!finite) {
+    auto reject = [&] {
         nonFiniteCount.fetch_add(1, std::memory_order_relaxed);
         int64_t expected = -1;
         firstNonFinite.compare_exchange_strong(expected, int64_t(idx));
-        return;
-    }
+    };
+    if (!(std::isfinite(weight) && L.IsFinite() && (!S || S->IsFinite()))) return reject();
     // Sensor response, clamped to maxComponentValue preserving ratios (pbrt-v4).
     RGB rgb = sensor.ToSensorRGB(L, lambda);
+    auto finite = [](const RGB& c) {
+        return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
+    };
+    if (!finite(rgb)) return reject();
     Float m = std::max({rgb.r, rgb.g, rgb.b}), scale = 1;
     if (m > opts.maxComponentValue) scale = opts.maxComponentValue / m;
     rgb = rgb * scale;
+    std::array<RGB, 3> stokes;
+    bool withStokes = S && !stokesPixels.empty();
+    if (withStokes)
+        for (int k = 1; k < 4; ++k) {
+            stokes[k - 1] = sensor.ToSensorRGB((*S)[k], lambda) * scale;
+            if (!finite(stokes[k - 1])) return reject();
+        }
     Pixel& px = pixels[idx];
     for (int c = 0; c < 3; ++c) px.rgbSum[c] += double(weight) * rgb[c];
     px.weightSum += weight;
-    if (S && !stokesPixels.empty()) {
+    if (withStokes) {
         StokesPixel& sp = stokesPixels[idx];
-        for (int k = 1; k < 4; ++k) {
-            RGB s = sensor.ToSensorRGB((*S)[k], lambda) * scale;
-            for (int c = 0; c < 3; ++c) sp.rgbSum[k - 1][c] += double(weight) * s[c];
-        }
+        for (int k = 0; k < 3; ++k)
+            for (int c = 0; c < 3; ++c) sp.rgbSum[k][c] += double(weight) * stokes[k][c];
     }
 
     if (!aovs.empty() && visibleSurface && visibleSurface->set) {

@@ -11,6 +11,7 @@
 #include "core/geometry/mesh_displacement.h"
 #include "core/parser/diagnostics.h"
 #include "core/parser/parameter_dictionary.h"
+#include "spectral/planck.h"
 
 namespace kiln {
 
@@ -77,14 +78,14 @@ void CheckPerVertex(const std::vector<T>& v, size_t nP, const char* name,
                          name);
 }
 
-// Per-vertex temperatures are kelvin: finite and not negative
+// Per-vertex temperatures are kelvin, from 0 to kMaxRenderTemperature
 void CheckTemperatures(const std::vector<Float>& t, const FileLoc& at, const std::string& what) {
     for (size_t i = 0; i < t.size(); ++i)
-        if (!(t[i] >= 0) || !std::isfinite(t[i]))
+        if (!(t[i] >= 0 && t[i] <= kMaxRenderTemperature))
             throw SceneError(at,
                              what + ": vertex " + std::to_string(i) + " has temperature " +
-                                 std::to_string(t[i]) +
-                                 "; temperatures must be finite, non-negative kelvin",
+                                 FormatKelvin(t[i]) +
+                                 "; temperatures must be kelvin from 0 to 1e27",
                              "temperature");
 }
 
