@@ -17,6 +17,7 @@
 #include "app/image_diff.h"
 #include "app/merge.h"
 #include "app/progress.h"
+#include "base/atomic_file.h"
 #include "core/film/film.h"
 #include "core/image/polarization_view.h"
 #include "core/parser/parser.h"

@@ -15,7 +15,13 @@ namespace kiln {
 void WriteFileAtomically(const std::string& path, std::string_view data, bool executable = false);
 
 // Removes the temporaries a writer of path killed mid-write left behind: regular files named
-// path.tmp.XXXXXX (six characters), as WriteFileAtomically names them.
+// path.tmp.XXXXXX (six characters), as WriteFileAtomically names them (a file name too long
+// for that suffix is shortened first, so that any name that fits can be written).
 void RemoveStaleTemporaries(const std::string& path);
+
+// Removes the temporary a WriteFileAtomically call is writing at this moment, if any; safe to
+// call from a signal handler (kiln's second Ctrl-C ends the process through it). The name
+// sits in static storage, the one place a signal handler can reach.
+void RemovePendingTemporaryFile() noexcept;
 
 }  // namespace kiln

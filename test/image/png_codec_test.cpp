@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "base/atomic_file.h"
 #include "core/image/image.h"
 #include "image_test_util.h"
 
@@ -173,8 +174,8 @@ TEST(PngCodec, OpenImageIOReadsWhatItWouldHaveWritten) {
             for (size_t i = 0; i < data.size(); ++i) data[i] = (unsigned char)(i * 37 % 256);
             const std::string ours = testing::TempFile("png_ours.png"),
                               theirs = testing::TempFile("png_theirs.png");
-            WritePng(ours, spec, data.data());
-            OIIOCodec().Write(theirs, "png", spec, data.data());
+            WriteFileAtomically(ours, EncodePng(spec, data.data()));
+            WriteFileAtomically(theirs, OIIOCodec().Encode("png", spec, data.data()));
             Read a = ReadWithOIIO(ours), b = ReadWithOIIO(theirs);
             EXPECT_EQ(a.pixels, data) << nc << " " << colorSpace;
             EXPECT_EQ(a.pixels, b.pixels);

@@ -6,6 +6,7 @@
 #include <OpenEXR/ImfFloatAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfIntAttribute.h>
 #include <OpenEXR/ImfMatrixAttribute.h>
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 #include <set>
 #include <stdexcept>
 
@@ -171,18 +173,36 @@ class ExrImageCodec final : public ImageCodec {
         }
     }
 
-    void Write(const std::string& filename, const std::string&, const ImageFileSpec& spec,
-               const void* data) const override {
+    std::string Encode(const std::string&, const ImageFileSpec& spec,
+                       const void* data) const override {
         try {
-            WriteFile(filename, spec, data);
+            MemoryStream stream;
+            Write(stream, spec, data);
+            return std::move(stream.bytes);
         } catch (const std::exception& e) {  // OpenEXR's exceptions say what and where
             throw std::runtime_error(e.what());
         }
     }
 
   private:
-    static void WriteFile(const std::string& filename, const ImageFileSpec& spec,
-                          const void* data) {
+    // An OpenEXR output stream into memory (the library seeks back to write the line offsets)
+    class MemoryStream final : public Imf::OStream {
+      public:
+        MemoryStream() : Imf::OStream("memory") {}
+        void write(const char c[], int n) override {
+            if (position + size_t(n) > bytes.size()) bytes.resize(position + size_t(n));
+            std::memcpy(bytes.data() + position, c, size_t(n));
+            position += size_t(n);
+        }
+        uint64_t tellp() override { return position; }
+        void seekp(uint64_t p) override { position = size_t(p); }
+        std::string bytes;
+
+      private:
+        size_t position = 0;
+    };
+
+    static void Write(Imf::OStream& stream, const ImageFileSpec& spec, const void* data) {
         if (spec.type != SampleType::Half && spec.type != SampleType::Float)
             throw std::runtime_error("EXR files store half or float samples");
         const int fullW = spec.fullWidth > 0 ? spec.fullWidth : spec.width;
@@ -220,7 +240,7 @@ class ExrImageCodec final : public ImageCodec {
                 h.insert(name, Imf::M44fAttribute(mm));
             }
         for (const auto& [k, v] : spec.strings) h.insert(k, Imf::StringAttribute(v));
-        Imf::OutputFile out(filename.c_str(), h);
+        Imf::OutputFile out(stream, h);  // its destructor writes the line offsets
         out.setFrameBuffer(fb);
         out.writePixels(spec.height);
     }

@@ -160,8 +160,4 @@ class Image {
 // Lower-case extension of path without the dot ("exr"), or "".
 std::string FileExtension(std::string_view path);
 
-// For a signal handler that ends the process during Image::Write: removes the temporary file
-// being written (async-signal-safe; one write at a time, as the kiln command does).
-void RemovePendingTemporaryFile() noexcept;
-
 }  // namespace kiln

@@ -56,10 +56,11 @@ class ImageCodec {
   public:
     virtual ~ImageCodec() = default;
     virtual std::unique_ptr<ImageFileReader> Open(const std::string& filename) const = 0;
-    // Writes `data` (interleaved, spec.type) to filename in the format its extension `format`
-    // ("exr", "png", ...) names; a failure may leave a partial file for the caller to remove.
-    virtual void Write(const std::string& filename, const std::string& format,
-                       const ImageFileSpec& spec, const void* data) const = 0;
+    // The bytes of a file holding `data` (interleaved, spec.type) in the format the extension
+    // `format` ("exr", "png", ...) names. Encoded in memory, so that the caller writes the
+    // file itself and sees every write error (a full disk); throws std::runtime_error.
+    virtual std::string Encode(const std::string& format, const ImageFileSpec& spec,
+                               const void* data) const = 0;
 };
 
 // OpenEXR through the OpenEXR library

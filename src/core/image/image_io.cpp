@@ -1,15 +1,13 @@
 // Image input and output: EXR through kiln's OpenEXR codec, PNG without transparency through
 // libpng, everything else through the OpenImageIO plugin (image_codec.h); atomic writes.
-#include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <random>
 
+#include "base/atomic_file.h"
 #include "base/file_reading.h"
 #include "base/memory_budget.h"
 #include "base/plugin.h"
@@ -68,39 +66,7 @@ const RGBColorSpace* MatchColorSpace(const float c[8]) {
     return nullptr;
 }
 
-// A unique temporary name in the directory of `filename`, keeping its extension. The stem is
-// shortened where needed so that the name fits the file-name limit whenever `filename` does.
-std::string TemporaryName(const std::string& filename) {
-    namespace fs = std::filesystem;
-    fs::path p(filename);
-    std::random_device rd;
-    uint64_t r = (uint64_t(rd()) << 32) ^ rd();
-    std::string suffix =
-        ".tmp" + std::to_string(getpid()) + "_" + std::to_string(r) + p.extension().string();
-    std::string stem = p.stem().string();
-    constexpr size_t kMaxName = 255;  // NAME_MAX on Linux file systems
-    if (1 + stem.size() + suffix.size() > kMaxName)
-        stem.resize(kMaxName > 1 + suffix.size() ? kMaxName - 1 - suffix.size() : 0);
-    return (p.parent_path() / ("." + stem + suffix)).string();
-}
-
-// The temporary file Image::Write is writing, for RemovePendingTemporaryFile (read from a
-// signal handler: a fixed buffer and a lock-free flag)
-char pendingTemporary[4096];
-std::atomic<bool> hasPendingTemporary{false};
-
-void SetPendingTemporary(const std::string& tmp) {
-    hasPendingTemporary.store(false);
-    if (tmp.size() >= sizeof(pendingTemporary)) return;
-    std::memcpy(pendingTemporary, tmp.c_str(), tmp.size() + 1);
-    hasPendingTemporary.store(true);
-}
-
 }  // namespace
-
-void RemovePendingTemporaryFile() noexcept {
-    if (hasPendingTemporary.load()) unlink(pendingTemporary);
-}
 
 const ImageCodec& OIIOCodec() {
     static const ImageCodec* const codec = [] {
@@ -252,29 +218,21 @@ void Image::Write(const std::string& filename, const ImageMetadata& metadata) co
     const void* data = type == SampleType::U8     ? (const void*)out.p8.data()
                        : type == SampleType::Half ? (const void*)out.p16.data()
                                                   : (const void*)out.p32.data();
-    std::string tmp = TemporaryName(filename);
-    std::error_code ec;
-    SetPendingTemporary(tmp);
-    struct Done {
-        ~Done() { hasPendingTemporary.store(false); }
-    } done;
+    // Encoded in memory, then written beside the target and renamed over it only once written,
+    // flushed and closed: a full disk is an error and leaves an existing file untouched
+    std::string bytes;
     try {
         if (isExr)
-            ExrCodec().Write(tmp, ext, spec, data);
+            bytes = ExrCodec().Encode(ext, spec, data);
         else if (ext == "png" && PngWriterHandles(spec))
-            WritePng(tmp, spec, data);
+            bytes = EncodePng(spec, data);
         else
-            OIIOCodec().Write(tmp, ext, spec, data);
+            bytes = OIIOCodec().Encode(ext, spec, data);
     } catch (const std::runtime_error& e) {
-        std::filesystem::remove(tmp, ec);
         Fail(filename, e.what());
     }
-    std::filesystem::rename(tmp, filename, ec);
-    if (ec) {
-        std::string msg = ec.message();
-        std::filesystem::remove(tmp, ec);
-        Fail(filename, "cannot rename temporary file: " + msg);
-    }
+    RemoveStaleTemporaries(filename);
+    WriteFileAtomically(filename, bytes);
 }
 
 }  // namespace kiln

@@ -234,7 +234,7 @@ bool PngWriterHandles(const ImageFileSpec& spec) {
            (n.size() == 1 || (n.size() == 3 && n[0] == "R" && n[1] == "G" && n[2] == "B"));
 }
 
-void WritePng(const std::string& filename, const ImageFileSpec& spec, const void* data) {
+std::string EncodePng(const ImageFileSpec& spec, const void* data) {
     if (!PngWriterHandles(spec)) throw std::runtime_error("not an 8-bit grey or RGB image");
     // The colour chunks: OpenImageIO's "oiio:ColorSpace" names ("sRGB", "Linear", "GammaG")
     int colorKind = 0;
@@ -257,8 +257,15 @@ void WritePng(const std::string& filename, const ImageFileSpec& spec, const void
         texts[i].text = const_cast<char*>(entries[i].second.c_str());
         texts[i].text_length = entries[i].second.size();
     }
-    FILE* file = std::fopen(filename.c_str(), "wb");
-    if (!file) throw std::runtime_error("cannot open for writing");
+    // Into memory: the caller writes the file and sees its errors
+    char* buffer = nullptr;
+    size_t size = 0;
+    FILE* file = open_memstream(&buffer, &size);
+    if (!file) throw std::runtime_error("PNG: cannot allocate an output buffer");
+    struct Free {
+        char** buffer;
+        ~Free() { std::free(*buffer); }
+    } freeBuffer{&buffer};
     PngJob job{file,
                spec.width,
                spec.height,
@@ -272,9 +279,10 @@ void WritePng(const std::string& filename, const ImageFileSpec& spec, const void
     bool ok = RunPngJob(&job);
     if (std::fclose(file) != 0 && ok) {
         ok = false;
-        std::snprintf(job.error, sizeof(job.error), "write failed");
+        std::snprintf(job.error, sizeof(job.error), "out of memory");
     }
     if (!ok) throw std::runtime_error(std::string("PNG: ") + job.error);
+    return std::string(buffer, size);
 }
 
 }  // namespace kiln

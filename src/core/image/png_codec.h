@@ -31,8 +31,8 @@ std::unique_ptr<ImageFileReader> OpenPng(const std::string& filename);
 // 8-bit samples, and one channel or three named R, G, B
 bool PngWriterHandles(const ImageFileSpec& spec);
 
-// Writes data (interleaved 8-bit samples, rows top to bottom) to filename; throws
-// std::runtime_error("reason") on failure (a partial file may remain for the caller to remove).
-void WritePng(const std::string& filename, const ImageFileSpec& spec, const void* data);
+// The bytes of a PNG file of data (interleaved 8-bit samples, rows top to bottom), encoded in
+// memory; throws std::runtime_error("reason") on failure.
+std::string EncodePng(const ImageFileSpec& spec, const void* data);
 
 }  // namespace kiln

@@ -1,11 +1,21 @@
 // The OpenImageIO plugin (libkiln_oiio.so): every image format but EXR, read and written
 // through OpenImageIO (see ../image_codec.h). Loaded by OIIOCodec() on first use; it uses
 // nothing of kiln but the plain types of image_codec.h.
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
+#include <stdlib.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "core/image/image_codec.h"
 
@@ -98,8 +108,8 @@ class OIIOImageCodec final : public ImageCodec {
         return std::make_unique<OIIOReader>(std::move(in));
     }
 
-    void Write(const std::string& filename, const std::string& format, const ImageFileSpec& spec,
-               const void* data) const override {
+    std::string Encode(const std::string& format, const ImageFileSpec& spec,
+                       const void* data) const override {
         const int nc = int(spec.channelNames.size());
         OIIO::ImageSpec s(spec.width, spec.height, nc, ToOIIO(spec.type));
         s.channelnames = spec.channelNames;
@@ -122,15 +132,106 @@ class OIIOImageCodec final : public ImageCodec {
         if (!out)
             throw std::runtime_error(
                 OIIOError(OIIO::geterror(), "no writer for ." + format + " files"));
-        if (!out->open(filename, s))
-            throw std::runtime_error(OIIOError(out->geterror(), "cannot open for writing"));
-        bool ok = out->write_image(ToOIIO(spec.type), data);
-        std::string err = ok ? "" : out->geterror();
-        if (!out->close() && ok) {
-            ok = false;
-            err = out->geterror();
+        // Into memory through an I/O proxy. OpenImageIO 2.4's TIFF writer makes broken files
+        // that way (small images lack "ImageLength"), and some writers take no proxy: those
+        // write a private temporary file, read back. Either way the bytes must decode.
+        std::string bytes;
+        if (out->supports("ioproxy")) {
+            MemoryOutput proxy;
+            out->set_ioproxy(&proxy);
+            WriteImage(*out, "memory." + format, s, spec, data);
+            bytes = std::move(proxy.bytes);
         }
-        if (!ok) throw std::runtime_error(OIIOError(err, "write failed"));
+        if (!Decodes(format, bytes, spec)) {
+            bytes = EncodeThroughFile(format, s, spec, data);
+            if (!Decodes(format, bytes, spec))
+                throw std::runtime_error("OpenImageIO's ." + format +
+                                         " writer made a file that does not read back");
+        }
+        return bytes;
+    }
+
+  private:
+    // An OpenImageIO output (and read-back) proxy into memory
+    class MemoryOutput final : public OIIO::Filesystem::IOProxy {
+      public:
+        MemoryOutput() : IOProxy("memory", Write) {}
+        const char* proxytype() const override { return "kiln-memory"; }
+        size_t read(void* buf, size_t size) override {
+            size_t n = pread(buf, size, m_pos);
+            m_pos += int64_t(n);
+            return n;
+        }
+        size_t write(const void* buf, size_t size) override {
+            size_t n = pwrite(buf, size, m_pos);
+            m_pos += int64_t(n);
+            return n;
+        }
+        size_t pread(void* buf, size_t size, int64_t offset) override {
+            if (offset < 0 || size_t(offset) >= bytes.size()) return 0;
+            size_t n = std::min(size, bytes.size() - size_t(offset));
+            std::memcpy(buf, bytes.data() + offset, n);
+            return n;
+        }
+        size_t pwrite(const void* buf, size_t size, int64_t offset) override {
+            if (offset < 0) return 0;
+            if (size_t(offset) + size > bytes.size()) bytes.resize(size_t(offset) + size);
+            std::memcpy(bytes.data() + offset, buf, size);
+            return size;
+        }
+        size_t size() const override { return bytes.size(); }
+        std::string bytes;
+    };
+
+    static void WriteImage(OIIO::ImageOutput& out, const std::string& name,
+                           const OIIO::ImageSpec& s, const ImageFileSpec& spec, const void* data) {
+        if (!out.open(name, s))
+            throw std::runtime_error(OIIOError(out.geterror(), "cannot encode"));
+        bool ok = out.write_image(ToOIIO(spec.type), data);
+        std::string err = ok ? "" : out.geterror();
+        if (!out.close() && ok) {
+            ok = false;
+            err = out.geterror();
+        }
+        if (!ok) throw std::runtime_error(OIIOError(err, "cannot encode"));
+    }
+
+    // Through a file of kiln's own (created exclusively in the temporary folder), read back
+    static std::string EncodeThroughFile(const std::string& format, const OIIO::ImageSpec& s,
+                                         const ImageFileSpec& spec, const void* data) {
+        std::string pattern =
+            (std::filesystem::temp_directory_path() / "kiln-encode-XXXXXX.").string() + format;
+        std::vector<char> name(pattern.begin(), pattern.end());
+        name.push_back('\0');
+        int fd = mkstemps(name.data(), int(format.size()) + 1);
+        if (fd < 0) throw std::runtime_error("cannot create a temporary file to encode into");
+        close(fd);
+        std::string file(name.data());
+        struct Remove {
+            const std::string& file;
+            ~Remove() { unlink(file.c_str()); }
+        } remove{file};
+        auto out = OIIO::ImageOutput::create(format);
+        WriteImage(*out, file, s, spec, data);
+        std::ifstream in(file, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+
+    // Whether bytes are a whole image of spec's size and channels
+    static bool Decodes(const std::string& format, const std::string& bytes,
+                        const ImageFileSpec& spec) {
+        if (bytes.empty()) return false;
+        OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
+        OIIO::ImageSpec config;
+        OIIO::Filesystem::IOProxy* proxy = &reader;
+        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+        auto in = OIIO::ImageInput::open("memory." + format, &config);
+        if (!in) return false;
+        const OIIO::ImageSpec& s = in->spec();
+        int nc = int(spec.channelNames.size());
+        if (s.width != spec.width || s.height != spec.height || s.nchannels != nc) return false;
+        std::vector<float> pixels(size_t(s.width) * size_t(s.height) * size_t(nc));
+        return in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, pixels.data());
     }
 };
 
