@@ -5,17 +5,19 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <system_error>
 
 #include "base/atomic_file.h"
 #include "base/file_reading.h"
+#include "base/rng.h"
 #include "core/film/film.h"
 
 namespace kiln {
 
 namespace {
 
-constexpr char kMagic[] = "kiln checkpoint 2\n";
+constexpr char kMagic[] = "kiln checkpoint 3\n";
 
 std::string Header(const CheckpointIdentity& id, int completed) {
     std::ostringstream s;
@@ -30,10 +32,20 @@ std::string Header(const CheckpointIdentity& id, int completed) {
 
 std::string CheckpointFile(const std::string& output) { return output + ".checkpoint"; }
 
+// The checksum line that ends a checkpoint: a 64-bit hash of everything before it, so that a
+// damaged file (a flipped byte, a NaN written into its sums) is not resumed
+std::string ChecksumLine(std::string_view contents) {
+    char line[40];
+    std::snprintf(line, sizeof(line), "checksum %016llx\n",
+                  static_cast<unsigned long long>(HashBytes(contents.data(), contents.size())));
+    return line;
+}
+
 void WriteCheckpoint(const std::string& file, const CheckpointIdentity& id, int completed,
                      const RGBFilm& film) {
     try {
-        WriteFileAtomically(file, Header(id, completed) + film.SaveState());
+        std::string contents = Header(id, completed) + film.SaveState();
+        WriteFileAtomically(file, contents + ChecksumLine(contents));
     } catch (const std::runtime_error& e) {
         throw std::runtime_error(std::string("cannot write the checkpoint: ") + e.what());
     }
@@ -51,6 +63,17 @@ int ReadCheckpoint(const std::string& file, const CheckpointIdentity& id, RGBFil
         *why = file + ": " + error;
         return 0;
     }
+    // The checksum of all before it
+    constexpr size_t kChecksumLine = 26;  // "checksum " + 16 hex digits + newline
+    if (bytes.size() < kChecksumLine || bytes.compare(bytes.size() - kChecksumLine, kChecksumLine,
+                                                      ChecksumLine(std::string_view(bytes).substr(
+                                                          0, bytes.size() - kChecksumLine))) != 0) {
+        *why = bytes.compare(0, sizeof(kMagic) - 1, kMagic) == 0
+                   ? file + " is damaged (its checksum does not match)"
+                   : file + " is not a kiln checkpoint (of this version)";
+        return 0;
+    }
+    bytes.resize(bytes.size() - kChecksumLine);
     size_t end = bytes.find("\n\n");
     if (bytes.compare(0, sizeof(kMagic) - 1, kMagic) != 0 || end == std::string::npos) {
         *why = file + " is not a kiln checkpoint";
@@ -65,7 +88,8 @@ int ReadCheckpoint(const std::string& file, const CheckpointIdentity& id, RGBFil
         return 0;
     }
     if (!film.LoadState(std::string_view(bytes).substr(end + 2))) {
-        *why = file + " is damaged (its film state does not fit)";
+        *why =
+            file + " is damaged (its film state does not fit, or holds values kiln never writes)";
         return 0;
     }
     return completed;

@@ -1,10 +1,11 @@
 // Checkpoints (kiln --checkpoint SECONDS): the film's state after a whole number of samples per
-// pixel, with what identifies the render it belongs to (scene file hash, the options that change
-// pixels, frame, seed, spp, pixel bounds), so that a render killed at any moment and started again
-// with the same command resumes and ends bit-identical to an uninterrupted one (render/renderer.h,
-// startSample). Written atomically (base/atomic_file.h: a new temporary file beside FILE, renamed
-// to FILE; a kill leaves the previous checkpoint whole). Read only from a regular file of at most
-// the film's state and a header; anything else is ignored with a reason.
+// pixel, with what identifies the render it belongs to (a hash of every file the scene read, the
+// options that change pixels, frame, seed, spp, pixel bounds) and a checksum, so that a render
+// killed at any moment and started again with the same command resumes and ends bit-identical to an
+// uninterrupted one (render/renderer.h, startSample). Written atomically (base/atomic_file.h: a new
+// temporary file beside FILE, renamed to FILE; a kill leaves the previous checkpoint whole). Read
+// only from a regular file of at most the film's state and a header, whose checksum matches and
+// whose sums are all finite; anything else is ignored with a reason.
 #pragma once
 
 #include <string>
@@ -16,7 +17,7 @@ namespace kiln {
 class RGBFilm;
 
 struct CheckpointIdentity {
-    std::string scene;    // SceneFileHash of the scene file
+    std::string scene;    // HashInputFiles of every file the scene read (render/scene_inputs.h)
     std::string options;  // RenderOptionsKey (render/render_options.h)
     std::string frame;    // "" for a still
     int seed = 0, spp = 0;

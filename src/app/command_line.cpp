@@ -24,6 +24,7 @@
 #include "render/auto_exposure.h"
 #include "render/renderer.h"
 #include "render/scene_builder.h"
+#include "render/scene_inputs.h"
 
 #ifndef KILN_VERSION
 #define KILN_VERSION "0.0.0"
@@ -302,9 +303,10 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     std::unique_ptr<Scene> scene;
     std::vector<std::string> outputs;
     std::string optionsKey;  // RenderOptionsKey: in the output's metadata and the checkpoints
+    std::string inputsHash;  // of every file the scene read (render/scene_inputs.h): likewise
     try {
         SceneBuilder builder(diag);
-        ParseFile(builder, options.sceneFile, diag);
+        std::vector<std::string> parsedFiles = ParseFile(builder, options.sceneFile, diag);
         RenderOptions renderOptions{options.spp, options.seed, options.crop, std::nullopt};
         renderOptions.pixelBounds = options.pixelBounds;
         renderOptions.genericFootprints = options.genericFootprints;
@@ -328,6 +330,7 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
         if (options.wavelengths) renderOptions.singleWavelength = *options.wavelengths == 1;
         optionsKey = RenderOptionsKey(renderOptions);
         scene = Scene::Create(builder.Description(), renderOptions, diag);
+        inputsHash = HashInputFiles(SceneInputFiles(builder.Description(), parsedFiles));
         diag.ReportRepeats();
         if (interruptRequested.load()) {
             std::cerr << "kiln: interrupted while loading the scene; nothing written\n";
@@ -364,10 +367,12 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     // What identifies this render (its output's metadata, its checkpoints); --checkpoint:
     // resume from this render's checkpoint, and write one periodically
     std::string checkpoint;
-    CheckpointIdentity identity{
-        SceneFileHash(options.sceneFile),       optionsKey,
-        frame ? std::to_string(*frame) : "",    scene->job->sampler->Seed(),
-        scene->job->sampler->SamplesPerPixel(), scene->job->film->PixelBounds()};
+    CheckpointIdentity identity{inputsHash,
+                                optionsKey,
+                                frame ? std::to_string(*frame) : "",
+                                scene->job->sampler->Seed(),
+                                scene->job->sampler->SamplesPerPixel(),
+                                scene->job->film->PixelBounds()};
     if (options.checkpointSeconds && !outputs.empty()) {
         checkpoint = CheckpointFile(outputs[0]);
         std::string why;

@@ -9,7 +9,6 @@
 #include <utility>
 #include <vector>
 
-#include "base/file_reading.h"
 #include "base/rng.h"
 
 namespace kiln {
@@ -86,15 +85,6 @@ void CheckConsistent(const std::vector<RenderPart>& parts, bool tiles) {
 }
 
 }  // namespace
-
-std::string SceneFileHash(const std::string& filename) {
-    std::string bytes, error;
-    if (!ReadFileBytes(filename, &bytes, &error)) return "";
-    char hex[17];
-    std::snprintf(hex, sizeof(hex), "%016llx",
-                  static_cast<unsigned long long>(HashBytes(bytes.data(), bytes.size())));
-    return hex;
-}
 
 namespace {
 

@@ -10,9 +10,9 @@
 // then written as the whole-frame render would have been (half float if every part asked for
 // it and no value passes 65504), so it is bit-identical to a single-process render of the same
 // scene, seed and spp. Refused, with nothing written: parts from different scenes (kiln:scene,
-// the hash of the scene file's bytes), render options that change pixels (kiln:options,
-// render/render_options.h: RenderOptionsKey), frames, seeds, sample counts, exposures,
-// resolutions or channels; parts with a non-finite pixel; partial (interrupted) tiles;
+// a hash of every file the scene read: render/scene_inputs.h), render options that change pixels
+// (kiln:options, render/render_options.h: RenderOptionsKey), frames, seeds, sample counts,
+// exposures, resolutions or channels; parts with a non-finite pixel; partial (interrupted) tiles;
 // overlapping tiles (both named); missing pixels (how many, and the box around them).
 //
 // --samples: the parts cover the same pixels with different seeds (the same seed twice is the
@@ -34,9 +34,6 @@ struct RenderPart {
     Image image;
     ImageMetadata metadata;
 };
-
-// The hash of a scene file's bytes (16 hex digits; "" if it cannot be read): kiln:scene.
-std::string SceneFileHash(const std::string& filename);
 
 // Assemble tiles / combine sample sets; throw std::runtime_error saying what is wrong.
 Image MergeTiles(const std::vector<RenderPart>& parts, ImageMetadata* metadata);

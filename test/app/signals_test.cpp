@@ -10,12 +10,16 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <random>
 
 #include "app_test_util.h"
+#include "base/rng.h"
 #include "core/image/image.h"
 
 extern char** environ;
@@ -209,6 +213,102 @@ TEST(Checkpoints, AKilledRenderResumesBitIdentical) {
     std::string again = run({"-o", out, "--checkpoint", "0"});
     EXPECT_NE(again.find("ignoring"), std::string::npos) << again;
     EXPECT_EQ(testing::Pixels(out), testing::Pixels(ref));
+}
+
+// A checkpoint whose sums were damaged is not resumed (issue 23: a NaN written into them ended
+// in the final image): a changed byte fails the checksum, and a NaN with a matching checksum
+// (as a careless tool would write) fails the film's check that every sum is finite. Each is
+// ignored with a warning and the render ends as an uninterrupted one.
+TEST(Checkpoints, DamagedCheckpointsAreNotResumed) {
+    SceneDir dir;
+    std::string scene = (dir.path / "scene.pbrt").string();
+    std::string ref = (dir.path / "ref.exr").string(), out = (dir.path / "out.exr").string();
+    const std::string checkpoint = out + ".checkpoint";
+    const std::vector<std::string> common = {scene, "--spp", "96", "--seed", "5", "--threads", "2"};
+    auto run = [&](const std::vector<std::string>& extra) { return RunToEnd(common, extra); };
+    run({"-o", ref, "--quiet"});
+    auto killedCheckpoint = [&] {
+        std::vector<std::string> args = common;
+        args.insert(args.end(), {"-o", out, "--checkpoint", "0", "--verbose"});
+        Child c = Spawn(args);
+        std::string seen;
+        EXPECT_TRUE(ReadUntil(c.stderrFd, "checkpoint at", &seen));
+        kill(c.pid, SIGKILL);
+        int status = 0;
+        waitpid(c.pid, &status, 0);
+        close(c.stderrFd);
+        return testing::ReadAll(checkpoint);
+    };
+    for (bool fixChecksum : {false, true}) {
+        std::string bytes = killedCheckpoint();
+        size_t state = bytes.find("\n\n");
+        ASSERT_NE(state, std::string::npos);
+        // The first pixel's red sum: after the film state's magic (8 bytes) and layout (56)
+        const double nan = std::nan("");
+        std::memcpy(&bytes[state + 2 + 8 + 56], &nan, sizeof(nan));
+        if (fixChecksum) {
+            constexpr size_t kLine = 26;
+            char line[40];
+            std::snprintf(
+                line, sizeof(line), "checksum %016llx\n",
+                static_cast<unsigned long long>(HashBytes(bytes.data(), bytes.size() - kLine)));
+            bytes.replace(bytes.size() - kLine, kLine, line);
+        }
+        std::ofstream(checkpoint, std::ios::binary) << bytes;
+        std::string seen = run({"-o", out, "--checkpoint", "0"});
+        EXPECT_NE(seen.find(fixChecksum ? "holds values kiln never writes"
+                                        : "its checksum does not match"),
+                  std::string::npos)
+            << seen;
+        EXPECT_EQ(seen.find("resuming from"), std::string::npos) << seen;
+        EXPECT_EQ(testing::Pixels(out), testing::Pixels(ref)) << fixChecksum;
+    }
+}
+
+// A checkpoint is another render's once any file the scene read has changed since (issue 23:
+// only the main scene file was hashed, so a render resumed after an included file changed
+// blended two renders): an Include and a spectrum file, each changed between the kill and the
+// resumption, make the checkpoint ignored; unchanged, it is resumed.
+TEST(Checkpoints, ACheckpointOfChangedInputsIsAnotherRender) {
+    SceneDir dir;
+    const fs::path scene = dir.path / "main.pbrt", include = dir.path / "world.pbrt",
+                   spectrum = dir.path / "eta.spd";
+    std::ofstream(scene) << R"(Film "rgb" "integer xresolution" 32 "integer yresolution" 32
+Sampler "independent" "integer pixelsamples" 1000000
+LookAt 0 0 -4  0 0 0  0 1 0
+Camera "perspective"
+WorldBegin
+Include "world.pbrt"
+)";
+    std::ofstream(include) << R"(LightSource "infinite" "rgb L" [1 1 1]
+Material "conductor" "spectrum eta" "eta.spd" "spectrum k" "metal-Cu-k"
+Shape "sphere"
+)";
+    std::ofstream(spectrum) << "300 0.3\n900 0.4\n";
+    std::string out = (dir.path / "out.exr").string();
+    const std::vector<std::string> common = {scene.string(), "--spp", "64", "--threads", "2"};
+    for (const fs::path* changed : {(const fs::path*)nullptr, &include, &spectrum}) {
+        Child c = Spawn([&] {
+            std::vector<std::string> args = {
+                scene.string(), "-o",        out, "--checkpoint", "0",
+                "--verbose",    "--threads", "2", "--spp",        "64"};
+            return args;
+        }());
+        std::string seen;
+        ASSERT_TRUE(ReadUntil(c.stderrFd, "checkpoint at", &seen));
+        kill(c.pid, SIGKILL);
+        int status = 0;
+        waitpid(c.pid, &status, 0);
+        close(c.stderrFd);
+        if (changed) std::ofstream(*changed, std::ios::app) << "# changed\n";
+        std::string resumed = RunToEnd(common, {"-o", out, "--checkpoint", "0"});
+        if (changed) {
+            EXPECT_NE(resumed.find("another render"), std::string::npos) << *changed << resumed;
+            EXPECT_EQ(resumed.find("resuming from"), std::string::npos) << *changed << resumed;
+        } else {
+            EXPECT_NE(resumed.find("resuming from"), std::string::npos) << resumed;
+        }
+    }
 }
 
 // What else may be found where the checkpoint goes: a directory, a FIFO, a link to /dev/zero, a

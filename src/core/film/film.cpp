@@ -368,6 +368,21 @@ bool RGBFilm::LoadState(std::string_view state) {
         std::memcmp(state.data() + sizeof(kStateMagic), expect, sizeof(expect)) != 0)
         return false;
     const char* p = state.data() + sizeof(kStateMagic) + sizeof(expect);
+    // The layers are sums of doubles, each finite as kiln adds only finite values (the film
+    // rejects the others): a state with anything else is damaged and is not resumed
+    static_assert(sizeof(Pixel) % sizeof(double) == 0 && sizeof(AOVPixel) % sizeof(double) == 0 &&
+                  sizeof(StokesPixel) % sizeof(double) == 0);
+    size_t sums = (pixels.size() * sizeof(Pixel) + aovs.size() * sizeof(AOVPixel) +
+                   stokesPixels.size() * sizeof(StokesPixel)) /
+                  sizeof(double);
+    for (size_t i = 0; i < sums; ++i) {
+        double v;
+        std::memcpy(&v, p + i * sizeof(double), sizeof(double));
+        if (!std::isfinite(v)) return false;
+    }
+    int64_t stored[2];
+    std::memcpy(stored, p + sums * sizeof(double), sizeof(stored));
+    if (stored[0] < 0 || stored[1] < -1 || stored[1] >= int64_t(pixels.size())) return false;
     auto take = [&](void* to, size_t bytes) {
         if (bytes == 0) return;  // an empty layer's data() may be null
         std::memcpy(to, p, bytes);

@@ -47,6 +47,8 @@ class SceneParser {
   public:
     SceneParser(ParserTarget& target, Diagnostics& diag, std::string searchDirectory)
         : target(target), diag(diag), searchDirectory(std::move(searchDirectory)) {}
+    // The files Include and Import read, in order
+    const std::vector<std::string>& FilesRead() const { return filesRead; }
 
     // Parses `contents` (and whatever it includes) to the end; `key` identifies the file.
     void Run(std::string contents, std::string filename, std::string key) {
@@ -274,6 +276,7 @@ class SceneParser {
         std::string contents, error;
         if (!ReadFileContents(path, &contents, &error))
             Fail(t, "cannot open '" + path + "': " + error);
+        filesRead.push_back(path);
         return {std::move(contents), path};
     }
 
@@ -479,6 +482,7 @@ class SceneParser {
     // Every open file (those of `stack` and those an Import set aside) by key, with a count
     std::unordered_map<std::string, int> openFiles;
     std::optional<Tok> pending;
+    std::vector<std::string> filesRead;  // by Include and Import, in order
     FileLoc eofLoc;
     bool worldBegun = false;
     bool warnedTransformBegin = false, warnedTransformEnd = false;
@@ -487,7 +491,8 @@ class SceneParser {
 }  // namespace
 
 // Entry points
-void ParseFile(ParserTarget& target, const std::string& filename, Diagnostics& diagnostics) {
+std::vector<std::string> ParseFile(ParserTarget& target, const std::string& filename,
+                                   Diagnostics& diagnostics) {
     std::string contents, error;
     if (!ReadFileContents(filename, &contents, &error))
         throw SceneError(FileLoc(std::make_shared<const std::string>(filename), 0, 0),
@@ -495,6 +500,9 @@ void ParseFile(ParserTarget& target, const std::string& filename, Diagnostics& d
     SceneParser parser(target, diagnostics, SearchDirectoryFor(filename));
     parser.Run(std::move(contents), filename, FileKey(filename));
     target.EndOfFiles();
+    std::vector<std::string> files = {filename};
+    files.insert(files.end(), parser.FilesRead().begin(), parser.FilesRead().end());
+    return files;
 }
 
 void ParseString(ParserTarget& target, std::string_view text, Diagnostics& diagnostics,

@@ -26,6 +26,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/parser/diagnostics.h"
 #include "core/parser/parser_target.h"
@@ -34,7 +35,9 @@
 namespace kiln {
 
 // Parses `filename` (its directory becomes the search directory), then calls EndOfFiles().
-void ParseFile(ParserTarget& target, const std::string& filename, Diagnostics& diagnostics);
+// Returns the files read: `filename`, then those of every Include and Import, in order.
+std::vector<std::string> ParseFile(ParserTarget& target, const std::string& filename,
+                                   Diagnostics& diagnostics);
 
 // Parses `text`; FileLocs report `pseudoFilename`. Relative Include/Import names resolve
 // against `searchDirectory` ("" = the working directory). Calls EndOfFiles() at the end.
