@@ -31,6 +31,29 @@ inline uint64_t HashBytes(const void* data, size_t n, uint64_t seed = 0) {
     }
     return MixBits(h);
 }
+// A 64-bit hash of many bytes (files, images): four independent multiply-rotate lanes over
+// 8-byte words, the tail through HashBytes. HashBytes (FNV-1a) makes one dependent multiply per
+// byte, several times slower on gigabytes.
+inline uint64_t HashLargeBytes(const void* data, size_t n, uint64_t seed = 0) {
+    auto p = static_cast<const unsigned char*>(data);
+    uint64_t lane[4] = {seed ^ 0x9e3779b97f4a7c15ULL, seed + 0x632be59bd9b4e019ULL,
+                        seed ^ 0x85ebca77c2b2ae63ULL, seed - 0xc2b2ae3d27d4eb4fULL};
+    auto round = [](uint64_t h, uint64_t w) {
+        h ^= w * 0x87c37b91114253d5ULL;
+        h = (h << 31) | (h >> 33);
+        return h * 0x4cf5ad432745937fULL;
+    };
+    size_t i = 0;
+    for (; i + 32 <= n; i += 32)
+        for (int k = 0; k < 4; ++k) {
+            uint64_t w;
+            std::memcpy(&w, p + i + 8 * k, 8);
+            lane[k] = round(lane[k], w);
+        }
+    uint64_t h = MixBits(lane[0]) ^ MixBits(lane[1] + 1) ^ MixBits(lane[2] + 2) ^
+                 MixBits(lane[3] + 3) ^ uint64_t(n);
+    return HashBytes(p + i, n - i, h);
+}
 template <typename... Args>
 inline uint64_t Hash(Args... args) {
     uint64_t h = 0x243f6a8885a308d3ULL;

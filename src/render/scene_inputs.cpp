@@ -2,7 +2,6 @@
 
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <set>
 
 #include "base/file_reading.h"
@@ -34,28 +33,6 @@ void ForEachParameter(const SceneDescription& d, F&& f) {
         for (const SceneEntity& e : def.shapes) entity(e);
 }
 
-// 64-bit hash of bytes, four independent multiply-rotate lanes over 8-byte words (FNV-1a, as
-// HashBytes uses, does one dependent multiply per byte: 2 GB of meshes would take seconds)
-uint64_t HashLarge(const std::string& bytes, uint64_t seed) {
-    uint64_t lane[4] = {seed ^ 0x9e3779b97f4a7c15ULL, seed + 0x632be59bd9b4e019ULL,
-                        seed ^ 0x85ebca77c2b2ae63ULL, seed - 0xc2b2ae3d27d4eb4fULL};
-    auto round = [](uint64_t h, uint64_t w) {
-        h ^= w * 0x87c37b91114253d5ULL;
-        h = (h << 31) | (h >> 33);
-        return h * 0x4cf5ad432745937fULL;
-    };
-    size_t n = bytes.size(), i = 0;
-    for (; i + 32 <= n; i += 32)
-        for (int k = 0; k < 4; ++k) {
-            uint64_t w;
-            std::memcpy(&w, bytes.data() + i + 8 * k, 8);
-            lane[k] = round(lane[k], w);
-        }
-    uint64_t h = MixBits(lane[0]) ^ MixBits(lane[1] + 1) ^ MixBits(lane[2] + 2) ^
-                 MixBits(lane[3] + 3) ^ uint64_t(n);
-    return HashBytes(bytes.data() + i, n - i, h);
-}
-
 }  // namespace
 
 std::vector<std::string> SceneInputFiles(const SceneDescription& desc,
@@ -83,7 +60,7 @@ std::string HashInputFiles(const std::vector<std::string>& files) {
     for (const std::string& file : files) {
         std::string bytes, error;
         h = HashBytes(file.data(), file.size(), h);
-        h = ReadFileBytes(file, &bytes, &error) ? HashLarge(bytes, h)
+        h = ReadFileBytes(file, &bytes, &error) ? HashLargeBytes(bytes.data(), bytes.size(), h)
                                                 : HashBytes(error.data(), error.size(), h);
     }
     char hex[17];

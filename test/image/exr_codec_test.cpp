@@ -159,5 +159,46 @@ TEST(ExrCodec, DamagedFilesAreErrorsNamingTheFile) {
     fs::remove(file);
 }
 
+// Issue 23: an EXR kiln wrote carries kiln:checksum over its samples; the same file with one
+// sample changed by another program that keeps the metadata (OpenImageIO here) is refused,
+// naming the file, while an unchanged rewrite reads back.
+TEST(ExrCodec, SamplesChangedAfterKilnWroteThemAreRefused) {
+    const std::string file = testing::TempFile("exr_sum.exr"),
+                      copy = testing::TempFile("exr_sum2.exr");
+    for (PixelFormat format : {PixelFormat::Float, PixelFormat::Half}) {
+        Labelled({"R", "G", "B", "A"}, format).Write(file);
+        for (bool change : {false, true}) {
+            auto in = OIIO::ImageInput::open(file);
+            ASSERT_TRUE(in);
+            OIIO::ImageSpec spec = in->spec();
+            EXPECT_FALSE(spec.get_string_attribute("kiln:checksum").empty());
+            std::vector<float> pixels(size_t(spec.width) * spec.height * spec.nchannels);
+            ASSERT_TRUE(
+                in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
+            in.reset();
+            if (change) pixels[5] += 0.25f;
+            auto out = OIIO::ImageOutput::create(copy);
+            ASSERT_TRUE(out->open(copy, spec));
+            ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+            out->close();
+            if (!change) {
+                EXPECT_NO_THROW(Image::Read(copy));
+                continue;
+            }
+            try {
+                Image::Read(copy);
+                ADD_FAILURE() << "a changed sample was read";
+            } catch (const std::runtime_error& e) {
+                EXPECT_EQ(std::string(e.what()),
+                          copy +
+                              ": damaged: its pixels do not match the checksum kiln wrote "
+                              "with them");
+            }
+        }
+    }
+    fs::remove(file);
+    fs::remove(copy);
+}
+
 }  // namespace
 }  // namespace kiln

@@ -11,6 +11,7 @@
 #include "base/file_reading.h"
 #include "base/memory_budget.h"
 #include "base/plugin.h"
+#include "base/rng.h"
 #include "base/system_memory.h"
 #include "core/image/image.h"
 #include "core/image/image_codec.h"
@@ -64,6 +65,26 @@ const RGBColorSpace* MatchColorSpace(const float c[8]) {
         if (match) return cs;
     }
     return nullptr;
+}
+
+// The metadata key of the checksum kiln writes with an EXR's samples, and its value: the sum
+// of one hash per channel (of its name and samples), as EXR files store channels by name and
+// readers may return them in another order
+constexpr char kChecksumKey[] = "kiln:checksum";
+std::string SampleChecksum(const void* data, size_t pixels,
+                           const std::vector<std::string>& channels, size_t sampleBytes) {
+    uint64_t sum = 0;
+    size_t nc = channels.size();
+    std::vector<unsigned char> channel(pixels * sampleBytes);
+    auto bytes = static_cast<const unsigned char*>(data);
+    for (size_t c = 0; c < nc; ++c) {
+        for (size_t i = 0; i < pixels; ++i)
+            std::memcpy(&channel[i * sampleBytes], bytes + (i * nc + c) * sampleBytes, sampleBytes);
+        sum += HashLargeBytes(channel.data(), channel.size(), HashString(channels[c]));
+    }
+    char hex[17];
+    std::snprintf(hex, sizeof(hex), "%016llx", static_cast<unsigned long long>(sum));
+    return hex;
 }
 
 }  // namespace
@@ -130,6 +151,20 @@ Image Image::Read(const std::string& filename, ImageMetadata* metadata,
         }
     } catch (const std::runtime_error& e) {
         Fail(filename, e.what());
+    }
+    // A file kiln wrote: its samples as written (a changed byte in an uncompressed or
+    // recompressed block would otherwise be read as a valid pixel)
+    if (auto sum = spec.strings.find(kChecksumKey); sum != spec.strings.end()) {
+        const void* data = spec.type == SampleType::U8     ? (const void*)image.p8.data()
+                           : spec.type == SampleType::Half ? (const void*)image.p16.data()
+                                                           : (const void*)image.p32.data();
+        size_t sampleBytes = spec.type == SampleType::U8     ? 1
+                             : spec.type == SampleType::Half ? 2
+                                                             : 4;
+        if (spec.type == SampleType::U16 ||
+            SampleChecksum(data, size_t(res.x) * size_t(res.y), spec.channelNames, sampleBytes) !=
+                sum->second)
+            Fail(filename, "damaged: its pixels do not match the checksum kiln wrote with them");
     }
 
     if (metadata) {
@@ -218,6 +253,13 @@ void Image::Write(const std::string& filename, const ImageMetadata& metadata) co
     const void* data = type == SampleType::U8     ? (const void*)out.p8.data()
                        : type == SampleType::Half ? (const void*)out.p16.data()
                                                   : (const void*)out.p32.data();
+    // An EXR carries the checksum of its samples, which Image::Read verifies
+    if (isExr)
+        spec.strings[kChecksumKey] =
+            SampleChecksum(data, size_t(spec.width) * size_t(spec.height), spec.channelNames,
+                           type == SampleType::Half ? 2 : 4);
+    else
+        spec.strings.erase(kChecksumKey);
     // Encoded in memory, then written beside the target and renamed over it only once written,
     // flushed and closed: a full disk is an error and leaves an existing file untouched
     std::string bytes;
