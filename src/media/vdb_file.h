@@ -28,7 +28,10 @@ struct VDBVolume {
 // Reads densityName (required: SceneError at loc if missing, not a float grid, or the file is
 // unreadable) and temperatureName (optional) from filename. Volumes of more than maxVoxels
 // dense voxels are refused.
-// The dense grids are charged to budget (if given) before they are allocated.
+// OpenVDB reads the file in a child process whose address space may grow by at most what
+// budget has left (half the machine's memory without one): a damaged file that would make it
+// allocate without end, or crash it, is a SceneError naming the file. The dense grids are then
+// charged to budget (if given) before they are allocated here.
 VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityName,
                         const std::string& temperatureName, const FileLoc& loc,
                         size_t maxVoxels = size_t(1) << 30, MemoryBudget* budget = nullptr);

@@ -6,9 +6,13 @@
 
 #include <unistd.h>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "../textures/param_helpers.h"
+#include "base/memory_budget.h"
 #include "media/medium.h"
 #include "media/vdb_file.h"
 #include "spectral/planck.h"
@@ -79,6 +83,56 @@ TEST(VDBFileTest, ReadsTheActiveVoxelsWithTheirTransformAndTemperatures) {
 
     EXPECT_THROW(ReadVDBVolume(path, "smoke", "", test::TestLoc()), SceneError);
     EXPECT_THROW(ReadVDBVolume(path, "density", "", test::TestLoc(), 10), SceneError);
+    std::remove(path.c_str());
+}
+
+// Issue 23: damaged .vdb files made OpenVDB allocate gigabytes or grow without end, and end in
+// std::bad_alloc with no file or line. Now a garbage name length or grid count, every byte
+// flipped in turn and truncations are each a SceneError naming the file (or, where OpenVDB
+// does not notice the damage, a volume), under a 256 MB memory limit, with no other exception.
+TEST(VDBFileTest, DamagedFilesAreErrorsNamingTheFile) {
+    std::string path = WriteTestVolume();
+    std::string bytes;
+    {
+        std::ifstream in(path, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const std::string damaged = path + ".damaged.vdb";
+    int errors = 0, reads = 0;
+    auto attempt = [&](const std::string& contents, const std::string& what) {
+        std::ofstream(damaged, std::ios::binary) << contents;
+        MemoryBudget budget(256e6);
+        try {
+            ReadVDBVolume(damaged, "density", "temperature", test::TestLoc(), size_t(1) << 30,
+                          &budget);
+            ++reads;
+        } catch (const SceneError& e) {
+            ++errors;
+            EXPECT_NE(std::string(e.what()).find(damaged), std::string::npos) << what << e.what();
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << what << ": " << e.what();
+        }
+    };
+    // The descriptor of the first grid: its name's length (4 bytes) before "density"; the
+    // grid count (4 bytes) before that
+    size_t name = bytes.find("density");
+    ASSERT_NE(name, std::string::npos);
+    for (size_t at : {name - 4, name - 8}) {
+        std::string s = bytes;
+        const uint32_t garbage = 0x7ffffff0;
+        std::memcpy(&s[at], &garbage, 4);
+        attempt(s, "garbage length at " + std::to_string(at));
+    }
+    EXPECT_EQ(errors, 2);
+    for (size_t at = 0; at < bytes.size(); at += bytes.size() / 150) {
+        std::string s = bytes;
+        s[at] = char(~s[at]);
+        attempt(s, "byte " + std::to_string(at) + " flipped");
+    }
+    for (size_t keep : {bytes.size() / 3, bytes.size() / 2, bytes.size() - 9})
+        attempt(bytes.substr(0, keep), "truncated to " + std::to_string(keep));
+    std::printf("%d damaged files: %d errors, %d read\n", errors + reads, errors, reads);
+    std::remove(damaged.c_str());
     std::remove(path.c_str());
 }
 
