@@ -305,8 +305,16 @@ int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
     std::string optionsKey;  // RenderOptionsKey: in the output's metadata and the checkpoints
     std::string inputsHash;  // of every file the scene read (render/scene_inputs.h): likewise
     try {
+        // --memory-limit bounds each file read and the parsed description, as it does what
+        // scene creation allocates
         SceneBuilder builder(diag);
-        std::vector<std::string> parsedFiles = ParseFile(builder, options.sceneFile, diag);
+        uint64_t maxFileBytes = DefaultMaxInputBytes();
+        if (options.memoryLimit) {
+            builder.SetMemoryLimit(*options.memoryLimit);
+            maxFileBytes = std::min(maxFileBytes, uint64_t(*options.memoryLimit));
+        }
+        std::vector<std::string> parsedFiles =
+            ParseFile(builder, options.sceneFile, diag, maxFileBytes);
         RenderOptions renderOptions{options.spp, options.seed, options.crop, std::nullopt};
         renderOptions.pixelBounds = options.pixelBounds;
         renderOptions.genericFootprints = options.genericFootprints;

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <new>
 
 #include "base/system_memory.h"
 
@@ -75,8 +76,31 @@ bool GunzipBytes(const std::string& in, std::string* out, std::string* error, ui
     return false;
 }
 
+namespace {
+
+bool ReadFileBytesOrThrow(const std::string& filename, std::string* contents, std::string* error,
+                          uint64_t maxBytes);
+
+}  // namespace
+
 bool ReadFileBytes(const std::string& filename, std::string* contents, std::string* error,
                    uint64_t maxBytes) {
+    try {
+        return ReadFileBytesOrThrow(filename, contents, error, maxBytes);
+    } catch (const std::bad_alloc&) {  // e.g. a gzip bomb under a process memory cap
+        size_t held = contents->size();
+        contents->clear();
+        contents->shrink_to_fit();
+        *error =
+            "out of memory after reading " + FormatBytes(double(held)) + " of it (decompressed)";
+        return false;
+    }
+}
+
+namespace {
+
+bool ReadFileBytesOrThrow(const std::string& filename, std::string* contents, std::string* error,
+                          uint64_t maxBytes) {
     if (!IsRegularFile(filename, error)) return false;
     std::FILE* f = std::fopen(filename.c_str(), "rb");
     if (!f) {
@@ -106,5 +130,7 @@ bool ReadFileBytes(const std::string& filename, std::string* contents, std::stri
     }
     return true;
 }
+
+}  // namespace
 
 }  // namespace kiln

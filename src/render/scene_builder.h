@@ -19,8 +19,13 @@ class SceneBuilder : public ParserTarget {
   public:
     explicit SceneBuilder(Diagnostics& diagnostics);
 
+    void FileContents(size_t bytes, const FileLoc& loc) override { Account(double(bytes), loc); }
+
     // Valid after EndOfFiles().
     SceneDescription& Description() { return scene; }
+    // The most the description may take (kiln --memory-limit): a directive past it is an
+    // error at its location (SceneDescription::estimatedBytes). 0: no limit.
+    void SetMemoryLimit(double bytes) { memoryLimit = bytes; }
 
     // Transformations
     void Identity(const FileLoc& loc) override;
@@ -109,8 +114,11 @@ class SceneBuilder : public ParserTarget {
     void RequireWorld(const char* directive, const FileLoc& loc, bool inWorld) const;
     kiln::Transform RenderFromObject() const;
     bool CtmIsAnimated() const;
-    ParameterDictionary Dict(ParsedParameterVector params,
-                             const ParsedParameterVector& attributes = {}) const;
+    // A directive's parameters, whose estimated bytes are added to the description's (an
+    // error at loc beyond the memory limit)
+    ParameterDictionary Dict(const FileLoc& loc, ParsedParameterVector params,
+                             const ParsedParameterVector& attributes = {});
+    void Account(double bytes, const FileLoc& loc);
 
     Diagnostics& diag;
     SceneDescription scene;
@@ -125,6 +133,7 @@ class SceneBuilder : public ParserTarget {
     kiln::Transform renderFromWorld;
     bool inWorld = false;
     bool warnedAnimated = false;
+    double memoryLimit = 0;
     Float transformStartTime = 0, transformEndTime = 1;
     InstanceDefinitionSceneEntity* activeInstance = nullptr;
     std::set<std::string> floatTextureNames, spectrumTextureNames, namedMaterialNames, mediumNames;

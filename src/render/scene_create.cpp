@@ -541,7 +541,11 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const RenderOptions
     std::unique_ptr<Scene> scene(new Scene());
     if (options.memoryLimitBytes) scene->arena.Budget().SetLimit(*options.memoryLimitBytes);
     try {
+        // The description is alive while the scene is created from it (its owner frees it
+        // after)
+        scene->arena.Budget().Charge(desc.estimatedBytes, "the scene's parsed directives");
         CreateScene(*scene, desc, options, diag);
+        scene->arena.Budget().Release(desc.estimatedBytes);
     } catch (const MemoryLimitError& e) {
         // Charges are reported at their directive where creation code can; the rest here
         throw SceneError(FileLoc(), e.what());

@@ -92,6 +92,10 @@ struct SceneDescription {
     std::map<std::string, InstanceDefinitionSceneEntity> instanceDefinitions;
     std::vector<InstanceSceneEntity> instances;
 
+    // What the description takes in memory, estimated by SceneBuilder; scene creation charges
+    // it to the memory budget first.
+    double estimatedBytes = 0;
+
     // Option directives kiln understands (others are reported).
     std::optional<int> seedOption;
     bool disablePixelJitter = false;

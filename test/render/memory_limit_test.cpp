@@ -2,7 +2,9 @@
 // that would pass the limit is an error at its directive naming the object and its estimate,
 // raised before the memory is taken; scenes within the limit render as before.
 #include <gtest/gtest.h>
+#include <zlib.h>
 
+#include <cstdio>
 #include <fstream>
 #include <string>
 
@@ -79,6 +81,60 @@ TEST(MemoryLimit, ImagesAreChargedFromTheirHeader) {
                                     2e9);
     EXPECT_NE(e.find("30000 x 30000 pixels, 3 channels) needs"), std::string::npos) << e;
     EXPECT_NE(e.find("--memory-limit"), std::string::npos) << e;
+}
+
+// Issue 23: 10^6 spheres took 1.76 GB under a 200 MB limit. The parsed directives are charged
+// as the builder makes them (an error at the directive that passes the limit) and again when
+// the scene is created from them, and each quadric before it is made.
+TEST(MemoryLimit, ManyShapesAreChargedAtTheirDirective) {
+    std::string spheres = kSmallFilm;
+    for (int i = 0; i < 20000; ++i)
+        spheres += "AttributeBegin Translate " + std::to_string(i % 100) + " " +
+                   std::to_string(i / 100) +
+                   " 0 Shape \"sphere\" \"float radius\" 0.1 "
+                   "AttributeEnd\n";
+    // Creation: the description (about 21 MB) fits 25 MB, 20000 spheres of 700 bytes do not
+    std::string e = ErrorUnderLimit(spheres, 25e6);
+    EXPECT_NE(e.find("a sphere needs 700 bytes"), std::string::npos) << e;
+    EXPECT_NE(e.find("(at 'sphere')"), std::string::npos) << e;
+    EXPECT_EQ(e.rfind("<test>:", 0), 0u) << e;
+    EXPECT_EQ(ErrorUnderLimit(spheres, 200e6), "");
+    // Parsing: the builder stops at the directive that passes its limit
+    Diagnostics diag(nullptr);
+    SceneBuilder builder(diag);
+    builder.SetMemoryLimit(5e6);
+    try {
+        ParseString(builder, spheres, diag, "<test>");
+        ADD_FAILURE() << "no error";
+    } catch (const SceneError& error) {
+        std::string what = error.what();
+        EXPECT_NE(what.find("the scene's directives so far take about"), std::string::npos) << what;
+        EXPECT_NE(what.find("more than --memory-limit"), std::string::npos) << what;
+        EXPECT_GT(error.Loc().line, 1000);
+        EXPECT_LT(error.Loc().line, 20000);
+    }
+}
+
+// A gzip-compressed scene that inflates past the limit (50 MB of comments in 50 kB) is refused
+// as it inflates, naming the file, never read whole
+TEST(MemoryLimit, CompressedScenesAreBoundedAsTheyInflate) {
+    std::string file = ::testing::TempDir() + "/kiln_inflates.pbrt";
+    gzFile gz = gzopen(file.c_str(), "wb9");
+    ASSERT_TRUE(gz);
+    std::string line = "# " + std::string(1000, 'x') + "\n";
+    for (int i = 0; i < 50000; ++i) gzwrite(gz, line.data(), unsigned(line.size()));
+    gzclose(gz);
+    Diagnostics diag(nullptr);
+    SceneBuilder builder(diag);
+    try {
+        ParseFile(builder, file, diag, 10000000);
+        ADD_FAILURE() << "no error";
+    } catch (const SceneError& error) {
+        std::string what = error.what();
+        EXPECT_EQ(what.rfind(file + ":", 0), 0u) << what;
+        EXPECT_NE(what.find("decompresses to more than 10 MB"), std::string::npos) << what;
+    }
+    std::remove(file.c_str());
 }
 
 }  // namespace

@@ -162,9 +162,10 @@ bool IsPlanar(Point3f p0, Point3f p1, Point3f p2, Point3f p3) {
 }  // namespace
 
 // PLY reading
-TriQuadMesh TriQuadMesh::ReadPLY(const std::string& filename, const HeaderCounts& beforeData) {
+TriQuadMesh TriQuadMesh::ReadPLY(const std::string& filename, const HeaderCounts& beforeData,
+                                 uint64_t maxBytes) {
     std::string data, error;
-    if (!ReadFileBytes(filename, &data, &error))  // gzip-compressed PLY too
+    if (!ReadFileBytes(filename, &data, &error, maxBytes))  // gzip-compressed PLY too
         throw SceneError(FileLoc(std::make_shared<const std::string>(filename), 0, 0),
                          "cannot read PLY file: " + error);
     return ParsePLY(data, filename, beforeData);

@@ -9,6 +9,8 @@
 // the file.
 #pragma once
 
+#include "base/file_reading.h"
+
 #include <functional>
 #include <map>
 #include <string>
@@ -29,9 +31,11 @@ struct TriQuadMesh {
 
     // Reads the file; throws SceneError (file name, and line for ascii) when malformed.
     // beforeData, if given, learns the vertex and face counts the header declares before any
-    // element is read (to charge their memory; it may throw).
+    // element is read (to charge their memory; it may throw). A file whose bytes (decompressed)
+    // pass maxBytes is an error.
     using HeaderCounts = std::function<void(double vertices, double faces)>;
-    static TriQuadMesh ReadPLY(const std::string& filename, const HeaderCounts& beforeData = {});
+    static TriQuadMesh ReadPLY(const std::string& filename, const HeaderCounts& beforeData = {},
+                               uint64_t maxBytes = DefaultMaxInputBytes());
     // The same from the file's bytes (filename only names it in errors).
     static TriQuadMesh ParsePLY(const std::string& data, const std::string& filename,
                                 const HeaderCounts& beforeData = {});

@@ -1,4 +1,5 @@
 // Shape::Create: shapes from "Shape" directives, with pbrt-v4 parameter names and defaults.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -244,7 +245,9 @@ std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverse
                                   std::to_string(int64_t(faces)) + " faces)");
     };
     try {
-        ply = TriQuadMesh::ReadPLY(filename, charge);
+        // Its bytes, held while it is parsed, within what the budget has left
+        double room = std::min(double(DefaultMaxInputBytes()), arena.Budget().Remaining());
+        ply = TriQuadMesh::ReadPLY(filename, charge, uint64_t(std::max(room, 0.0)));
     } catch (const MemoryLimitError& e) {
         throw SceneError(LocOf(params, "filename", loc), e.what(), filename);
     } catch (const SceneError& e) {
@@ -309,6 +312,8 @@ std::vector<Shape> CreateShapes(const std::string& name, const Transform* render
         params.MarkAllUsed();
         return {};
     }
+    if (name == "sphere" || name == "disk" || name == "cylinder")
+        Charge(arena, MemoryBudget::kBytesPerQuadric, "a " + name, loc, name);
     if (name == "sphere") {
         Float radius = params.GetOneFloat("radius", 1);
         Float zMin = params.GetOneFloat("zmin", -radius);

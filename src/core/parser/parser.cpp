@@ -45,8 +45,12 @@ bool LooksNumeric(std::string_view w) {
 // SceneParser
 class SceneParser {
   public:
-    SceneParser(ParserTarget& target, Diagnostics& diag, std::string searchDirectory)
-        : target(target), diag(diag), searchDirectory(std::move(searchDirectory)) {}
+    SceneParser(ParserTarget& target, Diagnostics& diag, std::string searchDirectory,
+                uint64_t maxFileBytes = DefaultMaxInputBytes())
+        : target(target),
+          diag(diag),
+          searchDirectory(std::move(searchDirectory)),
+          maxFileBytes(maxFileBytes) {}
     // The files Include and Import read, in order
     const std::vector<std::string>& FilesRead() const { return filesRead; }
 
@@ -274,9 +278,10 @@ class SceneParser {
             Fail(t, "Include/Import nested more than " + std::to_string(kMaxIncludeDepth) +
                         " files deep");
         std::string contents, error;
-        if (!ReadFileContents(path, &contents, &error))
+        if (!ReadFileContents(path, &contents, &error, maxFileBytes))
             Fail(t, "cannot open '" + path + "': " + error);
         filesRead.push_back(path);
+        target.FileContents(contents.size(), t.Loc());
         return {std::move(contents), path};
     }
 
@@ -483,6 +488,7 @@ class SceneParser {
     std::unordered_map<std::string, int> openFiles;
     std::optional<Tok> pending;
     std::vector<std::string> filesRead;  // by Include and Import, in order
+    uint64_t maxFileBytes;               // of any file (its contents, decompressed)
     FileLoc eofLoc;
     bool worldBegun = false;
     bool warnedTransformBegin = false, warnedTransformEnd = false;
@@ -492,12 +498,14 @@ class SceneParser {
 
 // Entry points
 std::vector<std::string> ParseFile(ParserTarget& target, const std::string& filename,
-                                   Diagnostics& diagnostics) {
+                                   Diagnostics& diagnostics, uint64_t maxFileBytes) {
     std::string contents, error;
-    if (!ReadFileContents(filename, &contents, &error))
+    if (!ReadFileContents(filename, &contents, &error, maxFileBytes))
         throw SceneError(FileLoc(std::make_shared<const std::string>(filename), 0, 0),
                          "cannot open scene file: " + error);
-    SceneParser parser(target, diagnostics, SearchDirectoryFor(filename));
+    target.FileContents(contents.size(),
+                        FileLoc(std::make_shared<const std::string>(filename), 1, 1));
+    SceneParser parser(target, diagnostics, SearchDirectoryFor(filename), maxFileBytes);
     parser.Run(std::move(contents), filename, FileKey(filename));
     target.EndOfFiles();
     std::vector<std::string> files = {filename};

@@ -28,6 +28,7 @@
 #include <string_view>
 #include <vector>
 
+#include "base/file_reading.h"
 #include "core/parser/diagnostics.h"
 #include "core/parser/parser_target.h"
 #include "core/parser/search_path.h"
@@ -35,9 +36,11 @@
 namespace kiln {
 
 // Parses `filename` (its directory becomes the search directory), then calls EndOfFiles().
-// Returns the files read: `filename`, then those of every Include and Import, in order.
+// Returns the files read: `filename`, then those of every Include and Import, in order. A file
+// whose contents (decompressed) pass maxFileBytes is an error (kiln --memory-limit).
 std::vector<std::string> ParseFile(ParserTarget& target, const std::string& filename,
-                                   Diagnostics& diagnostics);
+                                   Diagnostics& diagnostics,
+                                   uint64_t maxFileBytes = DefaultMaxInputBytes());
 
 // Parses `text`; FileLocs report `pseudoFilename`. Relative Include/Import names resolve
 // against `searchDirectory` ("" = the working directory). Calls EndOfFiles() at the end.

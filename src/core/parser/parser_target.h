@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <string>
 
 #include "base/vecmath.h"
@@ -88,6 +89,13 @@ class ParserTarget {
     virtual void ObjectBegin(const std::string& name, const FileLoc& loc) = 0;
     virtual void ObjectEnd(const FileLoc& loc) = 0;
     virtual void ObjectInstance(const std::string& name, const FileLoc& loc) = 0;
+
+    // The parser holds a file's contents (`bytes`, decompressed) while it parses them: the
+    // scene file, or the one an Include or Import at loc names.
+    virtual void FileContents(size_t bytes, const FileLoc& loc) {
+        (void)bytes;
+        (void)loc;
+    }
 
     virtual void EndOfFiles() = 0;
 };

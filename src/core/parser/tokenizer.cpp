@@ -164,8 +164,9 @@ std::optional<Token> Tokenizer::Next() {
 }
 
 // Files
-bool ReadFileContents(const std::string& filename, std::string* contents, std::string* error) {
-    return ReadFileBytes(filename, contents, error);
+bool ReadFileContents(const std::string& filename, std::string* contents, std::string* error,
+                      uint64_t maxBytes) {
+    return ReadFileBytes(filename, contents, error, maxBytes);
 }
 
 // Numbers

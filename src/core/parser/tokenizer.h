@@ -8,6 +8,8 @@
 // input is rejected.
 #pragma once
 
+#include "base/file_reading.h"
+
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -64,7 +66,8 @@ class Tokenizer {
 
 // Reads a whole scene file (ReadFileBytes: regular files only, gzip decompressed); on failure
 // returns false and sets *error to the reason.
-bool ReadFileContents(const std::string& filename, std::string* contents, std::string* error);
+bool ReadFileContents(const std::string& filename, std::string* contents, std::string* error,
+                      uint64_t maxBytes = DefaultMaxInputBytes());
 
 // Number parsing (pbrt-v4 syntax: optional sign, digits, optional fraction and exponent; the
 // whole word must be consumed). Return false if `word` is not a valid number in range.
