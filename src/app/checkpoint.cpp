@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
+#include <utility>
 
 #include "base/atomic_file.h"
 #include "base/file_reading.h"
@@ -63,6 +64,11 @@ int ReadCheckpoint(const std::string& file, const CheckpointIdentity& id, RGBFil
         *why = file + ": " + error;
         return 0;
     }
+    return RestoreCheckpoint(std::move(bytes), file, id, film, why);
+}
+
+int RestoreCheckpoint(std::string bytes, const std::string& file, const CheckpointIdentity& id,
+                      RGBFilm& film, std::string* why) {
     // The checksum of all before it
     constexpr size_t kChecksumLine = 26;  // "checksum " + 16 hex digits + newline
     if (bytes.size() < kChecksumLine || bytes.compare(bytes.size() - kChecksumLine, kChecksumLine,

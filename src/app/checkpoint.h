@@ -36,6 +36,11 @@ void WriteCheckpoint(const std::string& file, const CheckpointIdentity& id, int 
 int ReadCheckpoint(const std::string& file, const CheckpointIdentity& id, RGBFilm& film,
                    std::string* why);
 
+// What ReadCheckpoint does with the file's bytes (named `file` in the reasons): also the
+// fuzzing target's entry (test/fuzz/fuzz_checkpoint.cpp).
+int RestoreCheckpoint(std::string bytes, const std::string& file, const CheckpointIdentity& id,
+                      RGBFilm& film, std::string* why);
+
 // Removes the checkpoint (after the output is written) if it is a regular file, and the
 // temporaries of checkpoint writes that a kill interrupted.
 void RemoveCheckpoint(const std::string& file);

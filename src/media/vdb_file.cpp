@@ -76,10 +76,25 @@ double AddressSpaceBytes() {
 
 using OpenVDB = VDBFileReader* (*)(const char*, const char*, const char*);
 
+}  // namespace
+}  // namespace kiln
+
+// Set by a sanitizer runtime, if one is linked (weak: null otherwise). A fuzzer's death
+// callback would record the child's running out of memory as a crash of the fuzzer.
+extern "C" void __sanitizer_set_death_callback(void (*callback)(void)) __attribute__((weak));
+
+namespace kiln {
+namespace {
+
 // The child: reads, sends, exits (never returns)
 [[noreturn]] void ReadInChild(int fd, OpenVDB open, const std::string& filename,
                               const std::string& densityName, const std::string& temperatureName,
                               size_t maxVoxels, double allowance) {
+    // The parent's handlers (kiln's interrupt handling, a sanitizer's or fuzzer's crash
+    // reports) are not the child's: a crash ends it, and the parent reports it
+    for (int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL, SIGINT, SIGTERM})
+        signal(sig, SIG_DFL);
+    if (__sanitizer_set_death_callback) __sanitizer_set_death_callback(nullptr);
     signal(SIGPIPE, SIG_IGN);
     rlimit limit;
     double cap = AddressSpaceBytes() + allowance;
