@@ -5,10 +5,12 @@
 #include <cstdio>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
+#include "base/memory_budget.h"
 #include "base/rng.h"
 
 namespace kiln {
@@ -223,10 +225,11 @@ int RunMerge(const std::vector<std::string>& args) {
     std::vector<std::string> files;
     std::string out;
     bool samples = false;
+    MemoryBudget budget;  // the machine's memory, or --memory-limit
     auto usage = [](const std::string& message) {
         std::cerr << "kiln merge: " << message << "\n"
-                  << "usage: kiln merge PART.exr... -o FULL.exr\n"
-                  << "       kiln merge --samples RENDER.exr... -o OUT.exr\n";
+                  << "usage: kiln merge PART.exr... -o FULL.exr [--memory-limit SIZE]\n"
+                  << "       kiln merge --samples RENDER.exr... -o OUT.exr [--memory-limit SIZE]\n";
         return 2;
     };
     for (size_t i = 0; i < args.size(); ++i) {
@@ -235,6 +238,11 @@ int RunMerge(const std::vector<std::string>& args) {
             out = args[++i];
         } else if (args[i] == "--samples") {
             samples = true;
+        } else if (args[i] == "--memory-limit") {
+            std::optional<double> bytes;
+            if (i + 1 < args.size()) bytes = MemoryBudget::ParseSize(args[++i]);
+            if (!bytes) return usage("--memory-limit needs a size (8G, 512M, ...)");
+            budget.SetLimit(*bytes);
         } else if (args[i] == "--quiet") {
             // merge prints only errors
 
@@ -254,9 +262,19 @@ int RunMerge(const std::vector<std::string>& args) {
         for (const std::string& f : files) {
             RenderPart p;
             p.file = f;
-            p.image = Image::Read(f, &p.metadata);
+            p.image = Image::Read(f, &p.metadata, std::nullopt, &budget);
             parts.push_back(std::move(p));
         }
+        // The merged frame holds as many pixels as the parts (tiles) or as one of them
+        // (samples), in float; checked against the parts' own claims by the merges
+        double frame = 0;
+        for (const RenderPart& p : parts)
+            frame = samples ? std::max(frame, double(p.image.Resolution().x) *
+                                                  p.image.Resolution().y * p.image.NChannels())
+                            : frame + double(p.image.Resolution().x) * p.image.Resolution().y *
+                                          p.image.NChannels();
+        budget.Charge(frame * sizeof(float) * (samples ? 3 : 1),
+                      "the merged frame (" + std::to_string(int64_t(frame)) + " samples)");
         ImageMetadata metadata;
         Image merged = samples ? MergeSamples(parts, &metadata) : MergeTiles(parts, &metadata);
         WriteMerged(merged, metadata, out);

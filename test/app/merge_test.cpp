@@ -106,6 +106,16 @@ TEST(Merge, TilesAreBitIdenticalToTheFullRender) {
         args.insert(args.end(), tiles.begin(), tiles.end());
         args.insert(args.end(), {"-o", merged});
         ASSERT_EQ(Kiln(args), 0);
+        // Under a memory limit the parts and the frame are charged as they are read and
+        // made: 1 kB is refused, naming what did not fit, and nothing is written
+        std::vector<std::string> limited = args;
+        limited.back() = dir / "limited.exr";
+        limited.insert(limited.end(), {"--memory-limit", "1k"});
+        ::testing::internal::CaptureStderr();
+        EXPECT_EQ(Kiln(limited), 1);
+        std::string err = ::testing::internal::GetCapturedStderr();
+        EXPECT_NE(err.find("passes the memory limit of 1 kB"), std::string::npos) << err;
+        EXPECT_FALSE(fs::exists(limited.back()));
         std::vector<float> a = testing::Pixels(merged), b = testing::Pixels(full);
         EXPECT_EQ(Image::Read(merged).Format(), Image::Read(full).Format());
         ASSERT_EQ(a.size(), b.size());
