@@ -1,6 +1,7 @@
 #include "media/vdb_file.h"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -9,6 +10,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 #include <new>
 #include <stdexcept>
@@ -89,7 +91,7 @@ namespace {
 // The child: reads, sends, exits (never returns)
 [[noreturn]] void ReadInChild(int fd, OpenVDB open, const std::string& filename,
                               const std::string& densityName, const std::string& temperatureName,
-                              size_t maxVoxels, double allowance) {
+                              size_t maxVoxels, double allowance, double cpuSeconds) {
     // The parent's handlers (kiln's interrupt handling, a sanitizer's or fuzzer's crash
     // reports) are not the child's: a crash ends it, and the parent reports it
     for (int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL, SIGINT, SIGTERM})
@@ -100,6 +102,10 @@ namespace {
     double cap = AddressSpaceBytes() + allowance;
     limit.rlim_cur = limit.rlim_max = cap < 9e18 ? rlim_t(cap) : RLIM_INFINITY;
     setrlimit(RLIMIT_AS, &limit);
+    // A damaged count can also make OpenVDB loop on a failed stream for a very long time
+    rlimit cpu;
+    cpu.rlim_cur = cpu.rlim_max = rlim_t(cpuSeconds);
+    setrlimit(RLIMIT_CPU, &cpu);
     VDBHeader h;
     std::string message;
     std::vector<float> d, t;
@@ -157,6 +163,11 @@ VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityN
         fail(e.what());
     }
     double allowance = budget ? budget->Remaining() : PhysicalMemoryBytes() / 2;
+    // Time to read it: 5 s of CPU and 1 s per 10 MB (OpenVDB reads hundreds of MB/s), and as
+    // long again of wall time for the first answer (a child that hangs is ended)
+    std::error_code ec;
+    double fileBytes = double(std::filesystem::file_size(filename, ec));
+    double cpuSeconds = 5 + (ec ? 0 : fileBytes / 10e6);
     if (!(allowance > 0)) allowance = 1e18;
     int fds[2];
     if (pipe2(fds, O_CLOEXEC) != 0) fail(std::string("cannot read it: ") + std::strerror(errno));
@@ -167,7 +178,8 @@ VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityN
     }
     if (child == 0) {
         close(fds[0]);
-        ReadInChild(fds[1], open, filename, densityName, temperatureName, maxVoxels, allowance);
+        ReadInChild(fds[1], open, filename, densityName, temperatureName, maxVoxels, allowance,
+                    cpuSeconds);
     }
     close(fds[1]);
     struct Reap {  // the child ends, whatever happens here
@@ -185,11 +197,23 @@ VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityN
     } reap{fds[0], child};
     auto childFailure = [&] {
         int status = reap.Wait();
+        if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU)
+            return "OpenVDB did not finish reading it in " + std::to_string(int(cpuSeconds)) +
+                   " s of CPU time: the file is damaged";
         if (WIFSIGNALED(status))
             return "OpenVDB crashed reading it (signal " + std::to_string(WTERMSIG(status)) +
                    "): the file is damaged";
         return std::string("OpenVDB failed to read it: the file is damaged");
     };
+    pollfd ready{reap.fd, POLLIN, 0};
+    int polled;
+    while ((polled = poll(&ready, 1, int(2000 * cpuSeconds))) < 0 && errno == EINTR) {
+    }
+    if (polled == 0) {
+        kill(reap.child, SIGKILL);
+        fail("OpenVDB did not finish reading it in " + std::to_string(int(2 * cpuSeconds)) +
+             " s: the file is damaged");
+    }
     VDBHeader h;
     if (!ReadAll(reap.fd, &h, sizeof(h))) fail(childFailure());
     if (h.status == 2)

@@ -7,7 +7,10 @@
 #include <unistd.h>
 
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -156,6 +159,45 @@ TEST(ExrCodec, DamagedFilesAreErrorsNamingTheFile) {
             EXPECT_EQ(std::string(e.what()).rfind(file + ": ", 0), 0u) << e.what();
         }
     }
+    fs::remove(file);
+}
+
+// OpenEXR allocates what a header states before it reads anything else: a 1 kB file whose
+// attribute claimed 1.6 GB made it allocate that (found by fuzz_exr_part), and a data window
+// of 2^30 lines a line offset table of 8 GB. kiln checks the headers first: both are errors
+// naming the file, raised before OpenEXR opens it.
+TEST(ExrCodec, HeadersClaimingMoreThanTheFileHoldsAreRefused) {
+    const std::string file = testing::TempFile("exr_claims.exr");
+    Labelled({"R", "G", "B"}, PixelFormat::Half).Write(file);
+    std::string bytes;
+    {
+        std::ifstream in(file, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    auto refused = [&](std::string damaged, const std::string& why) {
+        std::ofstream(file, std::ios::binary) << damaged;
+        try {
+            Image::Read(file);
+            ADD_FAILURE() << why << ": read";
+        } catch (const std::runtime_error& e) {
+            EXPECT_EQ(std::string(e.what()), file + ": damaged OpenEXR file: " + why);
+        }
+    };
+    // The size of the first attribute's value (after its name and type)
+    size_t channels = bytes.find("channels");
+    ASSERT_NE(channels, std::string::npos);
+    std::string huge = bytes;
+    const int32_t claim = 0x60000000;
+    std::memcpy(&huge[channels + 9 + 7], &claim, 4);  // "channels\0chlist\0"
+    refused(huge, "an attribute claims bytes beyond the file's end");
+    size_t window = bytes.find("dataWindow");
+    ASSERT_NE(window, std::string::npos);
+    std::string tall = bytes;
+    const int32_t yMax = 1 << 30;
+    std::memcpy(&tall[window + 11 + 6 + 4 + 12], &yMax, 4);  // "dataWindow\0box2i\0", size
+    refused(tall,
+            "its data window of 5 x 1073741825 pixels has more chunks than the file has "
+            "room for");
     fs::remove(file);
 }
 

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -65,6 +66,17 @@ class ImageCodec {
 
 // OpenEXR through the OpenEXR library
 const ImageCodec& ExrCodec();
+// Checks an OpenEXR file's headers before ExrCodec opens it (OpenEXR allocates what they
+// state): attribute values and chunk offsets within the file; throws
+// std::runtime_error("damaged OpenEXR file: ..."). Returns the largest part's data window and
+// channels and the bytes reading it takes (kiln's float samples, OpenEXR's own samples and
+// line buffers), to be charged before ExrCodec opens it.
+struct ExrHeaderSize {
+    int64_t width = 0, height = 0;
+    int channels = 0;
+    double bytes = 0;
+};
+ExrHeaderSize CheckExrFile(const std::string& filename);
 // Every format OpenImageIO reads or writes. Loads the plugin on first use (next to the
 // executable, else in the build directory); throws std::runtime_error if it cannot.
 const ImageCodec& OIIOCodec();

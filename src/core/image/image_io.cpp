@@ -110,27 +110,36 @@ Image Image::Read(const std::string& filename, ImageMetadata* metadata,
                   std::optional<ColorEncoding> encoding, MemoryBudget* budget) {
     std::string notRegular;
     if (!IsRegularFile(filename, &notRegular)) Fail(filename, notRegular);  // e.g. /dev/zero
+    // A header may claim any size: what reading the pixels takes is checked before they are
+    // read (an OpenEXR file's before OpenEXR itself allocates it)
+    auto charge = [&](int64_t width, int64_t height, int channels, double bytes) {
+        std::string pixels = std::to_string(width) + " x " + std::to_string(height) + " pixels";
+        if (budget)
+            budget->Charge(bytes, "image \"" + filename + "\" (" + pixels + ", " +
+                                      std::to_string(channels) + " channels)");
+        else if (double memory = PhysicalMemoryBytes(); memory > 0 && bytes > memory / 2)
+            Fail(filename, pixels + " would take " + FormatBytes(bytes) + " of memory");
+    };
     std::unique_ptr<ImageFileReader> in;
+    bool charged = false;
     try {
-        if (IsExrFile(filename))
+        if (IsExrFile(filename)) {
+            ExrHeaderSize size = CheckExrFile(filename);
+            charge(size.width, size.height, size.channels, size.bytes);
+            charged = true;
             in = ExrCodec().Open(filename);
-        else if (!(in = OpenPng(filename)))
+        } else if (!(in = OpenPng(filename))) {
             in = OIIOCodec().Open(filename);
+        }
+    } catch (const MemoryLimitError&) {
+        throw;
     } catch (const std::runtime_error& e) {
         Fail(filename, e.what());
     }
     const ImageFileSpec& spec = in->Spec();
     int nc = int(spec.channelNames.size());
     if (spec.width <= 0 || spec.height <= 0 || nc <= 0) Fail(filename, "empty image");
-    // A header may claim any size: check what the pixels would take before reading them
-    double bytes = double(spec.width) * spec.height * nc * sizeof(float);
-    if (budget)
-        budget->Charge(bytes, "image \"" + filename + "\" (" + std::to_string(spec.width) + " x " +
-                                  std::to_string(spec.height) + " pixels, " + std::to_string(nc) +
-                                  " channels)");
-    else if (double memory = PhysicalMemoryBytes(); memory > 0 && bytes > memory / 2)
-        Fail(filename, std::to_string(spec.width) + " x " + std::to_string(spec.height) +
-                           " pixels would take " + FormatBytes(bytes) + " of memory");
+    if (!charged) charge(spec.width, spec.height, nc, double(spec.width) * spec.height * nc * 4.0);
     Point2i res(spec.width, spec.height);
     ColorEncoding enc = encoding ? *encoding : FileEncoding(spec.colorSpace);
     Image image;
