@@ -163,11 +163,11 @@ VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityN
         fail(e.what());
     }
     double allowance = budget ? budget->Remaining() : PhysicalMemoryBytes() / 2;
-    // Time to read it: 5 s of CPU and 1 s per 10 MB (OpenVDB reads hundreds of MB/s), and as
+    // Time to read it: 2 s of CPU and 1 s per 10 MB (OpenVDB reads hundreds of MB/s), and as
     // long again of wall time for the first answer (a child that hangs is ended)
     std::error_code ec;
     double fileBytes = double(std::filesystem::file_size(filename, ec));
-    double cpuSeconds = 5 + (ec ? 0 : fileBytes / 10e6);
+    double cpuSeconds = 2 + (ec ? 0 : fileBytes / 10e6);
     if (!(allowance > 0)) allowance = 1e18;
     int fds[2];
     if (pipe2(fds, O_CLOEXEC) != 0) fail(std::string("cannot read it: ") + std::strerror(errno));

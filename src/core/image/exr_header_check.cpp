@@ -10,6 +10,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "core/image/image_codec.h"
 
@@ -21,6 +22,7 @@ class HeaderReader {
   public:
     HeaderReader(std::FILE* f, int64_t size) : f(f), size(size) {}
     int64_t Position() const { return position; }
+    int64_t FileSize() const { return size; }
     // A null-terminated string of at most 255 characters (OpenEXR's long names)
     std::string String(const char* what) {
         std::string s;
@@ -80,6 +82,24 @@ int64_t LinesPerChunk(int compression) {
     }
 }
 
+// The value size OpenEXR's reader of a type reads whatever the header says (0: it reads the
+// stated size, or a list of its own length, checked below). A header whose size differs would
+// be read out of step with kiln's walk, so it is refused.
+int FixedSize(const std::string& type) {
+    static const std::pair<const char*, int> sizes[] = {
+        {"box2i", 16},      {"box2f", 16},   {"chromaticities", 32},
+        {"compression", 1}, {"double", 8},   {"envmap", 1},
+        {"float", 4},       {"int", 4},      {"keycode", 28},
+        {"lineOrder", 1},   {"m33f", 36},    {"m33d", 72},
+        {"m44f", 64},       {"m44d", 128},   {"rational", 8},
+        {"tiledesc", 9},    {"timecode", 8}, {"v2i", 8},
+        {"v2f", 8},         {"v2d", 16},     {"v3i", 12},
+        {"v3f", 12},        {"v3d", 24},     {"deepImageState", 1}};
+    for (const auto& [name, size] : sizes)
+        if (type == name) return size;
+    return 0;
+}
+
 // One header's attributes, to its terminating null byte; false for the empty header that ends
 // a multi-part file's list
 bool ReadHeader(HeaderReader& in, PartHeader* h, bool multipart) {
@@ -89,22 +109,39 @@ bool ReadHeader(HeaderReader& in, PartHeader* h, bool multipart) {
         std::string type = in.String("an attribute type");
         int32_t size = in.Int32();
         if (size < 0) HeaderReader::Fail("attribute \"" + name + "\" has a negative size");
+        if (int fixed = FixedSize(type); fixed > 0 && size != fixed)
+            HeaderReader::Fail("attribute \"" + name + "\" of type " + type + " has size " +
+                               std::to_string(size) + ", not " + std::to_string(fixed));
         int64_t end = in.Position() + size;
-        if (name == "dataWindow" && type == "box2i" && size == 16) {
+        if (size > 0 && end > in.FileSize())
+            HeaderReader::Fail("an attribute claims bytes beyond the file's end");
+        if (name == "dataWindow" && type == "box2i") {
             int64_t x0 = in.Int32(), y0 = in.Int32(), x1 = in.Int32(), y1 = in.Int32();
             h->width = x1 - x0 + 1, h->height = y1 - y0 + 1;
             h->hasWindow = true;
-        } else if (name == "channels" && type == "chlist") {
-            while (in.Position() < end) {
-                if (in.String("a channel name").empty()) break;
+        } else if (type == "chlist") {  // OpenEXR reads entries to an empty name
+            bool channels = name == "channels";
+            while (!in.String("a channel name").empty()) {
                 int32_t pixelType = in.Int32();
                 for (int i = 0; i < 12; ++i) in.Byte();  // pLinear, reserved, sampling
-                h->sampleBytes += pixelType == 1 ? 2 : 4;
-                ++h->channels;
+                if (channels) h->sampleBytes += pixelType == 1 ? 2 : 4, ++h->channels;
             }
-        } else if (name == "compression" && type == "compression" && size == 1) {
+            if (in.Position() != end)
+                HeaderReader::Fail("attribute \"" + name + "\" is not as long as its size");
+        } else if (type == "preview") {  // width, height, then 4 bytes per pixel
+            int64_t w = uint32_t(in.Int32()), ht = uint32_t(in.Int32());
+            if (8 + 4 * w * ht != size)
+                HeaderReader::Fail("attribute \"" + name + "\" is not as long as its size");
+        } else if (type == "stringvector") {  // strings, each after its length
+            while (in.Position() + 4 <= end) {
+                int32_t length = in.Int32();
+                if (length < 0 || length > end - in.Position())
+                    HeaderReader::Fail("attribute \"" + name + "\" has a string beyond its size");
+                in.Skip(length);
+            }
+        } else if (name == "compression" && type == "compression") {
             h->compression = in.Byte();
-        } else if (name == "tiles" && type == "tiledesc" && size == 9) {
+        } else if (name == "tiles" && type == "tiledesc") {
             h->tileWidth = uint32_t(in.Int32()), h->tileHeight = uint32_t(in.Int32());
             in.Byte();
         }
