@@ -250,6 +250,15 @@ TEST(Merge, DamagedAndOverclaimingPartsAreRefused) {
     EXPECT_NE(why.find("3599999984 of the frame's 3600000000 pixels are in no part"),
               std::string::npos)
         << why;
+    // A frame of 2^30 - 1 pixels square (OpenEXR's largest display window): the holes are found
+    // band by band between the parts' edges, at once (row by row took minutes: fuzz_exr_part)
+    std::vector<RenderPart> vast = {
+        part("vast.exr", Point2i((1 << 30) - 1, (1 << 30) - 1), {{0, 0}, {2, 2}}, 0.5f)};
+    why = refusal(vast);
+    EXPECT_NE(why.find("1152921502459363325 of the frame's 1152921502459363329 pixels are in no "
+                       "part (all within [0, 1073741823) x [0, 1073741823))"),
+              std::string::npos)
+        << why;
     // Through the command: nothing written
     std::string out = dir / "out.exr";
     std::vector<std::string> args = {"merge"};
