@@ -3,8 +3,10 @@
 // a shape-to-lights map, lights identified by index), aggregate, light sampler, features.
 #include <algorithm>
 #include <map>
+#include <new>
 #include <set>
 
+#include "base/system_memory.h"
 #include "core/geometry/curve.h"
 #include "core/geometry/mesh_displacement.h"
 #include "core/geometry/triangle.h"
@@ -549,6 +551,13 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const RenderOptions
     } catch (const MemoryLimitError& e) {
         // Charges are reported at their directive where creation code can; the rest here
         throw SceneError(FileLoc(), e.what());
+    } catch (const std::bad_alloc&) {
+        // An allocation nothing charged (or the machine short of what the budget assumed)
+        throw SceneError(FileLoc(),
+                         "out of memory creating the scene, after " +
+                             FormatBytes(scene->arena.Budget().Committed()) +
+                             " were committed; --memory-limit below the machine's memory "
+                             "names the object that does not fit");
     }
     return scene;
 }

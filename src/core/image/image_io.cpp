@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <new>
 
 #include "base/atomic_file.h"
 #include "base/file_reading.h"
@@ -135,6 +136,8 @@ Image Image::Read(const std::string& filename, ImageMetadata* metadata,
         throw;
     } catch (const std::runtime_error& e) {
         Fail(filename, e.what());
+    } catch (const std::bad_alloc&) {  // a codec's own allocation for what a header states
+        Fail(filename, "out of memory opening it (its header states more than there is)");
     }
     const ImageFileSpec& spec = in->Spec();
     int nc = int(spec.channelNames.size());
@@ -160,6 +163,8 @@ Image Image::Read(const std::string& filename, ImageMetadata* metadata,
         }
     } catch (const std::runtime_error& e) {
         Fail(filename, e.what());
+    } catch (const std::bad_alloc&) {
+        Fail(filename, "out of memory reading its pixels");
     }
     // A file kiln wrote: its samples as written (a changed byte in an uncompressed or
     // recompressed block would otherwise be read as a valid pixel)
