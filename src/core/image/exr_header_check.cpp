@@ -130,7 +130,7 @@ bool ReadHeader(HeaderReader& in, PartHeader* h, bool multipart) {
                 HeaderReader::Fail("attribute \"" + name + "\" is not as long as its size");
         } else if (type == "preview") {  // width, height, then 4 bytes per pixel
             int64_t w = uint32_t(in.Int32()), ht = uint32_t(in.Int32());
-            if (8 + 4 * w * ht != size)
+            if (8 + 4.0 * double(w) * double(ht) != double(size))
                 HeaderReader::Fail("attribute \"" + name + "\" is not as long as its size");
         } else if (type == "stringvector") {  // strings, each after its length
             while (in.Position() + 4 <= end) {
