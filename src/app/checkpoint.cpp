@@ -33,9 +33,7 @@ std::string Header(const CheckpointIdentity& id, int completed) {
 
 std::string CheckpointFile(const std::string& output) { return output + ".checkpoint"; }
 
-// The checksum line that ends a checkpoint: a 64-bit hash of everything before it, so that a
-// damaged file (a flipped byte, a NaN written into its sums) is not resumed
-std::string ChecksumLine(std::string_view contents) {
+std::string CheckpointChecksumLine(std::string_view contents) {
     char line[40];
     std::snprintf(line, sizeof(line), "checksum %016llx\n",
                   static_cast<unsigned long long>(HashBytes(contents.data(), contents.size())));
@@ -46,7 +44,7 @@ void WriteCheckpoint(const std::string& file, const CheckpointIdentity& id, int 
                      const RGBFilm& film) {
     try {
         std::string contents = Header(id, completed) + film.SaveState();
-        WriteFileAtomically(file, contents + ChecksumLine(contents));
+        WriteFileAtomically(file, contents + CheckpointChecksumLine(contents));
     } catch (const std::runtime_error& e) {
         throw std::runtime_error(std::string("cannot write the checkpoint: ") + e.what());
     }
@@ -70,10 +68,11 @@ int ReadCheckpoint(const std::string& file, const CheckpointIdentity& id, RGBFil
 int RestoreCheckpoint(std::string bytes, const std::string& file, const CheckpointIdentity& id,
                       RGBFilm& film, std::string* why) {
     // The checksum of all before it
-    constexpr size_t kChecksumLine = 26;  // "checksum " + 16 hex digits + newline
-    if (bytes.size() < kChecksumLine || bytes.compare(bytes.size() - kChecksumLine, kChecksumLine,
-                                                      ChecksumLine(std::string_view(bytes).substr(
-                                                          0, bytes.size() - kChecksumLine))) != 0) {
+    constexpr size_t kChecksumLine = kCheckpointChecksumLineBytes;
+    if (bytes.size() < kChecksumLine ||
+        bytes.compare(bytes.size() - kChecksumLine, kChecksumLine,
+                      CheckpointChecksumLine(
+                          std::string_view(bytes).substr(0, bytes.size() - kChecksumLine))) != 0) {
         *why = bytes.compare(0, sizeof(kMagic) - 1, kMagic) == 0
                    ? file + " is damaged (its checksum does not match)"
                    : file + " is not a kiln checkpoint (of this version)";

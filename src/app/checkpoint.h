@@ -8,7 +8,9 @@
 // whose sums are all finite; anything else is ignored with a reason.
 #pragma once
 
+#include <cstddef>
 #include <string>
+#include <string_view>
 
 #include "base/vecmath.h"
 
@@ -35,6 +37,11 @@ void WriteCheckpoint(const std::string& file, const CheckpointIdentity& id, int 
 // there is none, or (with the reason in *why) when the file is of another render or damaged.
 int ReadCheckpoint(const std::string& file, const CheckpointIdentity& id, RGBFilm& film,
                    std::string* why);
+
+// The line that ends a checkpoint: "checksum " and 16 hexadecimal digits of a 64-bit hash of
+// everything before it (`contents`), so that a damaged file is not resumed.
+std::string CheckpointChecksumLine(std::string_view contents);
+inline constexpr size_t kCheckpointChecksumLineBytes = 26;
 
 // What ReadCheckpoint does with the file's bytes (named `file` in the reasons): also the
 // fuzzing target's entry (test/fuzz/fuzz_checkpoint.cpp).

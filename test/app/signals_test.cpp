@@ -18,8 +18,8 @@
 #include <fstream>
 #include <random>
 
+#include "app/checkpoint.h"
 #include "app_test_util.h"
-#include "base/rng.h"
 #include "core/image/image.h"
 
 extern char** environ;
@@ -158,6 +158,20 @@ std::string RunToEnd(std::vector<std::string> args, const std::vector<std::strin
     return seen;
 }
 
+// Runs the kiln binary with args (and --checkpoint 0 --verbose) until it has written
+// `checkpoints` checkpoints, then kills it with SIGKILL: what a preempted job leaves.
+void KillAfterCheckpoints(std::vector<std::string> args, int checkpoints = 1) {
+    args.insert(args.end(), {"--checkpoint", "0", "--verbose"});
+    Child c = Spawn(args);
+    std::string seen;
+    for (int k = 0; k < checkpoints; ++k)
+        EXPECT_TRUE(ReadUntil(c.stderrFd, "checkpoint at", &seen));
+    kill(c.pid, SIGKILL);
+    int status = 0;
+    waitpid(c.pid, &status, 0);
+    close(c.stderrFd);
+}
+
 TEST(Checkpoints, AKilledRenderResumesBitIdentical) {
     SceneDir dir;
     std::string scene = (dir.path / "scene.pbrt").string();
@@ -167,18 +181,9 @@ TEST(Checkpoints, AKilledRenderResumesBitIdentical) {
     run({"-o", ref, "--quiet"});
     // Killed after some checkpoints (a different number each time), then resumed
     for (int kills : {1, 5}) {
-        Child c = Spawn([&] {
-            std::vector<std::string> args = common;
-            args.insert(args.end(), {"-o", out, "--checkpoint", "0", "--verbose"});
-            return args;
-        }());
-        std::string seen;
-        for (int k = 0; k < kills; ++k) ASSERT_TRUE(ReadUntil(c.stderrFd, "checkpoint at", &seen));
-        seen.clear();
-        kill(c.pid, SIGKILL);
-        int status = 0;
-        waitpid(c.pid, &status, 0);
-        close(c.stderrFd);
+        std::vector<std::string> args = common;
+        args.insert(args.end(), {"-o", out});
+        KillAfterCheckpoints(args, kills);
         ASSERT_TRUE(fs::exists(out + ".checkpoint"));
         std::string resumed = run({"-o", out, "--checkpoint", "0"});
         EXPECT_NE(resumed.find("resuming from"), std::string::npos) << resumed;
@@ -189,17 +194,9 @@ TEST(Checkpoints, AKilledRenderResumesBitIdentical) {
     // A checkpoint of the same scene, seed and pixels rendered with other options (another
     // emission model) is another render: ignored, with a warning
     {
-        Child c = Spawn([&] {
-            std::vector<std::string> args = common;
-            args.insert(args.end(), {"-o", out, "--checkpoint", "0", "--verbose"});
-            return args;
-        }());
-        std::string seen;
-        ASSERT_TRUE(ReadUntil(c.stderrFd, "checkpoint at", &seen));
-        kill(c.pid, SIGKILL);
-        int status = 0;
-        waitpid(c.pid, &status, 0);
-        close(c.stderrFd);
+        std::vector<std::string> args = common;
+        args.insert(args.end(), {"-o", out});
+        KillAfterCheckpoints(args);
         ASSERT_TRUE(fs::exists(out + ".checkpoint"));
         std::string other = run({"-o", out, "--checkpoint", "0", "--emission", "additive"});
         EXPECT_NE(other.find("another render"), std::string::npos) << other;
@@ -229,14 +226,8 @@ TEST(Checkpoints, DamagedCheckpointsAreNotResumed) {
     run({"-o", ref, "--quiet"});
     auto killedCheckpoint = [&] {
         std::vector<std::string> args = common;
-        args.insert(args.end(), {"-o", out, "--checkpoint", "0", "--verbose"});
-        Child c = Spawn(args);
-        std::string seen;
-        EXPECT_TRUE(ReadUntil(c.stderrFd, "checkpoint at", &seen));
-        kill(c.pid, SIGKILL);
-        int status = 0;
-        waitpid(c.pid, &status, 0);
-        close(c.stderrFd);
+        args.insert(args.end(), {"-o", out});
+        KillAfterCheckpoints(args);
         return testing::ReadAll(checkpoint);
     };
     for (bool fixChecksum : {false, true}) {
@@ -247,12 +238,8 @@ TEST(Checkpoints, DamagedCheckpointsAreNotResumed) {
         const double nan = std::nan("");
         std::memcpy(&bytes[state + 2 + 8 + 56], &nan, sizeof(nan));
         if (fixChecksum) {
-            constexpr size_t kLine = 26;
-            char line[40];
-            std::snprintf(
-                line, sizeof(line), "checksum %016llx\n",
-                static_cast<unsigned long long>(HashBytes(bytes.data(), bytes.size() - kLine)));
-            bytes.replace(bytes.size() - kLine, kLine, line);
+            bytes.resize(bytes.size() - kCheckpointChecksumLineBytes);
+            bytes += CheckpointChecksumLine(bytes);
         }
         std::ofstream(checkpoint, std::ios::binary) << bytes;
         std::string seen = run({"-o", out, "--checkpoint", "0"});
@@ -288,18 +275,9 @@ Shape "sphere"
     std::string out = (dir.path / "out.exr").string();
     const std::vector<std::string> common = {scene.string(), "--spp", "64", "--threads", "2"};
     for (const fs::path* changed : {(const fs::path*)nullptr, &include, &spectrum}) {
-        Child c = Spawn([&] {
-            std::vector<std::string> args = {
-                scene.string(), "-o",        out, "--checkpoint", "0",
-                "--verbose",    "--threads", "2", "--spp",        "64"};
-            return args;
-        }());
-        std::string seen;
-        ASSERT_TRUE(ReadUntil(c.stderrFd, "checkpoint at", &seen));
-        kill(c.pid, SIGKILL);
-        int status = 0;
-        waitpid(c.pid, &status, 0);
-        close(c.stderrFd);
+        std::vector<std::string> args = common;
+        args.insert(args.end(), {"-o", out});
+        KillAfterCheckpoints(args);
         if (changed) std::ofstream(*changed, std::ios::app) << "# changed\n";
         std::string resumed = RunToEnd(common, {"-o", out, "--checkpoint", "0"});
         if (changed) {

@@ -11,9 +11,9 @@
 #include <cstring>
 #include <string>
 
+#include "../film/film_test_util.h"
 #include "app/checkpoint.h"
 #include "base/object_arena.h"
-#include "base/rng.h"
 #include "core/film/film.h"
 #include "core/film/filter.h"
 #include "core/parser/diagnostics.h"
@@ -22,16 +22,6 @@
 namespace {
 
 using namespace kiln;
-
-ParsedParameter Param(std::string type, std::string name, std::vector<int> ints,
-                      std::vector<uint8_t> bools = {}) {
-    ParsedParameter p;
-    p.type = std::move(type);
-    p.name = std::move(name);
-    p.ints = std::move(ints);
-    p.bools = std::move(bools);
-    return p;
-}
 
 struct Fixture {
     ObjectArena arena;
@@ -45,8 +35,8 @@ struct Fixture {
 
     Fixture() {
         ParameterDictionary dict(
-            {Param("integer", "xresolution", {6}), Param("integer", "yresolution", {4}),
-             Param("bool", "stokes", {}, {1})},
+            {Param("integer", "xresolution", {}, {6}), Param("integer", "yresolution", {}, {4}),
+             Param("bool", "stokes", {}, {}, {}, {1})},
             nullptr);
         film = RGBFilm::Create("gbuffer", dict, 1, filter, &RGBColorSpace::sRGB(), FileLoc(), arena,
                                diag);
@@ -88,12 +78,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             bytes[at] = char(rest[i + 2]);
         }
         if (mode == 2) {  // the checksum line that ends the file, recomputed
-            constexpr size_t kLine = 26;
-            char line[40];
-            std::snprintf(
-                line, sizeof(line), "checksum %016llx\n",
-                static_cast<unsigned long long>(HashBytes(bytes.data(), bytes.size() - kLine)));
-            bytes.replace(bytes.size() - kLine, kLine, line);
+            bytes.resize(bytes.size() - kCheckpointChecksumLineBytes);
+            bytes += CheckpointChecksumLine(bytes);
         }
     }
     std::string why;
