@@ -29,7 +29,10 @@ class DiffuseAreaLight {
                      const RGBColorSpace* imageColorSpace = nullptr,
                      const AlphaMask* alpha = nullptr);
 
-    LightType Type() const { return LightType::Area; }
+    static constexpr LightType kType = LightType::Area;
+    LightType Type() const { return kType; }
+    // Whether SampleLi leaves the radiance to DeferredL (Light::DeferredL)
+    static constexpr bool kDefersL = false;
     const Shape& GetShape() const { return *shape; }
     Float Area() const { return area; }
     bool TwoSided() const { return twoSided; }
@@ -37,10 +40,11 @@ class DiffuseAreaLight {
     // Radiance leaving point p (surface normal n, surface coordinates uv) in direction w.
     SampledSpectrum L(Point3f p, Normal3f n, Point2f uv, Vector3f w,
                       const SampledWavelengths& lambda) const;
-    // The same at a surface interaction (Light::L; the BSDF plays no part).
-    SampledSpectrum L(const SurfaceInteraction& si, const BSDF&, Vector3f w,
-                      const SampledWavelengths& lambda) const {
-        return L(si.p, si.n, si.uv, w, lambda);
+    // The same at a surface interaction (Light::L; the BSDF plays no part), unpolarised.
+    template <typename Radiance = SampledSpectrum>
+    Radiance L(const SurfaceInteraction& si, const BSDF&, Vector3f w,
+               const SampledWavelengths& lambda) const {
+        return Radiance(L(si.p, si.n, si.uv, w, lambda));
     }
     // Samples a point on the shape by solid angle from ctx (the shape's sampling strategy).
     std::optional<LightLiSample> SampleLi(const LightSampleContext& ctx, Point2f u,

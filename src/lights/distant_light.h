@@ -16,7 +16,8 @@ class DistantLight {
     // renderFromLight maps the light's +z axis to the direction towards the light.
     DistantLight(const Transform& renderFromLight, Spectrum Lemit, Float scale);
 
-    LightType Type() const { return LightType::DeltaDirection; }
+    static constexpr LightType kType = LightType::DeltaDirection;
+    LightType Type() const { return kType; }
     // Unit render-space direction from the scene towards the light.
     Vector3f Direction() const { return wLight; }
 

@@ -39,7 +39,8 @@ class ImageInfiniteLight {
                        const RGBColorSpace* colorSpace, Float scale,
                        const std::string& filename = "");
 
-    LightType Type() const { return LightType::Infinite; }
+    static constexpr LightType kType = LightType::Infinite;
+    LightType Type() const { return kType; }
     EnvironmentMapping Mapping() const { return mapping; }
 
     SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const;

@@ -13,11 +13,9 @@ std::optional<LightBounds> Light::Bounds() const {
             return LightBounds(Bounds3f(l->Position()), Vector3f(0, 0, 1), 0, -1, 0, false);
         } else if constexpr (std::is_same_v<T, SpotLight>) {
             return l->Bounds();
-        } else if constexpr (requires { l->GetShape(); }) {
+        } else if constexpr (T::kType == LightType::Area) {
             auto [w, cosTheta] = l->GetShape().NormalBounds();
-            bool twoSided = true;
-            if constexpr (requires { l->TwoSided(); }) twoSided = l->TwoSided();
-            return LightBounds(l->GetShape().Bounds(), w, 0, cosTheta, 0, twoSided);
+            return LightBounds(l->GetShape().Bounds(), w, 0, cosTheta, 0, l->TwoSided());
         } else {
             return std::nullopt;  // at infinity
         }

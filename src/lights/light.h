@@ -82,10 +82,12 @@ class Light
                        const Shader& shader) const {
         if (!ls.deferredL) return Radiance(ls.L);
         return Dispatch([&](auto l) -> Radiance {
-            if constexpr (requires { l->template DeferredL<Radiance>(ls, lambda, shader); })
-                return l->template DeferredL<Radiance>(ls, lambda, shader);
-            else
-                return Radiance(ls.L);
+            using T = std::remove_cv_t<std::remove_pointer_t<decltype(l)>>;
+            if constexpr (T::kType == LightType::Area) {
+                if constexpr (T::kDefersL)
+                    return l->template DeferredL<Radiance>(ls, lambda, shader);
+            }
+            return Radiance(ls.L);  // a light that does not defer never sets ls.deferredL
         });
     }
     // Density per sr with which SampleLi would pick wi (0 for delta lights).
@@ -94,16 +96,17 @@ class Light
         return Dispatch([&](auto l) { return l->PDF_Li(ctx, wi, allowIncompletePDF); });
     }
     // Area lights: radiance leaving si, a point of the light's shape, towards w; bsdf is the
-    // BSDF at si (thermal emission derives from it). 0 for the other kinds. Radiance as for
-    // DeferredL, in the implicit frame of w.
+    // BSDF at si (thermal emission derives from it). 0 for the other kinds. What each light
+    // class provides follows from its kType (and kDefersL for area lights): an area light
+    // without L, GetShape, Area and TwoSided, or an infinite one without Le, does not compile.
+    // Radiance as for DeferredL, in the implicit frame of w.
     template <typename Radiance = SampledSpectrum>
     Radiance L(const SurfaceInteraction& si, const BSDF& bsdf, Vector3f w,
                const SampledWavelengths& lambda) const {
         return Dispatch([&](auto l) -> Radiance {
-            if constexpr (requires { l->template L<Radiance>(si, bsdf, w, lambda); })
+            using T = std::remove_cv_t<std::remove_pointer_t<decltype(l)>>;
+            if constexpr (T::kType == LightType::Area)
                 return l->template L<Radiance>(si, bsdf, w, lambda);
-            else if constexpr (requires { l->L(si, bsdf, w, lambda); })
-                return Radiance(l->L(si, bsdf, w, lambda));
             else
                 return {};
         });
@@ -111,7 +114,8 @@ class Light
     // Infinite lights: radiance arriving along a ray that leaves the scene. 0 for the others.
     SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const {
         return Dispatch([&](auto l) -> SampledSpectrum {
-            if constexpr (requires { l->Le(ray, lambda); })
+            using T = std::remove_cv_t<std::remove_pointer_t<decltype(l)>>;
+            if constexpr (T::kType == LightType::Infinite)
                 return l->Le(ray, lambda);
             else
                 return SampledSpectrum(0.f);

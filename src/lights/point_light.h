@@ -15,7 +15,8 @@ class PointLight {
     // renderFromLight places the light at its origin.
     PointLight(const Transform& renderFromLight, Spectrum I, Float scale);
 
-    LightType Type() const { return LightType::DeltaPosition; }
+    static constexpr LightType kType = LightType::DeltaPosition;
+    LightType Type() const { return kType; }
     Point3f Position() const { return position; }
 
     // Li = scale I / r^2 towards the light; pdf 1 (delta).

@@ -18,7 +18,8 @@ class SpotLight {
     SpotLight(const Transform& renderFromLight, Spectrum I, Float scale, Float totalWidthDeg,
               Float falloffStartDeg);
 
-    LightType Type() const { return LightType::DeltaPosition; }
+    static constexpr LightType kType = LightType::DeltaPosition;
+    LightType Type() const { return kType; }
 
     // Intensity towards light-space direction w (unit), W sr^-1 nm^-1.
     SampledSpectrum I(Vector3f wLight, const SampledWavelengths& lambda) const;

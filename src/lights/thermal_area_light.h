@@ -47,10 +47,15 @@ class ThermalAreaLight {
                      const BSDFAt& bsdfAt, std::optional<Uniform> uniform = std::nullopt,
                      bool powerSampling = true, const AlphaMask* alpha = nullptr);
 
-    LightType Type() const { return LightType::Area; }
+    static constexpr LightType kType = LightType::Area;
+    LightType Type() const { return kType; }
+    // Whether SampleLi leaves the radiance to DeferredL (Light::DeferredL)
+    static constexpr bool kDefersL = true;
     const ThermalEmission& Emission() const { return *emission; }
     const Shape& GetShape() const { return *shape; }
     Float Area() const { return area; }
+    // Emission follows the BSDF on either side of the surface: bounds face both ways
+    bool TwoSided() const { return true; }
     bool SamplesByPower() const { return distribution.has_value(); }
 
     // Radiance leaving si (on this light's shape) towards w; bsdf the BSDF at si.

@@ -14,7 +14,8 @@ class UniformInfiniteLight {
   public:
     UniformInfiniteLight(const Transform& renderFromLight, Spectrum Lemit, Float scale);
 
-    LightType Type() const { return LightType::Infinite; }
+    static constexpr LightType kType = LightType::Infinite;
+    LightType Type() const { return kType; }
 
     // Radiance along a ray that escapes the scene: scale L.
     SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const;

@@ -5,6 +5,7 @@
 #include <map>
 #include <new>
 #include <set>
+#include <type_traits>
 
 #include "base/system_memory.h"
 #include "core/geometry/curve.h"
@@ -425,7 +426,8 @@ void CreateLightSampler(Scene& scene) {
             std::vector<Float> area;
             for (const Light& light : scene.lights)
                 area.push_back(light.Dispatch([](auto l) -> Float {
-                    if constexpr (requires { l->Area(); })
+                    using T = std::remove_cv_t<std::remove_pointer_t<decltype(l)>>;
+                    if constexpr (T::kType == LightType::Area)
                         return l->Area();
                     else
                         return 1;
