@@ -96,5 +96,23 @@ TEST(AtomicFile, StaleTemporariesAreRemovedAndNothingElse) {
         EXPECT_TRUE(fs::exists(fs::symlink_status(d.path / kept))) << kept;
 }
 
+// A name as long as a file system allows (255 bytes) has no room for ".tmp.XXXXXX": its
+// temporaries are named from a shortened name, so the write succeeds, and a stale one of that
+// name is removed
+TEST(AtomicFile, LongestNamesCanBeWrittenAndCleanedUp) {
+    TempDir d;
+    fs::path f = d.path / (std::string(251, 'n') + ".exr");
+    WriteFileAtomically(f.string(), "data");
+    std::ifstream in(f);
+    std::string read;
+    in >> read;
+    EXPECT_EQ(read, "data");
+    fs::path stale = d.path / (std::string(255 - 11, 'n') + ".tmp.Ab12Cd");
+    std::ofstream(stale) << "x";
+    RemoveStaleTemporaries(f.string());
+    EXPECT_FALSE(fs::exists(stale));
+    EXPECT_TRUE(fs::exists(f));
+}
+
 }  // namespace
 }  // namespace kiln
