@@ -12,6 +12,7 @@ namespace kiln {
 // FloatConstantTexture Definition
 class FloatConstantTexture {
   public:
+    bool UsesFootprint() const { return false; }  // the same everywhere
     explicit FloatConstantTexture(Float value) : value(value) {}
     Float Evaluate(const TextureEvalContext&) const { return value; }
     Float Value() const { return value; }
@@ -27,6 +28,7 @@ class FloatConstantTexture {
 // SpectrumConstantTexture Definition
 class SpectrumConstantTexture {
   public:
+    bool UsesFootprint() const { return false; }  // the same everywhere
     explicit SpectrumConstantTexture(Spectrum value) : value(std::move(value)) {}
     SampledSpectrum Evaluate(const TextureEvalContext&, const SampledWavelengths& lambda) const {
         return value.Sample(lambda);
@@ -178,6 +180,7 @@ class SpectrumDirectionMixTexture {
 // Bilinear interpolation of v00, v01, v10, v11 at st = (s, t) of the 2D mapping.
 class FloatBilerpTexture {
   public:
+    bool UsesFootprint() const { return false; }  // smooth: nothing to filter
     FloatBilerpTexture(TextureMapping2D mapping, Float v00, Float v01, Float v10, Float v11)
         : mapping(mapping), v00(v00), v01(v01), v10(v10), v11(v11) {}
     Float Evaluate(const TextureEvalContext& ctx) const {
@@ -199,6 +202,7 @@ class FloatBilerpTexture {
 // SpectrumBilerpTexture Definition
 class SpectrumBilerpTexture {
   public:
+    bool UsesFootprint() const { return false; }  // smooth: nothing to filter
     SpectrumBilerpTexture(TextureMapping2D mapping, Spectrum v00, Spectrum v01, Spectrum v10,
                           Spectrum v11)
         : mapping(mapping), v00(v00), v01(v01), v10(v10), v11(v11) {}

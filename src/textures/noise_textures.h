@@ -61,6 +61,8 @@ bool InsidePolkaDot(Point2f st);
 // "inside" (1) in the dots, "outside" (0) elsewhere; 2D mapping parameters.
 class FloatDotsTexture {
   public:
+    // The dots themselves are not antialiased; the textures inside and outside may be
+    bool UsesFootprint() const { return inside.UsesFootprint() || outside.UsesFootprint(); }
     FloatDotsTexture(TextureMapping2D mapping, FloatTexture inside, FloatTexture outside)
         : mapping(mapping), inside(inside), outside(outside) {}
     Float Evaluate(const TextureEvalContext& ctx) const {
@@ -78,6 +80,8 @@ class FloatDotsTexture {
 // SpectrumDotsTexture Definition
 class SpectrumDotsTexture {
   public:
+    // The dots themselves are not antialiased; the textures inside and outside may be
+    bool UsesFootprint() const { return inside.UsesFootprint() || outside.UsesFootprint(); }
     SpectrumDotsTexture(TextureMapping2D mapping, SpectrumTexture inside, SpectrumTexture outside)
         : mapping(mapping), inside(inside), outside(outside) {}
     SampledSpectrum Evaluate(const TextureEvalContext& ctx,

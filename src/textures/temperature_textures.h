@@ -29,6 +29,7 @@ class MIPMap;
 // "float t1" (1).
 class GradientTexture {
   public:
+    bool UsesFootprint() const { return false; }  // smooth: nothing to filter
     GradientTexture(const Transform& spaceFromRender, Point3f p0, Point3f p1, Float t0, Float t1,
                     bool clamp);
     Float Evaluate(const TextureEvalContext& ctx) const;
@@ -57,6 +58,7 @@ class GradientTexture {
 // lacunarity" (2), "float gain" (0.5), "integer seed" (0), "float min" (0), "float max" (1).
 class ThermalNoiseTexture {
   public:
+    bool UsesFootprint() const { return false; }  // all octaves, unfiltered
     static constexpr int MaxOctaves = 16;
     ThermalNoiseTexture(TextureMapping3D mapping, Float frequency, int octaves, Float lacunarity,
                         Float gain, int seed, Float minValue, Float maxValue);
@@ -123,6 +125,7 @@ class HeatMapTexture {
 // meshes, i.e. PLY quads, carry no attributes.)
 class VertexAttributeTexture {
   public:
+    bool UsesFootprint() const { return false; }  // interpolated at the hit
     VertexAttributeTexture(std::string name, Float defaultValue)
         : name(std::move(name)), defaultValue(defaultValue) {}
     Float Evaluate(const TextureEvalContext& ctx) const;
@@ -145,6 +148,7 @@ class VertexAttributeTexture {
 //     interpolation, clamped to the first / last value outside.
 class TimeFunctionTexture {
   public:
+    bool UsesFootprint() const { return false; }  // a function of time only
     explicit TimeFunctionTexture(Float value) : value(value) {}
     Float Evaluate(const TextureEvalContext&) const { return value; }
     Float Value() const { return value; }

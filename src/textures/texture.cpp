@@ -112,23 +112,13 @@ SpectrumTexture CreateSpectrumTexture(const std::string& name, const Transform& 
     throw SceneError(loc, "unknown spectrum texture type \"" + name + "\"", name);
 }
 
-// Footprint use: the classes that filter or antialias say so, the others do not depend on it
+// Footprint use: every class says (one without UsesFootprint does not compile)
 bool FloatTexture::UsesFootprint() const {
-    return Dispatch([](auto t) {
-        if constexpr (requires { t->UsesFootprint(); })
-            return t->UsesFootprint();
-        else
-            return false;
-    });
+    return Dispatch([](auto t) { return t->UsesFootprint(); });
 }
 
 bool SpectrumTexture::UsesFootprint() const {
-    return Dispatch([](auto t) {
-        if constexpr (requires { t->UsesFootprint(); })
-            return t->UsesFootprint();
-        else
-            return false;
-    });
+    return Dispatch([](auto t) { return t->UsesFootprint(); });
 }
 
 }  // namespace kiln

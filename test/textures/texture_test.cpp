@@ -355,5 +355,21 @@ TEST(Textures, NoiseTextures) {
     EXPECT_EQ(f.diag.WarningCount(), 0);
 }
 
+// Which textures need the screen-space footprint: those that filter or antialias, and those
+// that hold one (mix, scale, dots); dots with a checkerboard inside used to say no, so the
+// checkerboard was evaluated without its footprint
+TEST(Textures, FootprintUseFollowsWhatATextureHolds) {
+    Fixture f;
+    f.named.floatTextures.emplace("checks", f.MakeFloat("checkerboard", Dict({})));
+    f.named.floatTextures.emplace("half", f.arena.New<FloatConstantTexture>(0.5f));
+    EXPECT_TRUE(f.named.floatTextures.at("checks").UsesFootprint());
+    EXPECT_FALSE(f.named.floatTextures.at("half").UsesFootprint());
+    EXPECT_TRUE(f.MakeFloat("dots", Dict({Tex("inside", "checks")})).UsesFootprint());
+    EXPECT_FALSE(f.MakeFloat("dots", Dict({Tex("inside", "half")})).UsesFootprint());
+    EXPECT_TRUE(f.MakeFloat("mix", Dict({Tex("tex2", "checks")})).UsesFootprint());
+    EXPECT_TRUE(f.MakeFloat("fbm", Dict({})).UsesFootprint());
+    EXPECT_FALSE(f.MakeFloat("bilerp", Dict({})).UsesFootprint());
+}
+
 }  // namespace
 }  // namespace kiln
