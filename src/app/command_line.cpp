@@ -145,6 +145,7 @@ std::string UsageText() {
            "   or: kiln diff A B [--metric M] [--threshold X] [--out DIFF] (kiln diff --help)\n"
            "   or: kiln merge PART.exr... -o FULL.exr (tiles of one frame)\n"
            "   or: kiln merge --samples RENDER.exr... -o OUT.exr (renders with other seeds)\n"
+           "       (either with [--memory-limit SIZE])\n"
            "   or: kiln farm SCENE [--tiles N] [--frames A-B] [--spp N] [-o OUT] [--dry-run]\n"
            "                 [--status] [-- SBATCH OPTIONS] (a Slurm job array, then merges)\n";
 }

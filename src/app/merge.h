@@ -4,6 +4,8 @@
 //   kiln merge PART.exr... -o FULL.exr            tiles (--pixelbounds renders) of one frame
 //   kiln merge --samples RENDER.exr... -o OUT.exr  renders of the same pixels with different
 //                                                   seeds, weighted by their samples per pixel
+//   --memory-limit SIZE                             the parts (charged from their headers) and the
+//                                                   merged frame must fit in SIZE
 //
 // Tiles are assembled by their EXR data windows into the display window. kiln writes a tile in
 // 32-bit float (film.cpp) with the film's savefp16 choice in its metadata; the merged frame is
