@@ -36,6 +36,7 @@ set(THERMAL_HOST_INDEPENDENT
     thermal/emission_model.h thermal/emission_model.cpp
     thermal/surface_emission.h
     thermal/volume_emission.h thermal/volume_emission.cpp
+    thermal/cooling.h thermal/cooling.cpp
 )
 
 if(NOT SRC)

@@ -1,30 +1,16 @@
 #include "app/command_line.h"
 
-#include "base/memory_budget.h"
-
-#include <unistd.h>
-
-#include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <csignal>
-#include <cstdio>
 #include <iostream>
 #include <stdexcept>
 
-#include "app/checkpoint.h"
 #include "app/farm.h"
 #include "app/image_diff.h"
 #include "app/merge.h"
-#include "app/progress.h"
-#include "base/atomic_file.h"
+#include "app/render_command.h"
+#include "base/memory_budget.h"
 #include "core/film/film.h"
-#include "core/image/polarization_view.h"
-#include "core/parser/parser.h"
-#include "render/auto_exposure.h"
-#include "render/renderer.h"
-#include "render/scene_builder.h"
-#include "render/scene_inputs.h"
+#include "render/render_options.h"
 
 #ifndef KILN_VERSION
 #define KILN_VERSION "0.0.0"
@@ -61,39 +47,13 @@ Float ParseFloat(const std::string& flag, const std::string& v) {
     return value;
 }
 
-// SIGINT (Ctrl-C) and SIGTERM (what schedulers send before they kill a job): the first stops
-// loading or rendering and lets the image so far be written; a second ends the process at
-// once, removing a temporary file being written. The exit status is 128 + the first signal's
-// number. A signal handler can only reach static storage, hence these process-wide atomics.
-std::atomic<bool> interruptRequested{false};
-std::atomic<int> interruptSignal{0};
-
-extern "C" void HandleInterrupt(int signal) {
-    int none = 0;
-    interruptSignal.compare_exchange_strong(none, signal);  // set before the flag is seen
-    if (interruptRequested.exchange(true)) {
-        RemovePendingTemporaryFile();
-        _exit(128 + signal);
-    }
-}
-
-int InterruptStatus() { return 128 + interruptSignal.load(); }
-
-void InstallInterruptHandlers() {
-    struct sigaction action = {};
-    action.sa_handler = HandleInterrupt;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, nullptr);
-    sigaction(SIGTERM, &action, nullptr);
-}
-
 }  // namespace
 
 std::string UsageText() {
     return "usage: kiln SCENE.pbrt [options]\n"
            "  -o, --output FILE     output image (EXR, PNG, JPEG, TIFF, ... by extension);\n"
            "                        may repeat; default: the scene's Film \"filename\"\n"
-           "  --spp N               samples per pixel (renderOptions the scene's sampler)\n"
+           "  --spp N               samples per pixel (overrides the scene's sampler)\n"
            "  --threads N           worker threads (default: all cores)\n"
            "  --seed S              sampler seed\n"
            "  --crop x0 x1 y0 y1    render only this window (NDC, as Film \"cropwindow\";\n"
@@ -296,182 +256,6 @@ std::string FrameFilename(const std::string& pattern, int frame) {
     return pattern.substr(0, first) + number + pattern.substr(last + 1);
 }
 
-// Renders one image (one frame of an animation) and writes it to every output; returns the
-// exit status.
-int RenderFrame(const CommandLineOptions& options, std::optional<int> frame,
-                const std::vector<std::string>& outputPatterns) {
-    Diagnostics diag(&std::cerr);
-    std::unique_ptr<Scene> scene;
-    std::vector<std::string> outputs;
-    std::string optionsKey;  // RenderOptionsKey: in the output's metadata and the checkpoints
-    std::string inputsHash;  // of every file the scene read (render/scene_inputs.h): likewise
-    try {
-        // --memory-limit bounds each file read and the parsed description, as it does what
-        // scene creation allocates
-        SceneBuilder builder(diag);
-        uint64_t maxFileBytes = DefaultMaxInputBytes();
-        if (options.memoryLimit) {
-            builder.SetMemoryLimit(*options.memoryLimit);
-            maxFileBytes = std::min(maxFileBytes, uint64_t(*options.memoryLimit));
-        }
-        std::vector<std::string> parsedFiles =
-            ParseFile(builder, options.sceneFile, diag, maxFileBytes);
-        RenderOptions renderOptions{options.spp, options.seed, options.crop, std::nullopt};
-        renderOptions.pixelBounds = options.pixelBounds;
-        renderOptions.genericFootprints = options.genericFootprints;
-        renderOptions.genericAOVs = options.genericAOVs;
-        renderOptions.genericVolumes = options.genericVolumes;
-        if (options.stokes) renderOptions.stokes = true;
-        renderOptions.memoryLimitBytes = options.memoryLimit;
-        if (options.emission) renderOptions.emission = ParseEmissionModel(*options.emission);
-        if (options.pbrtv4LayeredMIS) renderOptions.layeredMIS = LayeredMIS::PbrtV4;
-        if (frame) {
-            renderOptions.frame = *frame;
-            renderOptions.timeSeconds = Float(*frame / options.fps);
-        }
-        // Integrator settings from the command line (for comparisons; validated when parsed)
-        if (options.lightSampler)
-            renderOptions.lightSelection = ParseLightSelection(*options.lightSampler);
-        if (options.strategy) renderOptions.strategy = ParseLightStrategy(*options.strategy);
-        if (options.emitterSampling)
-            renderOptions.emitterPowerSampling =
-                ParseEmitterPowerSampling(*options.emitterSampling);
-        if (options.wavelengths) renderOptions.singleWavelength = *options.wavelengths == 1;
-        optionsKey = RenderOptionsKey(renderOptions);
-        scene = Scene::Create(builder.Description(), renderOptions, diag);
-        inputsHash = HashInputFiles(SceneInputFiles(builder.Description(), parsedFiles));
-        diag.ReportRepeats();
-        if (interruptRequested.load()) {
-            std::cerr << "kiln: interrupted while loading the scene; nothing written\n";
-            return InterruptStatus();
-        }
-        if (options.verbose) {
-            double embree = double(scene->aggregate->EmbreePeakBytes());
-            std::fprintf(stderr,
-                         "kiln: %d shapes, %zu lights (%d thermal); Embree peak %.1f MB (%.0f "
-                         "bytes per shape%s)\n",
-                         scene->shapeCount, scene->lights.size(), scene->thermalEmitterCount,
-                         embree * 1e-6, scene->shapeCount > 0 ? embree / scene->shapeCount : 0.0,
-                         scene->aggregate->Compact() ? ", compact BVH" : "");
-            std::fprintf(stderr, "kiln: chosen: %s\n", scene->features.ToString().c_str());
-        }
-    } catch (const SceneError& e) {
-        diag.ReportRepeats();
-        std::cerr << e.what() << "\n";
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << "kiln: error: " << e.what() << "\n";
-        return 1;
-    }
-    for (const std::string& pattern : outputPatterns.empty()
-                                          ? std::vector<std::string>{scene->job->film->Filename()}
-                                          : outputPatterns)
-        outputs.push_back(frame ? FrameFilename(pattern, *frame) : pattern);
-
-    RenderSettings settings;
-    settings.threads = options.threads.value_or(0);
-    settings.cancel = &interruptRequested;
-    ProgressReporter progress(options.quiet ? nullptr : &std::cerr, isatty(STDERR_FILENO));
-    settings.observer = &progress;
-    // What identifies this render (its output's metadata, its checkpoints); --checkpoint:
-    // resume from this render's checkpoint, and write one periodically
-    std::string checkpoint;
-    CheckpointIdentity identity{inputsHash,
-                                optionsKey,
-                                frame ? std::to_string(*frame) : "",
-                                scene->job->sampler->Seed(),
-                                scene->job->sampler->SamplesPerPixel(),
-                                scene->job->film->PixelBounds()};
-    if (options.checkpointSeconds && !outputs.empty()) {
-        checkpoint = CheckpointFile(outputs[0]);
-        std::string why;
-        settings.startSample = ReadCheckpoint(checkpoint, identity, *scene->job->film, &why);
-        if (!why.empty()) std::cerr << "kiln: warning: ignoring " << why << "\n";
-        if (settings.startSample > 0 && !options.quiet)
-            std::cerr << "kiln: resuming from " << checkpoint << " at " << settings.startSample
-                      << " spp\n";
-        settings.checkpointSeconds = *options.checkpointSeconds;
-        settings.checkpoint = [&](int completed) {
-            try {
-                WriteCheckpoint(checkpoint, identity, completed, *scene->job->film);
-                if (options.verbose)
-                    std::cerr << "kiln: checkpoint at " << completed << " spp in " << checkpoint
-                              << "\n";
-            } catch (const std::exception& e) {
-                std::cerr << "kiln: warning: " << e.what() << "\n";
-            }
-        };
-    }
-    RenderStats stats;
-    try {
-        stats = Render(*scene, settings);
-    } catch (const std::exception& e) {
-        std::cerr << "kiln: error: " << e.what() << "; nothing written\n";
-        return 1;
-    }
-
-    if (int64_t bad = scene->job->film->NonFiniteSampleCount(); bad > 0) {
-        Point2i p = scene->job->film->FirstNonFinitePixel().value_or(Point2i(-1, -1));
-        std::cerr << "kiln: warning: " << bad << " NaN/Inf radiance samples were discarded "
-                  << "(first at pixel " << p.x << ", " << p.y << ")\n";
-    }
-    // Exposure: the film's "exposure", plus --exposure stops or automatic exposure
-    Float ev = scene->job->film->GetOptions().exposureEV;
-    if (options.exposure && *options.exposure != "auto") ev += std::stof(*options.exposure);
-    if (scene->autoExposure || (options.exposure && *options.exposure == "auto")) {
-        ev += AutoExposureEV(*scene->job->film);
-        if (options.verbose) std::fprintf(stderr, "kiln: automatic exposure %+.2f EV\n", ev);
-    }
-    // The sum (film, --exposure, automatic) is held to the same bound as each part, so that
-    // 2^ev times any radiance stays finite in float
-    ev = std::clamp(ev, -RGBFilm::kMaxExposureEV, RGBFilm::kMaxExposureEV);
-    scene->job->film->SetExposureEV(ev);
-    ImageMetadata metadata;
-    metadata.strings["kiln:exposureEV"] = std::to_string(ev);
-    metadata.renderTimeSeconds = float(stats.seconds);
-    metadata.samplesPerPixel = stats.cancelled ? stats.completedSamples : stats.samplesPerPixel;
-    if (stats.cancelled) metadata.strings["kiln:partial"] = "true";
-    // What kiln merge checks parts against: the same scene (its file's bytes), frame and seed
-    metadata.strings["kiln:seed"] = std::to_string(scene->job->sampler->Seed());
-    metadata.strings["kiln:scene"] = identity.scene;
-    metadata.strings["kiln:options"] = optionsKey;
-    if (frame) metadata.strings["kiln:frame"] = std::to_string(*frame);
-    int status = 0;
-    for (const std::string& out : outputs) {
-        try {
-            scene->job->film->WriteImage(out, metadata, options.view, &diag);
-        } catch (const std::exception& e) {
-            std::cerr << "kiln: error: " << e.what() << "\n";
-            status = 1;
-        }
-    }
-    // A finished render needs its checkpoint no more (an interrupted one resumes from it)
-    if (!checkpoint.empty() && status == 0 && !stats.cancelled) RemoveCheckpoint(checkpoint);
-    // --polarisation: pictures of the degree and angle of polarisation beside each output
-    if (options.polarisation)
-        for (const std::string& out : outputs) {
-            std::string stem = out.substr(
-                0, out.size() - FileExtension(out).size() - (FileExtension(out).empty() ? 0 : 1));
-            try {
-                for (const auto& [name, picture] : PolarizationViews(
-                         scene->job->film->GetImage(nullptr), *scene->job->film->ColorSpace()))
-                    picture.Write(stem + "-" + name + ".png", metadata);
-            } catch (const std::exception& e) {
-                std::cerr << "kiln: error: " << e.what() << "\n";
-                status = 1;
-            }
-        }
-    diag.ReportRepeats();
-    if (!options.quiet) {
-        double mpaths = stats.seconds > 0 ? stats.cameraPaths / stats.seconds * 1e-6 : 0;
-        std::fprintf(stderr, "kiln: %dx%d, %d spp, %.2fs wall, %.2f Mpaths/s%s\n",
-                     stats.resolution.x, stats.resolution.y, stats.samplesPerPixel, stats.seconds,
-                     mpaths, stats.cancelled ? " (interrupted)" : "");
-    }
-    if (status == 0 && (stats.cancelled || interruptRequested.load())) status = InterruptStatus();
-    return status;
-}
-
 int RunKiln(int argc, char** argv) {
     if (argc >= 2 && std::string(argv[1]) == "diff")
         return RunImageDiff(std::vector<std::string>(argv + 2, argv + argc));
@@ -497,18 +281,7 @@ int RunKiln(int argc, char** argv) {
         return 0;
     }
 
-    InstallInterruptHandlers();
-    if (!options.frames) return RenderFrame(options, std::nullopt, options.outputs);
-    // Animation: every frame is parsed, built and rendered on its own (deterministic and
-    // independent, so frames can be rendered on different machines).
-    for (int f = options.frames->first; f <= options.frames->second; ++f) {
-        if (!options.quiet)
-            std::fprintf(stderr, "kiln: frame %d (t = %.4g s)\n", f, f / options.fps);
-        int status = RenderFrame(options, f, options.outputs);
-        if (status != 0) return status;
-        if (interruptRequested.load()) return InterruptStatus();
-    }
-    return 0;
+    return RenderCommand(options);
 }
 
 }  // namespace kiln

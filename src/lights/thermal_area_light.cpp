@@ -43,7 +43,11 @@ ThermalAreaLight::ThermalAreaLight(const Shape* shape, const Material* material,
                                    const ThermalEmission* emission, const BSDFAt& bsdfAt,
                                    std::optional<Uniform> uniform, bool powerSampling,
                                    const AlphaMask* alpha)
-    : shape(shape), alpha(alpha), material(material), emission(emission) {
+    : shape(shape),
+      alpha(alpha),
+      material(material),
+      emission(emission),
+      powerSampling(powerSampling) {
     area = shape->Area();
     if (!(area > 0)) return;
     if (uniform) {
@@ -52,6 +56,13 @@ ThermalAreaLight::ThermalAreaLight(const Shape* shape, const Material* material,
         meanTemperature = uniform->temperature;
         return;
     }
+    EstimatePower(bsdfAt);
+}
+
+void ThermalAreaLight::EstimatePower(const BSDFAt& bsdfAt) {
+    distribution.reset();
+    visiblePower = meanTemperature = 0;
+    if (!(area > 0)) return;
     // The exitance M (W m^-2) at the centres of an n x n grid over the parameterisation; the
     // power is the integral of M dA = integral over u of M / q (q the area density of u), and
     // the cell values M / q make the sampling distribution

@@ -47,6 +47,12 @@ class ThermalAreaLight {
                      const BSDFAt& bsdfAt, std::optional<Uniform> uniform = std::nullopt,
                      bool powerSampling = true, const AlphaMask* alpha = nullptr);
 
+    // Estimates the power and, where it varies over the shape and powerSampling was set,
+    // builds the sampling distribution again from the emission as it is now (after its
+    // temperature field moved to another frame: Scene::SetAnimation). Not for a light made
+    // with `uniform`.
+    void EstimatePower(const BSDFAt& bsdfAt);
+
     static constexpr LightType kType = LightType::Area;
     LightType Type() const { return kType; }
     // Whether SampleLi leaves the radiance to DeferredL (Light::DeferredL)
@@ -85,7 +91,8 @@ class ThermalAreaLight {
         return emission->L<Radiance>(si, bsdf, w, lambda);
     }
     Float PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool allowIncompletePDF = false) const;
-    // Emitted power over 360-830 nm, W (both sides), as estimated at creation.
+    // Emitted power over 360-830 nm, W (both sides), as estimated at creation (or by the last
+    // EstimatePower).
     Float VisiblePower() const { return visiblePower; }
     // Spectral power, W nm^-1, for light selection: VisiblePower() distributed over wavelength
     // like a blackbody at the light's power-weighted mean temperature (an estimate: the
@@ -103,6 +110,7 @@ class ThermalAreaLight {
     const Material* material;
     const ThermalEmission* emission;
     Float area = 0;
+    bool powerSampling = true;
     Float visiblePower = 0, meanTemperature = 0;
     std::optional<PiecewiseConstant2D> distribution;
 };

@@ -30,9 +30,12 @@
 #include "render/scene_description.h"
 #include "thermal/emission_model.h"
 #include "thermal/emissivity_tables.h"
+#include "thermal/temperature_field.h"
 #include "thermal/thermal_emission.h"
 
 namespace kiln {
+
+class ThermalAreaLight;
 
 struct PathIntegratorSettings {
     // pbrt-v4's "volpath" (default; participating media) rather than "path" (media ignored)
@@ -143,6 +146,16 @@ class Scene {
     // together while the new one is made).
     void SetJob(const RenderOptions& options, Diagnostics& diag);
 
+    // Moves the scene to another frame of its animation (RenderOptions::frame, timeSeconds)
+    // without re-parsing or re-creating it: the temperature fields that follow the animation
+    // (thermal/temperature_field.h: heat-map sequences, cooling, keyframes) take the new frame
+    // and time, the thermal lights whose emission varies over their shape estimate their
+    // power again, and light selection is rebuilt. The result is the scene Create makes with
+    // those options. Throws SceneError if a frame's heat map cannot be read (the fields that
+    // moved keep the new frame). Not while a render runs.
+    void SetAnimation(const TemperatureAnimation& animation);
+    const TemperatureAnimation& Animation() const { return animation; }
+
     // The BSDF at a surface hit (SceneShader::GetBSDF): invalid for interface materials;
     // isect.material becomes the material that built it (a mix's component).
     BSDF GetBSDF(SurfaceInteraction& isect, SampledWavelengths& lambda) const {
@@ -191,12 +204,17 @@ class Scene {
     // transmission axis at this angle (radians) from the image's horizontal towards its up.
     std::optional<Float> cameraPolarizer;
     bool autoExposure = false;  // film "bool autoexposure" (kiln): see auto_exposure.h
+    // The temperature fields that follow the animation, and the thermal lights whose power
+    // depends on the point of their shape (SetAnimation moves them)
+    std::vector<TemperatureField*> animatedFields;
+    std::vector<ThermalAreaLight*> varyingThermalLights;
     int shapeCount = 0;
     int thermalEmitterCount = 0;  // lights of shapes glowing because of their temperature
     SceneFeatures features;
 
   private:
     Scene() = default;
+    TemperatureAnimation animation;  // the frame and time the scene is at
 };
 
 }  // namespace kiln

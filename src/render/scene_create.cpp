@@ -7,10 +7,13 @@
 #include <set>
 #include <type_traits>
 
+#include <tbb/parallel_for.h>
+
 #include "base/system_memory.h"
 #include "core/geometry/curve.h"
 #include "core/geometry/mesh_displacement.h"
 #include "core/geometry/triangle.h"
+#include "lights/thermal_area_light.h"
 #include "render/scene.h"
 #include "render/scene_emitters.h"
 #include "render/scene_media.h"
@@ -18,6 +21,7 @@
 #include "textures/basic_textures.h"
 #include "textures/texture_alpha_mask.h"
 #include "textures/texture_parameter_dictionary.h"
+#include "thermal/temperature_field.h"
 
 namespace kiln {
 
@@ -130,13 +134,17 @@ NamedTextures& CreateTextures(SceneDescription& desc, const RenderOptions& optio
     ObjectArena& arena = scene.arena;
     NamedTextures& textures = *arena.New<NamedTextures>();
     textures.renderFromWorld = desc.camera.cameraTransform.RenderFromWorld();
-    // The frame's time for time-dependent temperature textures
-    TextureAnimation animation{options.frame, options.timeSeconds};
+    // The thermal module's temperature fields first (at the frame and time of the options;
+    // the animated ones are kept to move them to another frame), then kiln's float textures
+    TemperatureAnimation animation{options.frame, options.timeSeconds};
     for (auto& [name, tex] : desc.floatTextures) {
         TextureParameterDictionary params(&tex.parameters, &textures);
         textures.floatTextures.insert_or_assign(
-            name, CreateFloatTexture(tex.texName, tex.renderFromObject, params, tex.loc, arena,
-                                     diag, animation));
+            name, IsTemperatureFieldClass(tex.texName)
+                      ? CreateTemperatureField(tex.texName, tex.renderFromObject, params, tex.loc,
+                                               arena, diag, animation, &scene.animatedFields)
+                      : CreateFloatTexture(tex.texName, tex.renderFromObject, params, tex.loc,
+                                           arena, diag));
         tex.parameters.ReportUnused(diag);
     }
     for (auto& [name, tex] : desc.spectrumTextures) {
@@ -522,6 +530,7 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
     CreateAggregate(scene, desc, shapes, shapeLights, textures, materials, media, emitters, diag);
     PreprocessLights(scene);
     CreateLightSampler(scene);
+    scene.varyingThermalLights = emitters.VaryingLights();
     scene.features = DecideFeatures(scene, desc, shapes, materials, emitters, options);
     if (!scene.integrator.volumetric && !scene.media.empty())
         diag.Warn(desc.integrator.loc,
@@ -540,6 +549,22 @@ void Scene::SetJob(const RenderOptions& options, Diagnostics& diag) {
     job = std::move(next);
 }
 
+void Scene::SetAnimation(const TemperatureAnimation& next) {
+    if (next.frame == animation.frame && next.timeSeconds == animation.timeSeconds) return;
+    animation = next;
+    if (animatedFields.empty()) return;
+    for (TemperatureField* field : animatedFields) field->SetAnimation(animation);
+    // The thermal lights' power and sampling distributions follow their temperatures, with the
+    // shader they were estimated with at load (one sample per pixel), then light selection
+    SceneShader loadShader(&*camera, 1, jobRecipe.genericFootprints);
+    ThermalAreaLight::BSDFAt bsdfAt = [&](SurfaceInteraction& si, SampledWavelengths& l) {
+        return loadShader.GetBSDF(si, l);
+    };
+    tbb::parallel_for(size_t(0), varyingThermalLights.size(),
+                      [&](size_t i) { varyingThermalLights[i]->EstimatePower(bsdfAt); });
+    CreateLightSampler(*this);
+}
+
 std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const RenderOptions& options,
                                      Diagnostics& diag) {
     std::unique_ptr<Scene> scene(new Scene());
@@ -549,6 +574,7 @@ std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const RenderOptions
         // after)
         scene->arena.Budget().Charge(desc.estimatedBytes, "the scene's parsed directives");
         CreateScene(*scene, desc, options, diag);
+        scene->animation = TemperatureAnimation{options.frame, options.timeSeconds};
         scene->arena.Budget().Release(desc.estimatedBytes);
     } catch (const MemoryLimitError& e) {
         // Charges are reported at their directive where creation code can; the rest here

@@ -9,8 +9,8 @@
 #include "materials/materials.h"
 #include "render/scene.h"
 #include "textures/basic_textures.h"
-#include "textures/temperature_textures.h"
 #include "textures/texture_parameter_dictionary.h"
+#include "thermal/spatial_temperature_fields.h"
 
 namespace kiln {
 
@@ -25,7 +25,7 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
     if (!temperature && !shapes.empty())
         if (const Triangle* tri = shapes.front().GetIf<Triangle>();
             tri && tri->GetMesh()->HasAttribute("temperature"))
-            temperature = FloatTexture(arena.New<VertexAttributeTexture>("temperature", 0.f));
+            temperature = AsFloatTexture(arena.New<VertexAttributeField>("temperature", 0.f));
     if (!temperature) return heat;
     EmissionModel model =
         overrideModel ? *overrideModel
@@ -89,7 +89,7 @@ std::vector<int> ThermalEmitters::CreateLights(std::span<const Shape> shapes, co
         }
     }
     // One light per shape, built in parallel (each estimates its power), kept in shape order
-    std::vector<const ThermalAreaLight*> created(shapes.size());
+    std::vector<ThermalAreaLight*> created(shapes.size());
     ThermalAreaLight::BSDFAt bsdfAt = [this](SurfaceInteraction& si, SampledWavelengths& l) {
         return shader.GetBSDF(si, l);
     };
@@ -98,9 +98,10 @@ std::vector<int> ThermalEmitters::CreateLights(std::span<const Shape> shapes, co
         created[i] = arena.New<ThermalAreaLight>(stored, heat.material, heat.emission, bsdfAt,
                                                  uniform, powerSampling, alpha);
     });
-    for (const ThermalAreaLight* light : created) {
+    for (ThermalAreaLight* light : created) {
         indices.push_back(int(lights.size()));
-        lights.push_back(Light(light));
+        lights.push_back(Light(static_cast<const ThermalAreaLight*>(light)));
+        if (!uniform) varyingLights.push_back(light);
     }
 #else
     (void)shapes, (void)heat, (void)lights, (void)alpha;

@@ -25,6 +25,7 @@
 namespace kiln {
 
 class SceneShader;
+class ThermalAreaLight;
 
 // What scene creation needs to know about one Shape directive's heat.
 struct ShapeHeat {
@@ -55,6 +56,9 @@ class ThermalEmitters {
     // cut-outs (nullptr: none).
     std::vector<int> CreateLights(std::span<const Shape> shapes, const ShapeHeat& heat,
                                   std::vector<Light>& lights, const AlphaMask* alpha = nullptr);
+    // The lights made so far whose emission varies over their shape (their power was estimated
+    // from the temperature field and material, which may change with the animation).
+    const std::vector<ThermalAreaLight*>& VaryingLights() const { return varyingLights; }
     // Materials whose emissivity was tabulated, and the time that took (s).
     int TabulatedMaterials() const { return int(albedos.size()); }
     double TableSeconds() const { return tableSeconds; }
@@ -71,6 +75,7 @@ class ThermalEmitters {
     bool powerSampling;
     std::map<const Material*, const MaterialAlbedo*> albedos;
     const Material* black = nullptr;
+    std::vector<ThermalAreaLight*> varyingLights;
     double tableSeconds = 0;
 };
 

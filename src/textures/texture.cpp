@@ -2,9 +2,9 @@
 
 #include "textures/basic_textures.h"
 #include "textures/checkerboard_texture.h"
+#include "textures/float_texture_extension.h"
 #include "textures/image_texture.h"
 #include "textures/noise_textures.h"
-#include "textures/temperature_textures.h"
 #include "textures/texture_parameter_dictionary.h"
 
 namespace kiln {
@@ -55,8 +55,7 @@ bool IsUnsupportedTexture(const std::string& name) {
 
 FloatTexture CreateFloatTexture(const std::string& name, const Transform& renderFromTexture,
                                 const TextureParameterDictionary& params, const FileLoc& loc,
-                                ObjectArena& arena, Diagnostics& diag,
-                                const TextureAnimation& animation) {
+                                ObjectArena& arena, Diagnostics& diag) {
     if (name == "constant") return FloatConstantTexture::Create(params, arena);
     if (name == "scale") return FloatScaledTexture::Create(params, arena);
     if (name == "mix") return FloatMixTexture::Create(params, arena);
@@ -71,16 +70,6 @@ FloatTexture CreateFloatTexture(const std::string& name, const Transform& render
     if (name == "wrinkled") return WrinkledTexture::Create(params, renderFromTexture, arena);
     if (name == "windy")
         return arena.New<WindyTexture>(TextureMapping3D::Create(renderFromTexture));
-    // kiln's temperature sources
-    if (name == "gradient") return GradientTexture::Create(params, renderFromTexture, loc, arena);
-    if (name == "noise") return ThermalNoiseTexture::Create(params, renderFromTexture, loc, arena);
-    if (name == "heatmap")
-        return HeatMapTexture::Create(params, renderFromTexture, loc, arena, diag,
-                                      Float(animation.frame.value_or(0)));
-    if (name == "vertexattribute") return VertexAttributeTexture::Create(params, arena);
-    Float time = animation.timeSeconds.value_or(0);
-    if (name == "cooling") return TimeFunctionTexture::CreateCooling(params, loc, arena, time);
-    if (name == "keyframes") return TimeFunctionTexture::CreateKeyframes(params, loc, arena, time);
     if (IsUnsupportedTexture(name)) {
         diag.Warn(loc, "\"" + name + "\" float texture is not supported; using constant 0.5");
         return arena.New<FloatConstantTexture>(0.5f);

@@ -35,11 +35,7 @@ class FBmTexture;
 class WrinkledTexture;
 class WindyTexture;
 class FloatDotsTexture;
-class GradientTexture;
-class ThermalNoiseTexture;
-class HeatMapTexture;
-class VertexAttributeTexture;
-class TimeFunctionTexture;
+class FloatTextureExtension;
 class MarbleTexture;
 class SpectrumDotsTexture;
 class SpectrumConstantTexture;
@@ -54,17 +50,17 @@ class ImageTextureCache;
 
 // FloatTexture Definition
 class FloatTexture
-    : public ClosedSet<
-          const FloatConstantTexture*, const FloatBilerpTexture*, const FloatCheckerboardTexture*,
-          const FloatDirectionMixTexture*, const FloatImageTexture*, const FloatMixTexture*,
-          const FloatScaledTexture*, const FBmTexture*, const WrinkledTexture*, const WindyTexture*,
-          const FloatDotsTexture*, const GradientTexture*, const ThermalNoiseTexture*,
-          const HeatMapTexture*, const VertexAttributeTexture*, const TimeFunctionTexture*> {
+    : public ClosedSet<const FloatConstantTexture*, const FloatBilerpTexture*,
+                       const FloatCheckerboardTexture*, const FloatDirectionMixTexture*,
+                       const FloatImageTexture*, const FloatMixTexture*, const FloatScaledTexture*,
+                       const FBmTexture*, const WrinkledTexture*, const WindyTexture*,
+                       const FloatDotsTexture*, const FloatTextureExtension*> {
   public:
     using ClosedSet::ClosedSet;
 
     // Value at the point: dimensionless, or in the unit of what it stands for (e.g. kelvin
-    // for the temperature textures of temperature_textures.h).
+    // for the thermal module's temperature fields, an extension:
+    // textures/float_texture_extension.h).
     Float Evaluate(const TextureEvalContext& ctx) const;
     // Whether the value depends on the screen-space footprint (dpdx, dudx, ...): image
     // textures filter with it, checkerboards and noise antialias with it. Shading computes
@@ -108,21 +104,14 @@ struct NamedTextures {
 
 // Texture creation from `Texture "name" "float"|"spectrum" "class" ...`. Classes: constant,
 // scale, mix, directionmix, checkerboard, bilerp, imagemap, dots; float only: fbm, wrinkled,
-// windy and kiln's temperature sources gradient, noise, heatmap, vertexattribute, cooling,
-// keyframes (temperature_textures.h); spectrum only: marble. ptex (and the float-only/spectrum-only
-// classes asked for the other kind) warn and give a constant 0.5. An unknown class throws
-// SceneError at loc.
-// animation: the frame being rendered and its time in seconds, which the time-dependent
-// textures take unless their parameters set them ("cooling" and "keyframes": "float time";
-// "heatmap" sequences: "float frame").
-struct TextureAnimation {
-    std::optional<int> frame;
-    std::optional<Float> timeSeconds;
-};
+// windy; spectrum only: marble. ptex (and the float-only/spectrum-only classes asked for the
+// other kind, and the thermal module's temperature fields asked for as spectrum textures) warn
+// and give a constant 0.5. The temperature fields (gradient, noise, heatmap, vertexattribute,
+// cooling, keyframes) are created by the thermal module (thermal/temperature_field.h), which
+// scene creation asks first. An unknown class throws SceneError at loc.
 FloatTexture CreateFloatTexture(const std::string& className, const Transform& renderFromTexture,
                                 const TextureParameterDictionary& params, const FileLoc& loc,
-                                ObjectArena& arena, Diagnostics& diag,
-                                const TextureAnimation& animation = {});
+                                ObjectArena& arena, Diagnostics& diag);
 SpectrumTexture CreateSpectrumTexture(const std::string& className,
                                       const Transform& renderFromTexture,
                                       const TextureParameterDictionary& params, SpectrumType type,

@@ -1,8 +1,10 @@
 // A loaded scene re-rendered as new jobs (Scene::SetJob: samples per pixel, seed, crop window,
-// pixel bounds) renders exactly what a fresh load of the same file with those options renders,
-// gives back its film's memory, and keeps its job when a new one is invalid.
+// pixel bounds) or moved to another frame (Scene::SetAnimation) renders exactly what a fresh
+// load of the same file with those options renders, gives back its film's memory, and keeps its
+// job when a new one is invalid.
 #include <gtest/gtest.h>
 
+#include "lights/thermal_area_light.h"
 #include "render/renderer.h"
 #include "render_test_util.h"
 
@@ -104,6 +106,58 @@ TEST(RenderJob, AnInvalidJobIsAnErrorAndTheCurrentJobStays) {
     EXPECT_EQ(scene->job->film, before);
     Image image = RenderJob(*scene);
     EXPECT_EQ(image.Resolution(), Point2i(24, 16));
+}
+
+// Temperatures that follow the animation: a keyframed ramp across a sphere (its power is
+// sampled by position and changes with the frame) and a cooling disk
+const char* kAnimatedScene =
+    "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 16\n"
+    "Sampler \"independent\" \"integer pixelsamples\" 4\n"
+    "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 45\n"
+    "WorldBegin\n"
+    "Texture \"ramp\" \"float\" \"gradient\" \"point3 p0\" [-1 0 0] \"point3 p1\" [1 0 0]"
+    " \"float t0\" 0.5 \"float t1\" 1\n"
+    "Texture \"peak\" \"float\" \"keyframes\" \"float times\" [0 1] \"float values\" [900 2000]\n"
+    "Texture \"heat\" \"float\" \"scale\" \"texture tex\" \"ramp\" \"texture scale\" \"peak\"\n"
+    "Texture \"cool\" \"float\" \"cooling\" \"float T0\" 1800 \"float mass\" 0.2"
+    " \"float area\" 0.1\n"
+    "Material \"conductor\" \"float roughness\" 0.2 \"texture temperature\" \"heat\"\n"
+    "Shape \"sphere\" \"float radius\" 1\n"
+    "Material \"diffuse\" \"texture temperature\" \"cool\"\n"
+    "AttributeBegin Translate 1.5 0.5 0 Shape \"disk\" \"float radius\" 0.5 AttributeEnd\n";
+
+RenderOptions AtFrame(int frame) {
+    RenderOptions o;
+    o.frame = frame;
+    o.timeSeconds = frame / Float(4);
+    return o;
+}
+
+TEST(RenderJob, NewFramesRenderWhatFreshLoadsOfThoseFramesRender) {
+    Diagnostics diag(nullptr);
+    std::unique_ptr<Scene> scene = testing::BuildScene(kAnimatedScene, diag, AtFrame(0));
+    ASSERT_EQ(scene->animatedFields.size(), 2u);
+    ASSERT_FALSE(scene->varyingThermalLights.empty());
+    auto power = [&] {
+        Float p = 0;
+        for (const ThermalAreaLight* l : scene->varyingThermalLights) p += l->VisiblePower();
+        return p;
+    };
+    Float power0 = power();
+    Image frame0 = RenderJob(*scene);
+    for (int f : {3, 1}) {
+        Diagnostics fresh(nullptr);
+        std::unique_ptr<Scene> loaded = testing::BuildScene(kAnimatedScene, fresh, AtFrame(f));
+        scene->SetAnimation({AtFrame(f).frame, AtFrame(f).timeSeconds});
+        scene->SetJob(AtFrame(f), diag);
+        ExpectIdentical(RenderJob(*scene), RenderJob(*loaded));
+    }
+    EXPECT_NE(power(), power0);  // the lights estimated their power again
+    // And back to frame 0
+    scene->SetAnimation({0, Float(0)});
+    scene->SetJob(AtFrame(0), diag);
+    ExpectIdentical(RenderJob(*scene), frame0);
+    EXPECT_EQ(power(), power0);
 }
 
 }  // namespace

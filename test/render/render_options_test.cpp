@@ -7,7 +7,7 @@
 #include "render/scene.h"
 #include "render/scene_builder.h"
 #include "textures/basic_textures.h"
-#include "textures/temperature_textures.h"
+#include "textures/texture_eval_context.h"
 
 namespace kiln {
 namespace {
@@ -103,7 +103,7 @@ TEST(RenderOptions, TheFrameTimeReachesTimeDependentTextures) {
         }
         const FloatTexture& t =
             scene->lights[0].GetIf<ThermalAreaLight>()->Emission().TemperatureTexture();
-        return t.GetIf<TimeFunctionTexture>()->Value();
+        return t.Evaluate(TextureEvalContext());
     };
     Float atZero = temperature("", std::nullopt);
     Float fromOptions = temperature("", 120);

@@ -1,4 +1,4 @@
-#include "spectral/cooling.h"
+#include "thermal/cooling.h"
 
 #include <algorithm>
 #include <cmath>

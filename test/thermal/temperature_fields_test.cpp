@@ -1,6 +1,6 @@
-// Tests of the temperature textures: gradient, noise, heatmap (8-bit, float, sequences),
-// vertexattribute (trianglemesh and PLY meshes), cooling, keyframes, and their composition
-// with scale and mix. (Needs kiln_geometry linked into the textures tests.)
+// Tests of the thermal module's temperature fields: gradient, noise, heatmap (8-bit, float,
+// sequences), vertexattribute (trianglemesh and PLY meshes), cooling, keyframes, their
+// animation, and their composition with kiln's float textures scale and mix.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -10,13 +10,15 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../textures/param_helpers.h"
 #include "base/rng.h"
 #include "core/geometry/shape.h"
 #include "core/geometry/triangle.h"
-#include "param_helpers.h"
-#include "spectral/cooling.h"
-#include "textures/temperature_textures.h"
 #include "textures/texture_parameter_dictionary.h"
+#include "thermal/cooling.h"
+#include "thermal/heat_map_field.h"
+#include "thermal/temperature_field.h"
+#include "thermal/time_temperature_fields.h"
 
 namespace kiln {
 namespace {
@@ -35,7 +37,7 @@ TextureEvalContext At(Point3f p) {
     return ctx;
 }
 
-class TemperatureTexturesTest : public ::testing::Test {
+class TemperatureFieldsTest : public ::testing::Test {
   protected:
     void SetUp() override {
         dir = fs::temp_directory_path() / ("kiln_temperature_" + std::to_string(getpid()) + "_" +
@@ -44,10 +46,15 @@ class TemperatureTexturesTest : public ::testing::Test {
     }
     void TearDown() override { fs::remove_all(dir); }
 
+    // A temperature field or one of kiln's float textures, as scene creation makes them.
     FloatTexture Make(const std::string& cls, ParsedParameterVector v,
-                      const Transform& renderFromTexture = Transform()) {
+                      const Transform& renderFromTexture = Transform(),
+                      const TemperatureAnimation& animation = {}) {
         dicts.push_back(std::make_unique<ParameterDictionary>(std::move(v), nullptr));
         TextureParameterDictionary params(dicts.back().get(), &named);
+        if (IsTemperatureFieldClass(cls))
+            return CreateTemperatureField(cls, renderFromTexture, params, TestLoc(), arena, diag,
+                                          animation, &animated);
         return CreateFloatTexture(cls, renderFromTexture, params, TestLoc(), arena, diag);
     }
     // Declares a named float texture (as a Texture directive would).
@@ -86,9 +93,10 @@ class TemperatureTexturesTest : public ::testing::Test {
     NamedTextures named;
     Transform identity;
     std::vector<std::unique_ptr<ParameterDictionary>> dicts;
+    std::vector<TemperatureField*> animated;  // the animated fields Make created
 };
 
-TEST_F(TemperatureTexturesTest, GradientObjectSpaceClampAndLinear) {
+TEST_F(TemperatureFieldsTest, GradientObjectSpaceClampAndLinear) {
     ParsedParameterVector common = {Point3("p0", {0, 0, 0}), Point3("p1", {0, 0, 2}),
                                     Float1("t0", 1000), Float1("t1", 2000)};
     FloatTexture clamp = Make("gradient", common);
@@ -113,7 +121,7 @@ TEST_F(TemperatureTexturesTest, GradientObjectSpaceClampAndLinear) {
     EXPECT_FLOAT_EQ(moved.Evaluate(At({0, 0, 1})), 1250);
 }
 
-TEST_F(TemperatureTexturesTest, GradientWorldSpace) {
+TEST_F(TemperatureFieldsTest, GradientWorldSpace) {
     // Render space is world translated by -camera position ("cameraworld"); the CTM scales.
     named.renderFromWorld = Translate(Vector3f(-5, 1, 0));
     Transform renderFromTexture = named.renderFromWorld * Scale(3, 3, 3);
@@ -132,7 +140,7 @@ TEST_F(TemperatureTexturesTest, GradientWorldSpace) {
     EXPECT_THROW(Make("gradient", {Point3("p0", {1, 1, 1}), Point3("p1", {1, 1, 1})}), SceneError);
 }
 
-TEST_F(TemperatureTexturesTest, NoiseRangeDeterminismAndSeeds) {
+TEST_F(TemperatureFieldsTest, NoiseRangeDeterminismAndSeeds) {
     auto make = [&](int seed) {
         return Make("noise", {Float1("frequency", 3), Int1("octaves", 5), Float1("gain", 0.5f),
                               Float1("lacunarity", 2), Int1("seed", seed), Float1("min", 800),
@@ -162,7 +170,7 @@ TEST_F(TemperatureTexturesTest, NoiseRangeDeterminismAndSeeds) {
     EXPECT_THROW(Make("noise", {Int1("octaves", 0)}), SceneError);
 }
 
-TEST_F(TemperatureTexturesTest, HeatMap8BitWithRange) {
+TEST_F(TemperatureFieldsTest, HeatMap8BitWithRange) {
     // 4 x 1 grey PNG: code values 0, 51, 153, 255.
     std::string png = (dir / "heat.png").string();
     WriteImage(png, std::vector<unsigned char>{0, 51, 153, 255}, 4, 1, 1, OIIO::TypeDesc::UINT8);
@@ -188,7 +196,7 @@ TEST_F(TemperatureTexturesTest, HeatMap8BitWithRange) {
     EXPECT_THROW(Make("heatmap", {String1("filename", (dir / "none.png").string())}), SceneError);
 }
 
-TEST_F(TemperatureTexturesTest, HeatMapFloatKelvinAndSequences) {
+TEST_F(TemperatureFieldsTest, HeatMapFloatKelvinAndSequences) {
     // 2 x 2 float heat maps in kelvin; rows top to bottom.
     auto write = [&](const std::string& name, Float add) {
         std::vector<float> px = {1000 + add, 1100 + add, 1200 + add, 1300 + add};
@@ -209,9 +217,9 @@ TEST_F(TemperatureTexturesTest, HeatMapFloatKelvinAndSequences) {
     EXPECT_FLOAT_EQ(t.Evaluate(pixel(1, 1)), 1300);
 
     std::string pattern = (dir / "heat.####.exr").string();
-    EXPECT_EQ(HeatMapTexture::FrameFilename(pattern, 2), (dir / "heat.0002.exr").string());
-    EXPECT_EQ(HeatMapTexture::FrameFilename("a#b/c.exr", 3), "a#b/c.exr");
-    EXPECT_EQ(HeatMapTexture::FrameFilename("f##.exr", 123), "f123.exr");
+    EXPECT_EQ(HeatMapField::FrameFilename(pattern, 2), (dir / "heat.0002.exr").string());
+    EXPECT_EQ(HeatMapField::FrameFilename("a#b/c.exr", 3), "a#b/c.exr");
+    EXPECT_EQ(HeatMapField::FrameFilename("f##.exr", 123), "f123.exr");
     FloatTexture f2 = Make(
         "heatmap", {String1("filename", pattern), Float1("frame", 2), String1("filter", "point")});
     EXPECT_FLOAT_EQ(f2.Evaluate(pixel(1, 0)), 1500);
@@ -225,7 +233,7 @@ TEST_F(TemperatureTexturesTest, HeatMapFloatKelvinAndSequences) {
     EXPECT_THROW(Make("heatmap", {String1("filename", pattern), Float1("frame", 3)}), SceneError);
 }
 
-TEST_F(TemperatureTexturesTest, VertexAttributeOnTriangleMesh) {
+TEST_F(TemperatureFieldsTest, VertexAttributeOnTriangleMesh) {
     // Two triangles covering [0, 2] x [0, 1] at z = 0
     std::vector<Shape> shapes =
         MakeShapes("trianglemesh", {Floats("point3", "P", {0, 0, 0, 2, 0, 0, 2, 1, 0, 0, 1, 0}),
@@ -263,7 +271,7 @@ TEST_F(TemperatureTexturesTest, VertexAttributeOnTriangleMesh) {
     EXPECT_EQ(t.Evaluate(At({0, 0, 0})), 0);
 }
 
-TEST_F(TemperatureTexturesTest, VertexAttributeFromPLYRoundTrip) {
+TEST_F(TemperatureFieldsTest, VertexAttributeFromPLYRoundTrip) {
     std::string ply = (dir / "hot.ply").string();
     {
         std::ofstream f(ply);
@@ -292,7 +300,7 @@ TEST_F(TemperatureTexturesTest, VertexAttributeFromPLYRoundTrip) {
     EXPECT_NEAR(t.Evaluate(ctx), 900 + 400 + 300, 0.05f);
 }
 
-TEST_F(TemperatureTexturesTest, CoolingAndKeyframes) {
+TEST_F(TemperatureFieldsTest, CoolingAndKeyframes) {
     CoolingParameters p;
     p.T0 = 1500;
     p.emissivity = 0.8;
@@ -335,7 +343,7 @@ TEST_F(TemperatureTexturesTest, CoolingAndKeyframes) {
                  SceneError);
 }
 
-TEST_F(TemperatureTexturesTest, CompositionWithScaleAndMix) {
+TEST_F(TemperatureFieldsTest, CompositionWithScaleAndMix) {
     Declare(
         "grad", "gradient",
         {Point3("p0", {0, 0, 0}), Point3("p1", {0, 0, 1}), Float1("t0", 1000), Float1("t1", 2000)});
@@ -357,6 +365,69 @@ TEST_F(TemperatureTexturesTest, CompositionWithScaleAndMix) {
     CreateSpectrumTexture("gradient", Transform(), params, SpectrumType::Albedo, TestLoc(), arena,
                           diag);
     EXPECT_EQ(diag.WarningCount(), warnings + 1);
+}
+
+}  // namespace
+}  // namespace kiln
+
+namespace kiln {
+namespace {
+
+TEST_F(TemperatureFieldsTest, AnimatedFieldsFollowTheAnimationAndPinnedOnesDoNot) {
+    // Three frames of a 1 x 1 float heat map
+    for (int f = 0; f < 3; ++f)
+        WriteImage((dir / ("seq." + std::to_string(f) + ".exr")).string(),
+                   std::vector<float>{1000.f + 100 * f}, 1, 1, 1, OIIO::TypeDesc::FLOAT);
+    std::string pattern = (dir / "seq.#.exr").string();
+    TemperatureAnimation at1{1, 0.5f};
+    FloatTexture seq = Make("heatmap", {String1("filename", pattern)}, Transform(), at1);
+    FloatTexture pinned =
+        Make("heatmap", {String1("filename", pattern), Float1("frame", 0)}, Transform(), at1);
+    FloatTexture still =
+        Make("heatmap", {String1("filename", (dir / "seq.2.exr").string())}, Transform(), at1);
+    ParsedParameterVector coolingParams = {Float1("T0", 1500), Float1("mass", 1),
+                                           Float1("area", 0.1f)};
+    FloatTexture cool = Make("cooling", coolingParams, Transform(), at1);
+    ParsedParameterVector pinnedCooling = coolingParams;
+    pinnedCooling.push_back(Float1("time", 0));
+    FloatTexture coolPinned = Make("cooling", pinnedCooling, Transform(), at1);
+    ParsedParameterVector keys = {Floats("float", "times", {0, 1}),
+                                  Floats("float", "values", {500, 1500})};
+    FloatTexture key = Make("keyframes", keys, Transform(), at1);
+    Make("gradient", {}, Transform(), at1);  // spatial: never animated
+    // Only the fields without their own frame or time are animated
+    EXPECT_EQ(animated.size(), 3u);
+
+    TextureEvalContext ctx = At({0, 0, 0});
+    ctx.uv = Point2f(0.5f, 0.5f);
+    EXPECT_FLOAT_EQ(seq.Evaluate(ctx), 1100);
+    EXPECT_FLOAT_EQ(pinned.Evaluate(ctx), 1000);
+    EXPECT_FLOAT_EQ(still.Evaluate(ctx), 1200);
+    EXPECT_FLOAT_EQ(key.Evaluate(ctx), 1000);
+    Float coolAtHalf = cool.Evaluate(ctx);
+    EXPECT_LT(coolAtHalf, 1500);
+    EXPECT_FLOAT_EQ(coolPinned.Evaluate(ctx), 1500);
+
+    // Moved to frame 2.5 at 1.25 s: as if created there
+    TemperatureAnimation at2{2, 1.25f};
+    for (TemperatureField* f : animated) f->SetAnimation(at2);
+    EXPECT_FLOAT_EQ(seq.Evaluate(ctx), 1200);
+    EXPECT_FLOAT_EQ(pinned.Evaluate(ctx), 1000);
+    EXPECT_FLOAT_EQ(key.Evaluate(ctx), 1500);
+    EXPECT_FLOAT_EQ(coolPinned.Evaluate(ctx), 1500);
+    Float coolLater = cool.Evaluate(ctx);
+    EXPECT_LT(coolLater, coolAtHalf);
+    EXPECT_EQ(coolLater, Make("cooling", coolingParams, Transform(), at2).Evaluate(ctx));
+    EXPECT_EQ(seq.Evaluate(ctx),
+              Make("heatmap", {String1("filename", pattern)}, Transform(), at2).Evaluate(ctx));
+    // A frame that does not exist is an error naming the file; the field keeps its frame
+    try {
+        for (TemperatureField* f : animated) f->SetAnimation({7, 0});
+        ADD_FAILURE() << "frame 7 has no heat map";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("seq.7.exr"), std::string::npos) << e.what();
+    }
+    EXPECT_FLOAT_EQ(seq.Evaluate(ctx), 1200);
 }
 
 }  // namespace

@@ -7,8 +7,8 @@
 #include <functional>
 #include <vector>
 
-#include "spectral/cooling.h"
 #include "spectral/planck.h"
+#include "thermal/cooling.h"
 
 namespace kiln {
 namespace {
