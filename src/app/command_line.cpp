@@ -50,19 +50,19 @@ Float ParseFloat(const std::string& flag, const std::string& v) {
 }  // namespace
 
 std::string UsageText() {
-    return "usage: kiln SCENE.pbrt [options]\n"
+    return "usage: kiln SCENE.pbrt [options]   (options also as --name=value, as pbrt-v4)\n"
            "  -o, --output FILE     output image (EXR, PNG, JPEG, TIFF, ... by extension);\n"
            "                        may repeat; default: the scene's Film \"filename\"\n"
            "  --spp N               samples per pixel (overrides the scene's sampler)\n"
            "  --threads N           worker threads (default: all cores)\n"
            "  --seed S              sampler seed\n"
            "  --crop x0 x1 y0 y1    render only this window (NDC, as Film \"cropwindow\";\n"
-           "                        also --cropwindow)\n"
+           "                        also --cropwindow; or x0,x1,y0,y1 as pbrt-v4)\n"
            "  --checkpoint SECONDS  write the film's state to OUT.checkpoint every SECONDS (0:\n"
            "                        after every wave of samples); the same command run again\n"
            "                        resumes from it and ends bit-identical to an uninterrupted\n"
            "                        render; removed when the render is written\n"
-           "  --pixelbounds x0 x1 y0 y1\n"
+           "  --pixelbounds x0 x1 y0 y1  (or x0,x1,y0,y1)\n"
            "                        render only pixels [x0, x1) x [y0, y1) of the image (as\n"
            "                        pbrt-v4): a tile, bit-identical to the same pixels of a\n"
            "                        full render, written as 32-bit float EXR for kiln merge\n"
@@ -110,13 +110,90 @@ std::string UsageText() {
            "                 [--status] [-- SBATCH OPTIONS] (a Slurm job array, then merges)\n";
 }
 
-CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
+namespace {
+
+// Every option the render command knows (for "did you mean" suggestions)
+const char* const kOptions[] = {
+    "--help",         "--version",     "--output",           "--outfile",  "--spp",
+    "--threads",      "--nthreads",    "--memory-limit",     "--seed",     "--crop",
+    "--cropwindow",   "--checkpoint",  "--pixelbounds",      "--frames",   "--fps",
+    "--emission",     "--layered-mis", "--light-sampler",    "--stokes",   "--polarisation",
+    "--polarization", "--generic",     "--emitter-sampling", "--strategy", "--wavelengths",
+    "--view",         "--exposure",    "--verbose",          "--quiet"};
+
+// Levenshtein distance
+size_t EditDistance(const std::string& a, const std::string& b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        size_t diagonal = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = up;
+        }
+    }
+    return row[b.size()];
+}
+
+// "unknown option 'X'", with the nearest known option when it is close
+std::string UnknownOption(const std::string& option) {
+    std::string best;
+    size_t bestDistance = 3;  // at most two edits away
+    for (const char* known : kOptions)
+        if (size_t d = EditDistance(option, known); d < bestDistance) {
+            bestDistance = d;
+            best = known;
+        }
+    return "unknown option '" + option + "'" + (best.empty() ? "" : "; did you mean " + best + "?");
+}
+
+// pbrt-v4's "--name=value" as "--name" "value"
+std::vector<std::string> SplitAssignments(const std::vector<std::string>& args) {
+    std::vector<std::string> out;
+    for (const std::string& a : args) {
+        size_t eq = a.find('=');
+        if (a.rfind("--", 0) == 0 && eq != std::string::npos && eq > 2) {
+            out.push_back(a.substr(0, eq));
+            out.push_back(a.substr(eq + 1));
+        } else {
+            out.push_back(a);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
     CommandLineOptions o;
+    const std::vector<std::string> args = SplitAssignments(givenArgs);
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&](int n = 1) -> const std::string& {
             if (i + n >= args.size()) throw std::invalid_argument(a + " needs a value");
             return args[++i];
+        };
+        // x0 x1 y0 y1 as four arguments, or as pbrt-v4's one "x0,x1,y0,y1"
+        auto four = [&]() {
+            std::vector<std::string> v;
+            if (i + 1 < args.size() && args[i + 1].find(',') != std::string::npos) {
+                std::string list = args[++i];
+                for (size_t start = 0;;) {
+                    size_t comma = list.find(',', start);
+                    v.push_back(list.substr(start, comma - start));
+                    if (comma == std::string::npos) break;
+                    start = comma + 1;
+                }
+                if (v.size() != 4)
+                    throw std::invalid_argument(a + " needs x0,x1,y0,y1 (four values), got '" +
+                                                list + "'");
+                return v;
+            }
+            if (i + 4 >= args.size()) throw std::invalid_argument(a + " needs x0 x1 y0 y1");
+            for (int k = 0; k < 4; ++k) v.push_back(args[++i]);
+            return v;
         };
         if (a == "-h" || a == "--help")
             o.help = true;
@@ -137,9 +214,9 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
         } else if (a == "--seed")
             o.seed = ParseInt(a, value(), std::numeric_limits<int>::min());
         else if (a == "--crop" || a == "--cropwindow") {
-            if (i + 4 >= args.size()) throw std::invalid_argument(a + " needs x0 x1 y0 y1");
+            std::vector<std::string> v = four();
             Float c[4];
-            for (Float& v : c) v = ParseFloat(a, args[++i]);
+            for (int k = 0; k < 4; ++k) c[k] = ParseFloat(a, v[k]);
             if (!(c[0] >= 0 && c[0] < c[1] && c[1] <= 1 && c[2] >= 0 && c[2] < c[3] && c[3] <= 1))
                 throw std::invalid_argument(a + " expects 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1");
             o.crop = Bounds2f{Point2f(c[0], c[2]), Point2f(c[1], c[3])};
@@ -148,9 +225,9 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
             if (!(*o.checkpointSeconds >= 0) || !std::isfinite(*o.checkpointSeconds))
                 throw std::invalid_argument("--checkpoint expects seconds >= 0");
         } else if (a == "--pixelbounds") {
-            if (i + 4 >= args.size()) throw std::invalid_argument(a + " needs x0 x1 y0 y1");
+            std::vector<std::string> v = four();
             int c[4];
-            for (int& v : c) v = ParseInt(a, args[++i], 0);
+            for (int k = 0; k < 4; ++k) c[k] = ParseInt(a, v[k], 0);
             if (!(c[0] < c[1] && c[2] < c[3]))
                 throw std::invalid_argument(a + " expects 0 <= x0 < x1 and 0 <= y0 < y1 (pixels)");
             o.pixelBounds = Bounds2i{Point2i(c[0], c[2]), Point2i(c[1], c[3])};
@@ -228,7 +305,7 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& args) {
         } else if (a == "--quiet" || a == "-q")
             o.quiet = true;
         else if (!a.empty() && a[0] == '-')
-            throw std::invalid_argument("unknown option '" + a + "'");
+            throw std::invalid_argument(UnknownOption(a));
         else if (o.sceneFile.empty())
             o.sceneFile = a;
         else
@@ -269,7 +346,7 @@ int RunKiln(int argc, char** argv) {
         if (!options.help && !options.version && options.sceneFile.empty())
             throw std::invalid_argument("no scene file given");
     } catch (const std::invalid_argument& e) {
-        std::cerr << "kiln: " << e.what() << "\n" << UsageText();
+        std::cerr << "kiln: " << e.what() << "\nsee kiln --help\n";
         return 2;
     }
     if (options.help) {

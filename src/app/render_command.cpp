@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "app/checkpoint.h"
+#include "app/output_check.h"
 #include "app/progress.h"
 #include "base/atomic_file.h"
 #include "core/film/film.h"
@@ -165,6 +166,16 @@ int RenderFrame(const CommandLineOptions& options, LoadedScene& loaded, std::opt
                                           ? std::vector<std::string>{scene->job->film->Filename()}
                                           : outputPatterns)
         outputs.push_back(frame ? FrameFilename(pattern, *frame) : pattern);
+    // The scene file's own output is known only now: checked before rendering, as -o was
+    // before parsing
+    if (outputPatterns.empty()) {
+        try {
+            CheckImageOutput(outputs[0], options.view);
+        } catch (const std::invalid_argument& e) {
+            std::cerr << "kiln: error: Film \"filename\": " << e.what() << "; nothing rendered\n";
+            return 1;
+        }
+    }
 
     RenderSettings settings;
     settings.threads = options.threads.value_or(0);
@@ -273,10 +284,19 @@ int RenderFrame(const CommandLineOptions& options, LoadedScene& loaded, std::opt
 }  // namespace
 
 int RenderCommand(const CommandLineOptions& options) {
-    InstallInterruptHandlers();
-    Diagnostics diag(&std::cerr);
     std::optional<int> first;
     if (options.frames) first = options.frames->first;
+    // Every output can be written before anything is parsed or rendered
+    try {
+        CheckDisplayView(options.view);
+        for (const std::string& pattern : options.outputs)
+            CheckImageOutput(first ? FrameFilename(pattern, *first) : pattern, options.view);
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "kiln: " << e.what() << "\n";
+        return 2;
+    }
+    InstallInterruptHandlers();
+    Diagnostics diag(&std::cerr);
     int status = 0;
     std::optional<LoadedScene> loaded = LoadScene(options, first, diag, status);
     if (!loaded) return status;

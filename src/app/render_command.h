@@ -7,8 +7,8 @@
 
 namespace kiln {
 
-// Renders and writes the outputs; returns the exit status (as RunKiln). Installs the SIGINT
-// and SIGTERM handlers.
+// Checks every output (app/output_check.h: exit status 2, nothing parsed), then renders and
+// writes them; returns the exit status (as RunKiln). Installs the SIGINT and SIGTERM handlers.
 int RenderCommand(const CommandLineOptions& options);
 
 }  // namespace kiln

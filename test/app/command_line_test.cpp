@@ -47,6 +47,41 @@ TEST(CommandLineTest, RejectsBadArguments) {
     }
 }
 
+// pbrt-v4's spellings: --name=value, and x0,x1,y0,y1 in one argument
+TEST(CommandLineTest, TakesPbrtV4Syntax) {
+    CommandLineOptions o = ParseCommandLine({"s.pbrt", "--spp=4", "--cropwindow", "0,0.5,0.25,0.75",
+                                             "--pixelbounds=0,32,8,24", "--outfile=a.exr"});
+    EXPECT_EQ(o.spp, 4);
+    ASSERT_TRUE(o.crop && o.pixelBounds);
+    CommandLineOptions spaced = ParseCommandLine({"s.pbrt", "--crop", "0", "0.5", "0.25", "0.75"});
+    EXPECT_EQ(o.crop->pMin, spaced.crop->pMin);
+    EXPECT_EQ(o.crop->pMax, spaced.crop->pMax);
+    EXPECT_EQ(o.pixelBounds->pMin, Point2i(0, 8));
+    EXPECT_EQ(o.pixelBounds->pMax, Point2i(32, 24));
+    EXPECT_EQ(o.outputs, std::vector<std::string>{"a.exr"});
+    for (std::vector<std::string> bad :
+         {std::vector<std::string>{"s.pbrt", "--cropwindow", "0,1,0"},
+          {"s.pbrt", "--pixelbounds", "0,8,x,6"},
+          {"s.pbrt", "--spp="},
+          {"s.pbrt", "--cropwindow", "0,0.5,0.5,0.25"}})
+        EXPECT_THROW(ParseCommandLine(bad), std::invalid_argument) << bad.back();
+}
+
+TEST(CommandLineTest, AnUnknownOptionSuggestsTheNearestKnownOne) {
+    auto message = [](const std::string& option) {
+        try {
+            ParseCommandLine({"s.pbrt", option});
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_NE(message("--sp").find("did you mean --spp?"), std::string::npos) << message("--sp");
+    EXPECT_NE(message("--pixelbound").find("did you mean --pixelbounds?"), std::string::npos);
+    EXPECT_NE(message("--emision").find("did you mean --emission?"), std::string::npos);
+    EXPECT_EQ(message("--frobnicate").find("did you mean"), std::string::npos);
+}
+
 TEST(CommandLineTest, FrameFilenamesArePadded) {
     EXPECT_EQ(FrameFilename("out/f.####.exr", 7), "out/f.0007.exr");
     EXPECT_EQ(FrameFilename("f#.png", 12), "f12.png");

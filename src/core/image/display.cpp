@@ -42,6 +42,12 @@ std::string OCIOConfigPath() {
     return std::string(KILN_OCIO_CONFIG_DIR) + "/config.ocio";
 }
 
+std::string UnknownViewMessage(const std::string& view) {
+    std::string views;
+    for (const std::string& v : DisplayViews()) views += (views.empty() ? "" : ", ") + v;
+    return "unknown display view \"" + view + "\" (the views are " + views + ")";
+}
+
 std::vector<std::string> DisplayViews() {
     OCIO::ConstConfigRcPtr config = LoadConfig();
     std::vector<std::string> views;
@@ -93,9 +99,7 @@ Image ToDisplayEncodedFloat(const Image& linearRGB, const RGBColorSpace& colorSp
     bool known = false;
     for (int i = 0; i < config->getNumViews(kDisplay); ++i)
         known = known || settings.view == config->getView(kDisplay, i);
-    if (!known)
-        throw std::runtime_error("unknown display view \"" + settings.view + "\" in " +
-                                 OCIOConfigPath());
+    if (!known) throw std::runtime_error(UnknownViewMessage(settings.view));
     bool raw = settings.view == "Raw";
     bool standard = settings.view == "Standard";
 

@@ -51,6 +51,8 @@ struct DisplaySettings {
 std::string OCIOConfigPath();
 // The views of the config's sRGB display. Throws std::runtime_error if the config is broken.
 std::vector<std::string> DisplayViews();
+// "unknown display view "V" (the views are Standard, Filmic, ...)"
+std::string UnknownViewMessage(const std::string& view);
 
 // Hue-preserving gamut mapping of steps 2 and 3 above, on linear Rec.709 RGB.
 // scaleAboveOne: also apply step 3 (the Standard view).

@@ -173,6 +173,7 @@ class ExrImageCodec final : public ImageCodec {
         }
     }
 
+    bool CanEncode(const std::string& format) const override { return format == "exr"; }
     std::string Encode(const std::string&, const ImageFileSpec& spec,
                        const void* data) const override {
         try {

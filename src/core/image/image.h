@@ -159,5 +159,8 @@ class Image {
 
 // Lower-case extension of path without the dot ("exr"), or "".
 std::string FileExtension(std::string_view path);
+// Whether Image::Write writes files with this extension (as FileExtension gives it): exr, png
+// and pfm always; every other format if OpenImageIO has a writer for it (this loads its plugin).
+bool CanWriteImageFormat(const std::string& extension);
 
 }  // namespace kiln

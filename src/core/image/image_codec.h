@@ -62,6 +62,8 @@ class ImageCodec {
     // file itself and sees every write error (a full disk); throws std::runtime_error.
     virtual std::string Encode(const std::string& format, const ImageFileSpec& spec,
                                const void* data) const = 0;
+    // Whether Encode can write the format the extension `format` names.
+    virtual bool CanEncode(const std::string& format) const = 0;
 };
 
 // OpenEXR through the OpenEXR library

@@ -16,6 +16,7 @@
 #include "base/system_memory.h"
 #include "core/image/image.h"
 #include "core/image/image_codec.h"
+#include "core/image/pfm_codec.h"
 #include "core/image/png_codec.h"
 #include "spectral/color.h"
 
@@ -129,7 +130,7 @@ Image Image::Read(const std::string& filename, ImageMetadata* metadata,
             charge(size.width, size.height, size.channels, size.bytes);
             charged = true;
             in = ExrCodec().Open(filename);
-        } else if (!(in = OpenPng(filename))) {
+        } else if (!(in = OpenPng(filename)) && !(in = OpenPfm(filename))) {
             in = OIIOCodec().Open(filename);
         }
     } catch (const MemoryLimitError&) {
@@ -198,6 +199,12 @@ Image Image::Read(const std::string& filename, ImageMetadata* metadata,
 }
 
 // Image Writing
+bool CanWriteImageFormat(const std::string& ext) {
+    if (ext == "exr" || ext == "png" || ext == "pfm") return true;
+    if (ext.empty()) return false;
+    return OIIOCodec().CanEncode(ext);
+}
+
 void Image::Write(const std::string& filename, const ImageMetadata& metadata) const {
     std::string ext = FileExtension(filename);
     if (ext.empty()) Fail(filename, "no file extension to choose the format");
@@ -282,6 +289,8 @@ void Image::Write(const std::string& filename, const ImageMetadata& metadata) co
             bytes = ExrCodec().Encode(ext, spec, data);
         else if (ext == "png" && PngWriterHandles(spec))
             bytes = EncodePng(spec, data);
+        else if (ext == "pfm" && PfmWriterHandles(spec))
+            bytes = EncodePfm(spec, data);
         else
             bytes = OIIOCodec().Encode(ext, spec, data);
     } catch (const std::runtime_error& e) {

@@ -108,6 +108,12 @@ class OIIOImageCodec final : public ImageCodec {
         return std::make_unique<OIIOReader>(std::move(in));
     }
 
+    bool CanEncode(const std::string& format) const override {
+        // OpenImageIO finds its writer by the file name's extension
+        return format.find_first_of("/.") == std::string::npos &&
+               OIIO::ImageOutput::create("kiln-format-check." + format) != nullptr;
+    }
+
     std::string Encode(const std::string& format, const ImageFileSpec& spec,
                        const void* data) const override {
         const int nc = int(spec.channelNames.size());
