@@ -6,10 +6,12 @@
 
 #include "app/farm.h"
 #include "app/image_diff.h"
+#include "app/image_tools.h"
 #include "app/merge.h"
 #include "app/render_command.h"
 #include "base/memory_budget.h"
 #include "core/film/film.h"
+#include "core/image/image.h"
 #include "render/render_options.h"
 
 #ifndef KILN_VERSION
@@ -103,6 +105,8 @@ std::string UsageText() {
            "  --quiet               no progress output\n"
            "  --help, --version\n"
            "   or: kiln diff A B [--metric M] [--threshold X] [--out DIFF] (kiln diff --help)\n"
+           "   or: kiln convert IN.exr -o OUT.png [--view V] [--exposure EV|auto]\n"
+           "   or: kiln info IMAGE (resolution, channels, kiln's metadata)\n"
            "   or: kiln merge PART.exr... -o FULL.exr (tiles of one frame)\n"
            "   or: kiln merge --samples RENDER.exr... -o OUT.exr (renders with other seeds)\n"
            "       (either with [--memory-limit SIZE])\n"
@@ -312,6 +316,13 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
             throw std::invalid_argument("more than one scene file given ('" + o.sceneFile +
                                         "' and '" + a + "')");
     }
+    if (std::string ext = FileExtension(o.sceneFile);
+        ext == "exr" || ext == "png" || ext == "pfm" || ext == "hdr" || ext == "jpg" ||
+        ext == "jpeg" || ext == "tif" || ext == "tiff")
+        throw std::invalid_argument("'" + o.sceneFile +
+                                    "' is an image, not a scene; to turn it into another format: "
+                                    "kiln convert " +
+                                    o.sceneFile + " -o OUT.png");
     if (o.frames) {
         for (const std::string& out : o.outputs)
             if (out.find('#') == std::string::npos && o.frames->first != o.frames->second)
@@ -340,6 +351,10 @@ int RunKiln(int argc, char** argv) {
         return RunFarm(std::vector<std::string>(argv + 2, argv + argc));
     if (argc >= 2 && std::string(argv[1]) == "merge")
         return RunMerge(std::vector<std::string>(argv + 2, argv + argc));
+    if (argc >= 2 && std::string(argv[1]) == "convert")
+        return RunConvert(std::vector<std::string>(argv + 2, argv + argc));
+    if (argc >= 2 && std::string(argv[1]) == "info")
+        return RunInfo(std::vector<std::string>(argv + 2, argv + argc));
     CommandLineOptions options;
     try {
         options = ParseCommandLine(std::vector<std::string>(argv + 1, argv + argc));

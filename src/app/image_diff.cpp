@@ -182,7 +182,7 @@ int RunImageDiff(const std::vector<std::string>& args) {
     std::string metric = "relmse", out;
     std::optional<double> threshold;
     auto usage = [](const std::string& msg) {
-        std::cerr << "kiln diff: " << msg << "\n" << ImageDiffUsageText();
+        std::cerr << "kiln diff: " << msg << "\nsee kiln diff --help\n";
         return 2;
     };
     for (size_t i = 0; i < args.size(); ++i) {

@@ -306,6 +306,8 @@ void RGBFilm::WriteImage(const std::string& filename, ImageMetadata metadata,
     const bool part = b.pMin.x != 0 || b.pMin.y != 0 || b.pMax.x != opts.fullResolution.x ||
                       b.pMax.y != opts.fullResolution.y;
     metadata.strings["kiln:savefp16"] = opts.savefp16 ? "true" : "false";
+    // The display view the film asks for (kiln convert uses it unless told otherwise)
+    metadata.strings["kiln:view"] = viewOverride.empty() ? opts.view : viewOverride;
     if (ext == "exr") {
         if (opts.savefp16 && !part) {
             // Half floats end at 65504, which absolute thermal radiance passes near 6000 K:

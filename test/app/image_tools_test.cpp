@@ -1,0 +1,111 @@
+// kiln convert and kiln info (app/image_tools.h): an EXR render converted to PNG is the PNG the
+// render writes itself, with the same view and exposure (fixed or automatic); linear outputs are
+// the EXR scaled by 2^EV; info lists the Stokes layers and kiln's metadata; bad outputs fail
+// before the input is read.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "app_test_util.h"
+#include "core/image/image.h"
+
+namespace kiln {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr auto Q = testing::ShellQuote;
+
+class ImageTools : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir = fs::path(::testing::TempDir()) / ("kiln_image_tools_" + std::to_string(getpid()));
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        scene = (dir / "scene.pbrt").string();
+        std::ofstream(scene)
+            << "Film \"rgb\" \"integer xresolution\" 20 \"integer yresolution\" 14"
+               " \"bool savefp16\" false \"string view\" \"Glow\"\n"
+               "Sampler \"independent\" \"integer pixelsamples\" 4\n"
+               "LookAt 0 0 -4 0 0 0 0 1 0 Camera \"perspective\"\nWorldBegin\n"
+               "LightSource \"infinite\" \"rgb L\" [0.05 0.05 0.05]\n"
+               "Material \"conductor\" \"float roughness\" 0.1 \"float temperature\" 1300\n"
+               "Shape \"sphere\"\n";
+    }
+    void TearDown() override { fs::remove_all(dir); }
+    int Run(const std::string& args) {
+        std::string command = "cd " + Q(dir.string()) + " && " + Q(kiln) + " " + args + " > " +
+                              Q((dir / "out.txt").string()) + " 2>&1";
+        int status = std::system(command.c_str());
+        output = testing::ReadAll((dir / "out.txt").string());
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+    std::vector<float> Pixels(const std::string& name) {
+        return testing::Pixels((dir / name).string());
+    }
+
+    fs::path dir;
+    std::string scene, output;
+    const std::string kiln = std::string(KILN_BINARY_DIR) + "/kiln";
+};
+
+TEST_F(ImageTools, ConvertGivesWhatTheRenderWritesItself) {
+    ASSERT_EQ(Run(Q(scene) + " --quiet -o r.exr -o r.png"), 0) << output;
+    ASSERT_EQ(Run(Q(scene) + " --quiet --exposure 1.5 -o e.png"), 0) << output;
+    ASSERT_EQ(Run(Q(scene) + " --quiet --exposure auto -o a.png"), 0) << output;
+    // The film's view (Glow) travels in the EXR
+    ASSERT_EQ(Run("convert r.exr -o c.png"), 0) << output;
+    EXPECT_EQ(Pixels("c.png"), Pixels("r.png"));
+    ASSERT_EQ(Run("convert r.exr -o ce.png --exposure 1.5"), 0) << output;
+    EXPECT_EQ(Pixels("ce.png"), Pixels("e.png"));
+    ASSERT_EQ(Run("convert r.exr -o ca.png --exposure auto"), 0) << output;
+    EXPECT_EQ(Pixels("ca.png"), Pixels("a.png"));
+    // Another view changes the picture
+    ASSERT_EQ(Run("convert r.exr -o s.png --view Standard"), 0) << output;
+    EXPECT_NE(Pixels("s.png"), Pixels("r.png"));
+    // Linear outputs: the EXR's R, G, B times 2^EV
+    ASSERT_EQ(Run("convert r.exr -o l.pfm --exposure -1"), 0) << output;
+    Image exr = Image::Read((dir / "r.exr").string()), pfm = Image::Read((dir / "l.pfm").string());
+    ASSERT_EQ(pfm.Resolution(), exr.Resolution());
+    for (int y = 0; y < exr.Resolution().y; ++y)
+        for (int x = 0; x < exr.Resolution().x; ++x)
+            for (int c = 0; c < 3; ++c)
+                ASSERT_EQ(pfm.GetChannel({x, y}, c), exr.GetChannel({x, y}, c) * 0.5f);
+}
+
+TEST_F(ImageTools, InfoListsLayersAndMetadata) {
+    ASSERT_EQ(Run(Q(scene) + " --quiet --stokes --seed 7 -o p.exr"), 0) << output;
+    ASSERT_EQ(Run("info p.exr"), 0) << output;
+    for (const char* expect : {"resolution    20 x 14", "channels      15", "S1          R, G, B",
+                               "spp           4", "seed          7", "view          Glow"})
+        EXPECT_NE(output.find(expect), std::string::npos) << expect << "\n" << output;
+    EXPECT_EQ(Run("info missing.exr"), 1);
+    EXPECT_NE(output.find("missing.exr"), std::string::npos) << output;
+    EXPECT_EQ(Run("info"), 2);
+}
+
+TEST_F(ImageTools, BadOutputsAndInputsAreErrors) {
+    ASSERT_EQ(Run(Q(scene) + " --quiet -o r.exr"), 0) << output;
+    // The output is checked before the (missing) input is read
+    EXPECT_EQ(Run("convert missing.exr -o no/such/x.png"), 2);
+    EXPECT_NE(output.find("no/such/x.png"), std::string::npos) << output;
+    EXPECT_EQ(output.find("missing.exr"), std::string::npos) << output;
+    EXPECT_EQ(Run("convert r.exr -o x.png --view Filmc"), 2);
+    EXPECT_NE(output.find("the views are"), std::string::npos) << output;
+    EXPECT_EQ(Run("convert r.exr -o x.png --exposure bright"), 2);
+    EXPECT_EQ(Run("convert missing.exr -o x.png"), 1);
+    EXPECT_NE(output.find("missing.exr"), std::string::npos) << output;
+    EXPECT_FALSE(fs::exists(dir / "x.png"));
+    // An image given where a scene is expected points to kiln convert
+    EXPECT_EQ(Run("r.exr -o x.png"), 2);
+    EXPECT_NE(output.find("kiln convert r.exr"), std::string::npos) << output;
+}
+
+}  // namespace
+}  // namespace kiln
