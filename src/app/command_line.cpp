@@ -10,7 +10,9 @@
 #include "app/merge.h"
 #include "app/render_command.h"
 #include "base/memory_budget.h"
+#include "base/plugin.h"
 #include "core/film/film.h"
+#include "core/image/display.h"
 #include "core/image/image.h"
 #include "render/render_options.h"
 
@@ -370,6 +372,14 @@ int RunKiln(int argc, char** argv) {
     }
     if (options.version) {
         std::cout << "kiln " << KILN_VERSION << "\n";
+        // Where this kiln finds what it loads at run time (an installed tree or the build tree)
+        std::cout << "  display config: " << OCIOConfigPath() << "\n";
+        for (const char* plugin : {"libkiln_oiio.so", "libkiln_openvdb.so"}) {
+            std::string dir = PluginDirectory(plugin);
+            std::cout << "  plugin: " << (dir.empty() ? std::string("(not found) ") + plugin
+                                                      : dir + "/" + plugin)
+                      << "\n";
+        }
         return 0;
     }
 

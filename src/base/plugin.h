@@ -4,13 +4,24 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace kiln {
 
+// The folder of the running executable ("" if /proc/self/exe cannot be read).
+std::string ExecutableDirectory();
+
+// Where plugins are looked for, in order: beside the running executable (a build tree), in the
+// installed tree it belongs to (<executable's folder>/../lib/kiln: `cmake --install`, the
+// Debian package), then the build directory kiln was built in (KILN_PLUGIN_DIR).
+std::vector<std::string> PluginDirectories();
+
+// The first of PluginDirectories() that holds `library`; "" if none does.
+std::string PluginDirectory(const std::string& library);
+
 // The address of `symbol` in plugin `library` ("libkiln_oiio.so"), loaded once per process and
-// never unloaded. The library is looked for beside the running executable, then in the build
-// directory it was built in (KILN_PLUGIN_DIR). Throws std::runtime_error naming the paths tried
-// and dlerror()'s reason when neither loads or the symbol is missing. Thread-safe.
+// never unloaded, from the first of PluginDirectories() where it loads. Throws std::runtime_error naming the paths tried
+// and dlerror()'s reason when none loads or the symbol is missing. Thread-safe.
 void* PluginSymbol(const std::string& library, const char* symbol);
 
 }  // namespace kiln

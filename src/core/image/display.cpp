@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
+
+#include "base/plugin.h"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -39,6 +42,13 @@ void Apply(const OCIO::ConstConfigRcPtr& config, const char* from, const char* t
 
 std::string OCIOConfigPath() {
     if (const char* env = std::getenv("KILN_OCIO_CONFIG"); env && *env) return env;
+    // An installed kiln: <prefix>/bin/kiln and <prefix>/share/kiln/ocio
+    if (std::string exe = ExecutableDirectory(); !exe.empty()) {
+        std::filesystem::path installed =
+            std::filesystem::path(exe).parent_path() / "share" / "kiln" / "ocio" / "config.ocio";
+        std::error_code ec;
+        if (std::filesystem::exists(installed, ec)) return installed.string();
+    }
     return std::string(KILN_OCIO_CONFIG_DIR) + "/config.ocio";
 }
 

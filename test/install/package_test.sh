@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# kiln installed elsewhere renders: `cmake --install` into a fresh prefix, and the Debian package
+# that `cpack -G DEB` builds, unpacked into a fresh root, each run from an unrelated working
+# directory. Each must find its plugins and display config in its own tree (kiln --version
+# says where), render a PNG (display config) and a JPEG (OpenImageIO plugin), and the package
+# must depend only on Debian 12 packages that are installed here (what apt installs with it).
+#   package_test.sh BUILD_DIR
+set -euo pipefail
+build="$(cd "$1" && pwd)"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+cat >"$tmp/scene.pbrt" <<'SCENE'
+Film "rgb" "integer xresolution" 24 "integer yresolution" 16
+Sampler "independent" "integer pixelsamples" 2
+LookAt 0 0 -4 0 0 0 0 1 0
+Camera "perspective"
+WorldBegin
+Material "conductor" "float temperature" 1400
+Shape "sphere"
+SCENE
+fail() { echo "package_test: $*" >&2; exit 1; }
+
+# Renders with the kiln at $1 from an unrelated folder; its run-time files must lie under $2
+check_tree() {
+    local kiln="$1" tree="$2" out="$tmp/out-$(basename "$2")"
+    mkdir -p "$out"
+    (cd / && "$kiln" --version) >"$out/version.txt"
+    grep -q "display config: $tree/" "$out/version.txt" || fail "$kiln: config not in $tree: $(cat "$out/version.txt")"
+    [ "$(grep -c "plugin: $tree/" "$out/version.txt")" = 2 ] || fail "$kiln: plugins not in $tree: $(cat "$out/version.txt")"
+    (cd / && "$kiln" "$tmp/scene.pbrt" --quiet -o "$out/a.png" -o "$out/a.jpg" -o "$out/a.exr") ||
+        fail "$kiln could not render"
+    for f in a.png a.jpg a.exr; do [ -s "$out/$f" ] || fail "$kiln wrote no $f"; done
+}
+
+# 1. cmake --install into a prefix
+cmake --install "$build" --prefix "$tmp/prefix" >/dev/null
+check_tree "$tmp/prefix/bin/kiln" "$tmp/prefix"
+
+# 2. The Debian package, unpacked
+cpack --config "$build/CPackConfig.cmake" -G DEB -B "$tmp/deb" >/dev/null
+deb="$(ls "$tmp"/deb/kiln_*.deb)"
+dpkg-deb -x "$deb" "$tmp/root"
+check_tree "$tmp/root/usr/bin/kiln" "$tmp/root/usr"
+depends="$(dpkg-deb -f "$deb" Depends)"
+[ -n "$depends" ] || fail "the package declares no dependencies"
+# Every dependency (name before any version) is a Debian package installed here
+IFS=',' read -ra deps <<<"$depends"
+for d in "${deps[@]}"; do
+    name="$(echo "$d" | sed -e 's/^ *//' -e 's/ .*//')"
+    dpkg-query -W -f='${Status}' "$name" 2>/dev/null | grep -q "install ok installed" ||
+        fail "dependency $name is not an installed package"
+done
+echo "package_test: install tree and $(basename "$deb") render (${#deps[@]} dependencies)"
