@@ -71,16 +71,22 @@ TEST(MemoryLimit, MeshesAndCurvesAreChargedBeforeTheyAreMade) {
 }
 
 TEST(MemoryLimit, ImagesAreChargedFromTheirHeader) {
-    // A PFM header claiming 30000 x 30000 RGB pixels (10.8 GB as floats) over 12 bytes of data
-    std::string pfm = ::testing::TempDir() + "/kiln_claims_much.pfm";
-    std::ofstream(pfm, std::ios::binary) << "PF\n30000 30000\n-1.0\n" << std::string(12, '\0');
-    std::string e = ErrorUnderLimit(kSmallFilm +
-                                        "Texture \"t\" \"spectrum\" \"imagemap\" "
-                                        "\"string filename\" \"" +
-                                        pfm + "\"\n",
-                                    2e9);
+    // A PPM header (read by OpenImageIO) claiming 30000 x 30000 RGB pixels (10.8 GB as floats)
+    // over 12 bytes of data
+    std::string ppm = ::testing::TempDir() + "/kiln_claims_much.ppm";
+    std::ofstream(ppm, std::ios::binary) << "P6\n30000 30000\n255\n" << std::string(12, '\0');
+    auto texture = [](const std::string& file) {
+        return kSmallFilm + "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" \"" +
+               file + "\"\n";
+    };
+    std::string e = ErrorUnderLimit(texture(ppm), 2e9);
     EXPECT_NE(e.find("30000 x 30000 pixels, 3 channels) needs"), std::string::npos) << e;
     EXPECT_NE(e.find("--memory-limit"), std::string::npos) << e;
+    // kiln's own PFM reader refuses such a header before it allocates anything
+    std::string pfm = ::testing::TempDir() + "/kiln_claims_much.pfm";
+    std::ofstream(pfm, std::ios::binary) << "PF\n30000 30000\n-1.0\n" << std::string(12, '\0');
+    e = ErrorUnderLimit(texture(pfm), 2e9);
+    EXPECT_NE(e.find("does not hold 30000 x 30000 x 3 floats"), std::string::npos) << e;
 }
 
 // Issue 23: 10^6 spheres took 1.76 GB under a 200 MB limit. The parsed directives are charged
