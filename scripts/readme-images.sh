@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Renders the small images shown in README.md ("Glowing objects") into docs/images/.
+# Renders the small images of README.md and the user guide (docs/guide/) into docs/images/.
 # Usage: scripts/readme-images.sh [spp] [all|thermal|polarization|media]   (default 64 all)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

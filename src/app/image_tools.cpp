@@ -24,7 +24,7 @@ int Usage(const std::string& command, const std::string& message, const char* us
 }
 
 constexpr const char* kConvertUsage =
-    "kiln convert IN -o OUT... [--view Standard|Filmic|ACES|Glow|Raw] [--exposure EV|auto]";
+    "kiln convert IN... -o OUT... [--view Standard|Filmic|ACES|Glow|Raw] [--exposure EV|auto]";
 constexpr const char* kInfoUsage = "kiln info IMAGE";
 
 bool IsLinearFormat(const std::string& ext) { return ext == "exr" || ext == "pfm" || ext == "hdr"; }
@@ -32,7 +32,8 @@ bool IsLinearFormat(const std::string& ext) { return ext == "exr" || ext == "pfm
 }  // namespace
 
 int RunConvert(const std::vector<std::string>& args) {
-    std::string in, view;
+    std::vector<std::string> ins;
+    std::string view;
     std::vector<std::string> outs;
     std::optional<std::string> exposure;
     for (size_t i = 0; i < args.size(); ++i) {
@@ -74,14 +75,11 @@ int RunConvert(const std::vector<std::string>& args) {
             }
         } else if (!a.empty() && a[0] == '-') {
             return Usage("convert", "unknown option '" + a + "'", kConvertUsage);
-        } else if (in.empty()) {
-            in = a;
         } else {
-            return Usage("convert", "more than one input ('" + in + "' and '" + a + "')",
-                         kConvertUsage);
+            ins.push_back(a);
         }
     }
-    if (in.empty()) return Usage("convert", "no input image", kConvertUsage);
+    if (ins.empty()) return Usage("convert", "no input image", kConvertUsage);
     if (outs.empty()) return Usage("convert", "no output (-o OUT)", kConvertUsage);
     try {
         CheckDisplayView(view);
@@ -91,12 +89,43 @@ int RunConvert(const std::vector<std::string>& args) {
         return 2;
     }
     try {
+        // The inputs' R, G, B side by side, left to right (the first one's metadata)
         ImageMetadata metadata;
-        Image image = Image::Read(in, &metadata);
-        if (image.ChannelIndex("R") < 0 || image.ChannelIndex("G") < 0 ||
-            image.ChannelIndex("B") < 0)
-            throw std::runtime_error(in + ": has no R, G, B channels to convert");
-        Image rgb = image.SelectChannels({"R", "G", "B"}).ConvertToFormat(PixelFormat::Float);
+        Image rgb;
+        for (const std::string& in : ins) {
+            ImageMetadata m;
+            Image image = Image::Read(in, &m);
+            if (image.ChannelIndex("R") < 0 || image.ChannelIndex("G") < 0 ||
+                image.ChannelIndex("B") < 0)
+                throw std::runtime_error(in + ": has no R, G, B channels to convert");
+            Image part = image.SelectChannels({"R", "G", "B"}).ConvertToFormat(PixelFormat::Float);
+            if (!rgb) {
+                metadata = m;
+                rgb = part;
+                continue;
+            }
+            if (part.Resolution().y != rgb.Resolution().y)
+                throw std::runtime_error(in + ": " + std::to_string(part.Resolution().y) +
+                                         " rows, the images before it " +
+                                         std::to_string(rgb.Resolution().y) +
+                                         " (side by side they need the same height)");
+            if (m.colorSpace != metadata.colorSpace)
+                throw std::runtime_error(in + ": another colour space than " + ins[0]);
+            Image joined(PixelFormat::Float,
+                         {rgb.Resolution().x + part.Resolution().x, rgb.Resolution().y},
+                         {"R", "G", "B"});
+            for (int y = 0; y < joined.Resolution().y; ++y)
+                for (int x = 0; x < joined.Resolution().x; ++x)
+                    for (int c = 0; c < 3; ++c)
+                        joined.SetChannel({x, y}, c,
+                                          x < rgb.Resolution().x
+                                              ? rgb.GetChannel({x, y}, c)
+                                              : part.GetChannel({x - rgb.Resolution().x, y}, c));
+            rgb = std::move(joined);
+            // Parts of a frame no more
+            metadata.fullResolution.reset();
+            metadata.pixelBounds.reset();
+        }
         const RGBColorSpace& colorSpace =
             metadata.colorSpace ? *metadata.colorSpace : RGBColorSpace::sRGB();
         Float ev = 0;
@@ -107,7 +136,9 @@ int RunConvert(const std::vector<std::string>& args) {
             view = v != metadata.strings.end() ? v->second : "Standard";
             CheckDisplayView(view);
         }
-        metadata.strings["kiln:convertedFrom"] = in;
+        std::string from;
+        for (const std::string& in : ins) from += (from.empty() ? "" : " ") + in;
+        metadata.strings["kiln:convertedFrom"] = from;
         if (ev != 0) {
             // The exposure the output carries: the render's and this conversion's
             double before = 0;

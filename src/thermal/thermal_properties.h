@@ -1,5 +1,5 @@
 // What a material or a shape says about its heat (kiln's additions to pbrt-v4's format; see
-// README "Glowing objects"):
+// docs/guide/glowing-objects.md):
 //   "float temperature" T | "texture temperature" "name"   kelvin, any float texture
 //   "string emission" "kirchhoff" | "additive" | "diffuse" | "none"
 // A material's parameters give it a temperature and model (a hot material; scene creation reads

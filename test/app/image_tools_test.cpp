@@ -79,6 +79,35 @@ TEST_F(ImageTools, ConvertGivesWhatTheRenderWritesItself) {
                 ASSERT_EQ(pfm.GetChannel({x, y}, c), exr.GetChannel({x, y}, c) * 0.5f);
 }
 
+TEST_F(ImageTools, SeveralInputsAreJoinedSideBySide) {
+    ASSERT_EQ(Run(Q(scene) + " --quiet -o k.exr"), 0) << output;
+    ASSERT_EQ(Run(Q(scene) + " --quiet --emission additive -o a.exr"), 0) << output;
+    ASSERT_EQ(Run("convert k.exr a.exr -o ka.pfm"), 0) << output;
+    Image k = Image::Read((dir / "k.exr").string()), a = Image::Read((dir / "a.exr").string());
+    Image ka = Image::Read((dir / "ka.pfm").string());
+    ASSERT_EQ(ka.Resolution(), Point2i(2 * k.Resolution().x, k.Resolution().y));
+    int w = k.Resolution().x;
+    for (int y = 0; y < k.Resolution().y; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c) {
+                ASSERT_EQ(ka.GetChannel({x, y}, c), k.GetChannel({x, y}, c));
+                ASSERT_EQ(ka.GetChannel({w + x, y}, c), a.GetChannel({x, y}, c));
+            }
+    // Additive emission from a hot metal is brighter than Kirchhoff's (the left half)
+    double left = 0, right = 0;
+    for (int y = 0; y < k.Resolution().y; ++y)
+        for (int x = 0; x < w; ++x)
+            left += ka.GetChannel({x, y}, 0), right += ka.GetChannel({w + x, y}, 0);
+    EXPECT_GT(right, left);
+    // Images of different heights cannot stand side by side
+    std::string wide = testing::ReadAll(scene);
+    wide.replace(wide.find("\"integer yresolution\" 14"), 24, "\"integer yresolution\" 10");
+    std::ofstream((dir / "short.pbrt").string()) << wide;
+    ASSERT_EQ(Run("short.pbrt --quiet -o s.exr"), 0) << output;
+    EXPECT_EQ(Run("convert k.exr s.exr -o x.png"), 1);
+    EXPECT_NE(output.find("same height"), std::string::npos) << output;
+}
+
 TEST_F(ImageTools, InfoListsLayersAndMetadata) {
     ASSERT_EQ(Run(Q(scene) + " --quiet --stokes --seed 7 -o p.exr"), 0) << output;
     ASSERT_EQ(Run("info p.exr"), 0) << output;
