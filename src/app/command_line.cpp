@@ -14,6 +14,7 @@
 #include "core/film/film.h"
 #include "core/image/display.h"
 #include "core/image/image.h"
+#include "core/parser/suggestions.h"
 #include "render/render_options.h"
 
 #ifndef KILN_VERSION
@@ -127,32 +128,11 @@ const char* const kOptions[] = {
     "--polarization", "--generic",     "--emitter-sampling", "--strategy", "--wavelengths",
     "--view",         "--exposure",    "--verbose",          "--quiet"};
 
-// Levenshtein distance
-size_t EditDistance(const std::string& a, const std::string& b) {
-    std::vector<size_t> row(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i) {
-        size_t diagonal = row[0];
-        row[0] = i;
-        for (size_t j = 1; j <= b.size(); ++j) {
-            size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-            diagonal = up;
-        }
-    }
-    return row[b.size()];
-}
-
 // "unknown option 'X'", with the nearest known option when it is close
 std::string UnknownOption(const std::string& option) {
-    std::string best;
-    size_t bestDistance = 3;  // at most two edits away
-    for (const char* known : kOptions)
-        if (size_t d = EditDistance(option, known); d < bestDistance) {
-            bestDistance = d;
-            best = known;
-        }
-    return "unknown option '" + option + "'" + (best.empty() ? "" : "; did you mean " + best + "?");
+    std::vector<std::string_view> known(std::begin(kOptions), std::end(kOptions));
+    std::optional<std::string> nearest = NearestName(option, known);
+    return "unknown option '" + option + "'" + (nearest ? "; did you mean " + *nearest + "?" : "");
 }
 
 // pbrt-v4's "--name=value" as "--name" "value"
@@ -376,8 +356,8 @@ int RunKiln(int argc, char** argv) {
         std::cout << "  display config: " << OCIOConfigPath() << "\n";
         for (const char* plugin : {"libkiln_oiio.so", "libkiln_openvdb.so"}) {
             std::string dir = PluginDirectory(plugin);
-            std::cout << "  plugin: " << (dir.empty() ? std::string("(not found) ") + plugin
-                                                      : dir + "/" + plugin)
+            std::cout << "  plugin: "
+                      << (dir.empty() ? std::string("(not found) ") + plugin : dir + "/" + plugin)
                       << "\n";
         }
         return 0;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "core/parser/suggestions.h"
 #include "materials/materials.h"
 #include "spectral/named_spectra.h"
 #include "textures/basic_textures.h"
@@ -207,7 +208,12 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
         diag.Warn(loc, "\"" + type + "\" material is not supported; using diffuse 0.5");
         return make(arena.New<DiffuseMaterial>(arena.New<SpectrumConstantTexture>(Constant(0.5f))));
     }
-    throw SceneError(loc, "unknown material type \"" + type + "\"", type);
+    static constexpr std::string_view kMaterials[] = {
+        "diffuse",         "conductor", "dielectric", "thindielectric", "coateddiffuse",
+        "coatedconductor", "mix",       "interface",  "none",           "hair",
+        "polarizer",       "retarder",  "measured",   "subsurface",     "diffusetransmission"};
+    throw SceneError(loc, "unknown material type \"" + type + "\"" + DidYouMean(type, kMaterials),
+                     type);
 }
 
 }  // namespace kiln

@@ -13,6 +13,7 @@
 #include "core/geometry/curve.h"
 #include "core/geometry/mesh_displacement.h"
 #include "core/geometry/triangle.h"
+#include "core/parser/suggestions.h"
 #include "lights/thermal_area_light.h"
 #include "render/scene.h"
 #include "render/scene_emitters.h"
@@ -32,6 +33,16 @@ namespace {
 PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOptions& options,
                                                 Diagnostics& diag) {
     PathIntegratorSettings s;
+    // pbrt-v4's other integrators render with volpath (a warning); a name pbrt-v4 does not know
+    // either is an error, as in pbrt-v4
+    static constexpr std::string_view kIntegrators[] = {
+        "path",       "volpath",    "ambientocclusion", "bdpt", "lightpath", "mlt",
+        "randomwalk", "simplepath", "simplevolpath",    "sppm", "function"};
+    if (std::find(std::begin(kIntegrators), std::end(kIntegrators), e.name) ==
+        std::end(kIntegrators))
+        throw SceneError(e.loc,
+                         "unknown integrator \"" + e.name + "\"" + DidYouMean(e.name, kIntegrators),
+                         e.name);
     if (e.name != "path" && e.name != "volpath")
         diag.Warn(e.loc, "integrator \"" + e.name + "\" is not supported; using \"volpath\"");
     s.volumetric = e.name != "path";

@@ -63,18 +63,47 @@ TEST(ParameterDictionary, SingleValuesAndDefaults) {
 }
 
 TEST(ParameterDictionary, TypeMustMatch) {
-    ParameterDictionary d = Dict("\"integer n\" 3 \"float r\" 1");
+    ParameterDictionary d = Dict("\"integer nsamples\" 3 \"float radius\" 1");
     // GetOneFloat does not see an integer parameter, nor GetOneInt a float one.
-    EXPECT_EQ(d.GetOneFloat("n", -1), -1);
-    EXPECT_EQ(d.GetOneInt("r", -2), -2);
-    EXPECT_TRUE(d.GetFloatArray("n").empty());
+    EXPECT_EQ(d.GetOneFloat("nsamples", -1), -1);
+    EXPECT_EQ(d.GetOneInt("radius", -2), -2);
+    EXPECT_TRUE(d.GetFloatArray("nsamples").empty());
     Diagnostics diag(nullptr);
     d.ReportUnused(diag);
     std::vector<Diagnostics::Warning> w = diag.Warnings();
     ASSERT_EQ(w.size(), 2u);
     EXPECT_EQ(FormatDiagnostic(w[0].loc, "warning", w[0].message),
-              "p.pbrt:1:25: warning: unused parameter 'float r'");
-    EXPECT_EQ(w[1].message, "unused parameter 'integer n'");
+              "p.pbrt:1:32: warning: unused parameter 'float radius'");
+    EXPECT_EQ(w[1].message, "unused parameter 'integer nsamples'");
+}
+
+// A name neither kiln nor pbrt-v4 reads anywhere is a misspelling: an error at the parameter
+// with the nearest name (pbrt-v4 stops at every unused parameter); a known name unused here
+// stays a warning
+TEST(ParameterDictionary, AnUnknownUnusedNameIsAnErrorWithASuggestion) {
+    ParameterDictionary d = Dict("\"float radius\" 1 \"float temprature\" 1400");
+    d.GetOneFloat("radius", 0);
+    Diagnostics diag(nullptr);
+    try {
+        d.ReportUnused(diag);
+        FAIL() << "an unknown parameter was accepted";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "p.pbrt:1:28: error: unknown parameter 'float temprature'; did you mean "
+                  "\"temperature\"? (at 'temprature')");
+    }
+    // Far from every name: no suggestion
+    ParameterDictionary far = Dict("\"float zzqqxx\" 1");
+    try {
+        far.ReportUnused(diag);
+        FAIL();
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()).find("did you mean"), std::string::npos) << e.what();
+    }
+    // Looked up, or marked as allowed to be unused: nothing
+    ParameterDictionary used = Dict("\"float temprature\" 1400");
+    used.GetOneFloat("temprature", 0);
+    EXPECT_NO_THROW(used.ReportUnused(diag));
 }
 
 TEST(ParameterDictionary, MoreThanOneValueIsAnError) {

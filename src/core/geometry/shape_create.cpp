@@ -12,6 +12,7 @@
 #include "core/geometry/mesh_displacement.h"
 #include "core/parser/diagnostics.h"
 #include "core/parser/parameter_dictionary.h"
+#include "core/parser/suggestions.h"
 #include "spectral/planck.h"
 
 namespace kiln {
@@ -369,8 +370,11 @@ std::vector<Shape> CreateShapes(const std::string& name, const Transform* render
         diag.Warn(loc, "shape \"curve\" is created by scene creation, not Shape::Create; skipped");
         return {};
     }
-    diag.Warn(loc, "unknown shape \"" + name + "\"; skipped");
-    return {};
+    // pbrt-v4 stops at a shape it does not know; so does kiln, naming the nearest one
+    static constexpr std::string_view kShapes[] = {"sphere",       "disk",         "cylinder",
+                                                   "trianglemesh", "bilinearmesh", "plymesh",
+                                                   "loopsubdiv",   "curve"};
+    throw SceneError(loc, "unknown shape \"" + name + "\"" + DidYouMean(name, kShapes), name);
 }
 
 }  // namespace

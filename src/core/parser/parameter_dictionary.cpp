@@ -4,7 +4,9 @@
 
 #include <utility>
 
+#include "core/parser/parameter_names.h"
 #include "core/parser/search_path.h"
+#include "core/parser/suggestions.h"
 #include "spectral/color.h"
 #include "spectral/named_spectra.h"
 
@@ -344,8 +346,13 @@ void ParameterDictionary::ReportUnused(Diagnostics& diag) const {
             if (s->type == p.type && s->name == p.name) shadowed = true;
         if (p.lookedUp)
             seen.push_back(&p);
-        else if (!shadowed)
+        else if (!shadowed && IsKnownParameterName(p.name))
             diag.Warn(p.loc, "unused parameter '" + p.Declaration() + "'");
+        else if (!shadowed)  // neither kiln nor pbrt-v4 knows it: stop, as pbrt-v4 does
+            throw SceneError(p.loc,
+                             "unknown parameter '" + p.Declaration() + "'" +
+                                 DidYouMean(p.name, KnownParameterNames()),
+                             p.name);
     };
     for (size_t i = nOwn; i > 0; --i) visit(params[i - 1]);
     for (size_t i = params.size(); i > nOwn; --i) visit(params[i - 1]);

@@ -2,11 +2,11 @@
 //
 // A lookup only sees parameters of its own type (GetOneInt sees "integer" ones, GetOneFloat
 // "float" ones, ...); a parameter of another type under the same name is ignored and, never
-// being looked up, is reported by ReportUnused. When a name appears more than once the last
-// occurrence wins; the directive's own parameters take precedence over graphics-state
-// attributes (Attribute "shape" ...), which are all mayBeUnused. GetOne* with more than one
-// value (or none) throws SceneError at the parameter. Every successful lookup marks the
-// parameter lookedUp.
+// being looked up, is reported by ReportUnused (a warning, or an error for a name nobody knows).
+// When a name appears more than once the last occurrence wins; the directive's own parameters take
+// precedence over graphics-state attributes (Attribute "shape" ...), which are all mayBeUnused.
+// GetOne* with more than one value (or none) throws SceneError at the parameter. Every successful
+// lookup marks the parameter lookedUp.
 #pragma once
 
 #include <cstdint>
@@ -91,8 +91,11 @@ class ParameterDictionary {
     // Removes every parameter of that name (a command-line override replacing another).
     void Erase(const std::string& name);
 
-    // Warns "unused parameter 'float foo'" at the parameter for every parameter never looked
-    // up and not mayBeUnused (unless shadowed by a looked-up one of the same type and name).
+    // For every parameter never looked up and not mayBeUnused (unless shadowed by a looked-up
+    // one of the same type and name): a warning "unused parameter 'float foo'" when kiln or
+    // pbrt-v4 knows the name (parameter_names.h: a pbrt-v4 parameter kiln does not use, or a
+    // name in the wrong place), else SceneError "unknown parameter 'float temprature'; did
+    // you mean "temperature"?" at the parameter (pbrt-v4 stops at every unused parameter).
     void ReportUnused(Diagnostics& diag) const;
     // Marks every parameter looked up: for a directive that is skipped with a warning of its
     // own, so that its parameters are not also reported as unused.
