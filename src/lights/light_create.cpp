@@ -7,6 +7,7 @@
 #include "core/image/image.h"
 #include "core/parser/diagnostics.h"
 #include "core/parser/parameter_dictionary.h"
+#include "core/parser/suggestions.h"
 #include "lights/light.h"
 #include "lights/sphere_mappings.h"
 #include "spectral/color.h"
@@ -206,7 +207,13 @@ std::optional<Light> Light::Create(const std::string& name, const ParameterDicti
         diag.Warn(loc, "\"" + name + "\" lights are not supported by kiln; light ignored");
         return std::nullopt;
     } else
-        throw SceneError(loc, "unknown light type", name);
+        throw SceneError(
+            loc,
+            "unknown light type \"" + name + "\"" +
+                DidYouMean(name, std::initializer_list<std::string_view>{"point", "spot", "distant",
+                                                                         "infinite", "goniometric",
+                                                                         "projection"}),
+            name);
     params.ReportUnused(diag);
     return light;
 }

@@ -1,5 +1,6 @@
 #include "textures/texture.h"
 
+#include "core/parser/suggestions.h"
 #include "textures/basic_textures.h"
 #include "textures/checkerboard_texture.h"
 #include "textures/float_texture_extension.h"
@@ -42,6 +43,13 @@ std::map<std::string, SpectrumTexture>& NamedTextures::SpectrumTextures(Spectrum
 // Texture creation
 namespace {
 
+// Every texture class kiln or pbrt-v4 knows (the temperature fields: thermal/temperature_field.h)
+constexpr std::string_view kTextures[] = {
+    "constant", "scale",           "mix",     "directionmix", "checkerboard",
+    "bilerp",   "imagemap",        "dots",    "fbm",          "wrinkled",
+    "windy",    "marble",          "ptex",    "gradient",     "noise",
+    "heatmap",  "vertexattribute", "cooling", "keyframes"};
+
 // pbrt-v4 texture classes that kiln (or this kind of texture) lacks: ptex, and the noise
 // textures that exist only as float or only as spectrum textures (and kiln's float-only
 // temperature textures).
@@ -74,7 +82,8 @@ FloatTexture CreateFloatTexture(const std::string& name, const Transform& render
         diag.Warn(loc, "\"" + name + "\" float texture is not supported; using constant 0.5");
         return arena.New<FloatConstantTexture>(0.5f);
     }
-    throw SceneError(loc, "unknown float texture type \"" + name + "\"", name);
+    throw SceneError(
+        loc, "unknown float texture type \"" + name + "\"" + DidYouMean(name, kTextures), name);
 }
 
 SpectrumTexture CreateSpectrumTexture(const std::string& name, const Transform& renderFromTexture,
@@ -98,7 +107,8 @@ SpectrumTexture CreateSpectrumTexture(const std::string& name, const Transform& 
         diag.Warn(loc, "\"" + name + "\" spectrum texture is not supported; using grey 0.5");
         return arena.New<SpectrumConstantTexture>(Spectrum(ConstantSpectrum(0.5f)));
     }
-    throw SceneError(loc, "unknown spectrum texture type \"" + name + "\"", name);
+    throw SceneError(
+        loc, "unknown spectrum texture type \"" + name + "\"" + DidYouMean(name, kTextures), name);
 }
 
 // Footprint use: every class says (one without UsesFootprint does not compile)

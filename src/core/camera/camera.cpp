@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/parser/parameter_dictionary.h"
+#include "core/parser/suggestions.h"
 
 namespace kiln {
 
@@ -54,7 +55,13 @@ Camera Camera::Create(const std::string& name, const ParameterDictionary& params
         type = "perspective";
     }
     if (type != "perspective" && type != "orthographic")
-        throw SceneError(loc, "unknown camera type \"" + name + "\"", name);
+        throw SceneError(
+            loc,
+            "unknown camera type \"" + name + "\"" +
+                DidYouMean(name,
+                           std::initializer_list<std::string_view>{"perspective", "orthographic",
+                                                                   "realistic", "spherical"}),
+            name);
     if (fullResolution.x <= 0 || fullResolution.y <= 0)
         throw SceneError(loc, "film resolution must be positive");
 

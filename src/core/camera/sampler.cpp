@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/parser/parameter_dictionary.h"
+#include "core/parser/suggestions.h"
 
 namespace kiln {
 
@@ -69,7 +70,13 @@ Sampler Sampler::Create(const std::string& name, const ParameterDictionary& para
         if (type == "zsobol") return ZSobolSampler(spp, fullResolution, randomize, seed);
         return PaddedSobolSampler(spp, randomize, seed);
     }
-    throw SceneError(loc, "unknown sampler type \"" + name + "\"", name);
+    throw SceneError(
+        loc,
+        "unknown sampler type \"" + name + "\"" +
+            DidYouMean(name, std::initializer_list<std::string_view>{"independent", "stratified",
+                                                                     "zsobol", "halton", "pmj02bn",
+                                                                     "sobol", "paddedsobol"}),
+        name);
 }
 
 }  // namespace kiln

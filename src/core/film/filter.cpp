@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/parser/parameter_dictionary.h"
+#include "core/parser/suggestions.h"
 
 namespace kiln {
 
@@ -153,7 +154,12 @@ Filter Filter::Create(const std::string& name, const ParameterDictionary& params
         return arena.New<LanczosSincFilter>(r, params.GetOneFloat("tau", 3.f));
     }
     if (name == "triangle") return arena.New<TriangleFilter>(checkRadius(radius(2.f)));
-    throw SceneError(loc, "unknown filter type \"" + name + "\"", name);
+    throw SceneError(
+        loc,
+        "unknown filter type \"" + name + "\"" +
+            DidYouMean(name, std::initializer_list<std::string_view>{"box", "gaussian", "mitchell",
+                                                                     "sinc", "triangle"}),
+        name);
 }
 
 }  // namespace kiln

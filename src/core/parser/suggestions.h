@@ -1,6 +1,7 @@
 // "Did you mean" suggestions for misspelled names (options, shapes, parameters).
 #pragma once
 
+#include <initializer_list>
 #include <optional>
 #include <span>
 #include <string>
@@ -19,5 +20,10 @@ std::optional<std::string> NearestName(std::string_view name,
 
 // "; did you mean \"X\"?" for NearestName, "" when there is none.
 std::string DidYouMean(std::string_view name, std::span<const std::string_view> candidates);
+inline std::string DidYouMean(std::string_view name,
+                              std::initializer_list<std::string_view> candidates) {
+    return DidYouMean(name,
+                      std::span<const std::string_view>(candidates.begin(), candidates.size()));
+}
 
 }  // namespace kiln
