@@ -8,6 +8,7 @@
 
 #include "core/image/color_encoding.h"
 #include "core/image/mipmap.h"
+#include "oiio_test_image.h"
 #include "param_helpers.h"
 #include "spectral/color.h"
 #include "textures/image_texture.h"
@@ -42,12 +43,7 @@ class ImageTextureTest : public ::testing::Test {
     template <typename T>
     static void Write(const std::string& path, const std::vector<T>& px, int w, int h, int nc,
                       OIIO::TypeDesc type) {
-        auto out = OIIO::ImageOutput::create(path);
-        ASSERT_TRUE(out) << path;
-        OIIO::ImageSpec spec(w, h, nc, type);
-        ASSERT_TRUE(out->open(path, spec)) << out->geterror();
-        ASSERT_TRUE(out->write_image(type, px.data())) << out->geterror();
-        out->close();
+        test::WriteWithOIIO(path, px, w, h, nc, type);
     }
 
     FloatTexture MakeFloat(std::initializer_list<ParsedParameter> extra) {

@@ -182,7 +182,8 @@ TEST(EmissivityTest, ParsesEmissionModels) {
 // The documented error of Kirchhoff emission from rough conductors: pbrt-v4's single-scattering
 // microfacet model loses the energy of multiply scattered light, so 1 - albedo over-estimates
 // emissivity by that loss. A perfect mirror metal (F = 1) shows the loss directly: about 12 %
-// at alpha 0.3 and 69 % at alpha 1 at normal incidence (thermal/material_albedo.h, docs/guide/glowing-objects.md).
+// at alpha 0.3 and 69 % at alpha 1 at normal incidence (thermal/material_albedo.h,
+// docs/guide/glowing-objects.md).
 TEST(EmissivityTest, RoughConductorSingleScatteringLossIsAsDocumented) {
     auto mirror = [](double alpha) {
         return ConductorAlbedoMoments::Apply(ConductorAlbedoMoments::Compute(alpha, 1),

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../textures/oiio_test_image.h"
 #include "../textures/param_helpers.h"
 #include "base/rng.h"
 #include "core/geometry/shape.h"
@@ -65,12 +66,7 @@ class TemperatureFieldsTest : public ::testing::Test {
     template <typename T>
     static void WriteImage(const std::string& path, const std::vector<T>& px, int w, int h, int nc,
                            OIIO::TypeDesc type) {
-        auto out = OIIO::ImageOutput::create(path);
-        ASSERT_TRUE(out) << path;
-        OIIO::ImageSpec spec(w, h, nc, type);
-        ASSERT_TRUE(out->open(path, spec)) << out->geterror();
-        ASSERT_TRUE(out->write_image(type, px.data())) << out->geterror();
-        out->close();
+        test::WriteWithOIIO(path, px, w, h, nc, type);
     }
 
     std::vector<Shape> MakeShapes(const std::string& name, ParsedParameterVector v) {
