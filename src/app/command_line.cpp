@@ -63,6 +63,14 @@ std::string UsageText() {
            "  --seed S              sampler seed\n"
            "  --crop x0 x1 y0 y1    render only this window (NDC, as Film \"cropwindow\";\n"
            "                        also --cropwindow; or x0,x1,y0,y1 as pbrt-v4)\n"
+           "  --write-partial-images  write the outputs after every wave of samples (pbrt-v4)\n"
+           "  --stats               print statistics after rendering: time per phase, camera\n"
+           "                        paths, memory (pbrt-v4)\n"
+           "  --log-level L         verbose (as --verbose), warning (default), error or fatal\n"
+           "                        (no scene warnings) (pbrt-v4)\n"
+           "  --mse-reference-image REF --mse-reference-out FILE\n"
+           "                        after every sample per pixel, append \"spp, MSE\" against\n"
+           "                        REF's R, G, B to FILE (pbrt-v4)\n"
            "  --checkpoint SECONDS  write the film's state to OUT.checkpoint every SECONDS (0:\n"
            "                        after every wave of samples); the same command run again\n"
            "                        resumes from it and ends bit-identical to an uninterrupted\n"
@@ -120,13 +128,40 @@ std::string UsageText() {
 namespace {
 
 // Every option the render command knows (for "did you mean" suggestions)
-const char* const kOptions[] = {
-    "--help",         "--version",     "--output",           "--outfile",  "--spp",
-    "--threads",      "--nthreads",    "--memory-limit",     "--seed",     "--crop",
-    "--cropwindow",   "--checkpoint",  "--pixelbounds",      "--frames",   "--fps",
-    "--emission",     "--layered-mis", "--light-sampler",    "--stokes",   "--polarisation",
-    "--polarization", "--generic",     "--emitter-sampling", "--strategy", "--wavelengths",
-    "--view",         "--exposure",    "--verbose",          "--quiet"};
+const char* const kOptions[] = {"--help",
+                                "--version",
+                                "--output",
+                                "--outfile",
+                                "--spp",
+                                "--threads",
+                                "--nthreads",
+                                "--memory-limit",
+                                "--seed",
+                                "--crop",
+                                "--cropwindow",
+                                "--checkpoint",
+                                "--pixelbounds",
+                                "--frames",
+                                "--fps",
+                                "--emission",
+                                "--layered-mis",
+                                "--light-sampler",
+                                "--stokes",
+                                "--polarisation",
+                                "--polarization",
+                                "--generic",
+                                "--emitter-sampling",
+                                "--strategy",
+                                "--wavelengths",
+                                "--view",
+                                "--exposure",
+                                "--verbose",
+                                "--quiet",
+                                "--write-partial-images",
+                                "--mse-reference-image",
+                                "--mse-reference-out",
+                                "--stats",
+                                "--log-level"};
 
 // "unknown option 'X'", with the nearest known option when it is close
 std::string UnknownOption(const std::string& option) {
@@ -206,6 +241,23 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
             if (!(c[0] >= 0 && c[0] < c[1] && c[1] <= 1 && c[2] >= 0 && c[2] < c[3] && c[3] <= 1))
                 throw std::invalid_argument(a + " expects 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1");
             o.crop = Bounds2f{Point2f(c[0], c[2]), Point2f(c[1], c[3])};
+        } else if (a == "--stats") {
+            o.stats = true;
+        } else if (a == "--log-level") {
+            const std::string& level = value();
+            if (level == "verbose")
+                o.verbose = true;
+            else if (level == "error" || level == "fatal")
+                o.warnings = false;
+            else if (level != "warning")
+                throw std::invalid_argument(
+                    "--log-level expects verbose, warning, error or fatal, got '" + level + "'");
+        } else if (a == "--write-partial-images") {
+            o.writePartialImages = true;
+        } else if (a == "--mse-reference-image") {
+            o.mseReferenceImage = value();
+        } else if (a == "--mse-reference-out") {
+            o.mseReferenceOut = value();
         } else if (a == "--checkpoint") {
             o.checkpointSeconds = ParseFloat(a, value());
             if (!(*o.checkpointSeconds >= 0) || !std::isfinite(*o.checkpointSeconds))
@@ -298,6 +350,10 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
             throw std::invalid_argument("more than one scene file given ('" + o.sceneFile +
                                         "' and '" + a + "')");
     }
+    if (o.mseReferenceImage.empty() != o.mseReferenceOut.empty())
+        throw std::invalid_argument(
+            "--mse-reference-image and --mse-reference-out go together (the reference, and the "
+            "file of \"spp, MSE\" lines)");
     if (std::string ext = FileExtension(o.sceneFile);
         ext == "exr" || ext == "png" || ext == "pfm" || ext == "hdr" || ext == "jpg" ||
         ext == "jpeg" || ext == "tif" || ext == "tiff")

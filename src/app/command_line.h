@@ -31,8 +31,14 @@ struct CommandLineOptions {
     std::optional<int> wavelengths;           // 1 | 4
     std::optional<double> memoryLimit;        // --memory-limit, bytes
     std::optional<double> checkpointSeconds;  // --checkpoint SECONDS
-    bool stokes = false;                      // --stokes: polarised rendering with Stokes layers
-    bool polarisation = false;                // --polarisation: also degree/angle pictures
+    bool writePartialImages = false;          // --write-partial-images (pbrt-v4)
+    bool stats = false;                       // --stats (pbrt-v4): statistics after rendering
+    bool warnings = true;                     // --log-level error|fatal (pbrt-v4): none
+    // --mse-reference-image and --mse-reference-out (pbrt-v4): the mean squared error against
+    // a reference after every sample per pixel
+    std::string mseReferenceImage, mseReferenceOut;
+    bool stokes = false;        // --stokes: polarised rendering with Stokes layers
+    bool polarisation = false;  // --polarisation: also degree/angle pictures
     bool help = false, version = false;
 };
 

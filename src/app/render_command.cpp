@@ -1,9 +1,11 @@
 #include "app/render_command.h"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -52,9 +54,51 @@ void InstallInterruptHandlers() {
     sigaction(SIGTERM, &action, nullptr);
 }
 
+// The R, G, B of the reference image over a film's pixels (full-frame coordinates): the
+// reference's own data window when it has one (an EXR), else the whole frame. Throws
+// std::runtime_error when the reference lacks R, G, B or does not cover the film.
+Image MSEReference(const std::string& file, const Bounds2i& filmPixels) {
+    ImageMetadata metadata;
+    Image image = Image::Read(file, &metadata);
+    if (image.ChannelIndex("R") < 0 || image.ChannelIndex("G") < 0 || image.ChannelIndex("B") < 0)
+        throw std::runtime_error(file + ": the MSE reference has no R, G, B channels");
+    Bounds2i bounds = metadata.pixelBounds.value_or(Bounds2i{{0, 0}, image.Resolution()});
+    if (filmPixels.pMin.x < bounds.pMin.x || filmPixels.pMin.y < bounds.pMin.y ||
+        filmPixels.pMax.x > bounds.pMax.x || filmPixels.pMax.y > bounds.pMax.y)
+        throw std::runtime_error(file + ": the MSE reference's pixels do not cover the image's");
+    Point2i size = filmPixels.pMax - filmPixels.pMin, offset = filmPixels.pMin - bounds.pMin;
+    Image rgb(PixelFormat::Float, size, {"R", "G", "B"});
+    const int channel[3] = {image.ChannelIndex("R"), image.ChannelIndex("G"),
+                            image.ChannelIndex("B")};
+    for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x)
+            for (int c = 0; c < 3; ++c)
+                rgb.SetChannel({x, y}, c,
+                               image.GetChannel({x + offset.x, y + offset.y}, channel[c]));
+    return rgb;
+}
+
+// Mean over pixels and R, G, B of the squared difference of an image's R, G, B from a
+// reference of the same size (pbrt-v4's Image::MSE averaged over the channels).
+double MeanSquaredError(const Image& image, const Image& reference) {
+    const int channel[3] = {image.ChannelIndex("R"), image.ChannelIndex("G"),
+                            image.ChannelIndex("B")};
+    double sum = 0;
+    for (int y = 0; y < reference.Resolution().y; ++y)
+        for (int x = 0; x < reference.Resolution().x; ++x)
+            for (int c = 0; c < 3; ++c) {
+                double d =
+                    double(image.GetChannel({x, y}, channel[c])) - reference.GetChannel({x, y}, c);
+                sum += d * d;
+            }
+    return sum / (3.0 * reference.Resolution().x * reference.Resolution().y);
+}
+
 // A scene parsed and created once, with what identifies its renders.
+
 struct LoadedScene {
     std::unique_ptr<Scene> scene;
+    double loadSeconds = 0;  // parsing and scene creation
     RenderOptions renderOptions;
     std::string optionsKey;  // RenderOptionsKey: in the output's metadata and the checkpoints
     std::string inputsHash;  // of every file the scene read (render/scene_inputs.h): likewise
@@ -90,6 +134,7 @@ RenderOptions RenderOptionsFor(const CommandLineOptions& options, std::optional<
 std::optional<LoadedScene> LoadScene(const CommandLineOptions& options, std::optional<int> frame,
                                      Diagnostics& diag, int& status) {
     LoadedScene loaded;
+    const auto started = std::chrono::steady_clock::now();
     try {
         // --memory-limit bounds each file read and the parsed description, as it does what
         // scene creation allocates
@@ -105,6 +150,8 @@ std::optional<LoadedScene> LoadScene(const CommandLineOptions& options, std::opt
         loaded.optionsKey = RenderOptionsKey(loaded.renderOptions);
         loaded.scene = Scene::Create(builder.Description(), loaded.renderOptions, diag);
         loaded.inputsHash = HashInputFiles(SceneInputFiles(builder.Description(), parsedFiles));
+        loaded.loadSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         diag.ReportRepeats();
         if (interruptRequested.load()) {
             std::cerr << "kiln: interrupted while loading the scene; nothing written\n";
@@ -152,6 +199,45 @@ bool MoveToFrame(LoadedScene& loaded, const CommandLineOptions& options, int fra
         return false;
     }
     return true;
+}
+
+// pbrt-v4's --stats, kiln's quantities: what the scene holds, time per phase, camera paths and
+// memory. (kiln counts camera paths, not rays.)
+void PrintStatistics(const LoadedScene& loaded, const RenderStats& stats, double writeSeconds) {
+    const Scene& scene = *loaded.scene;
+    rusage usage = {};
+    getrusage(RUSAGE_SELF, &usage);
+    auto row = [](const char* name, const std::string& value) {
+        std::fprintf(stderr, "    %-40s %s\n", name, value.c_str());
+    };
+    auto number = [](double v, const char* format) {
+        char buf[64];
+        std::snprintf(buf, sizeof(buf), format, v);
+        return std::string(buf);
+    };
+    std::fprintf(stderr, "Statistics:\n  Scene\n");
+    row("Shapes", std::to_string(scene.shapeCount));
+    row("Lights (thermal)", std::to_string(scene.lights.size()) + " (" +
+                                std::to_string(scene.thermalEmitterCount) + ")");
+    row("Emissivity tables", std::to_string(scene.features.emissivityTables));
+    std::fprintf(stderr, "  Time\n");
+    row("Parsing and scene creation", number(loaded.loadSeconds, "%.3f s"));
+    row("Emissivity tables (of the above)", number(scene.features.emissivitySeconds, "%.3f s"));
+    row("Rendering", number(stats.seconds, "%.3f s"));
+    row("Writing images", number(writeSeconds, "%.3f s"));
+    std::fprintf(stderr, "  Rendering\n");
+    row("Resolution",
+        std::to_string(stats.resolution.x) + " x " + std::to_string(stats.resolution.y));
+    row("Samples per pixel",
+        std::to_string(stats.completedSamples) + " of " + std::to_string(stats.samplesPerPixel));
+    row("Camera paths", std::to_string(stats.cameraPaths));
+    row("Camera paths per second",
+        number(stats.seconds > 0 ? stats.cameraPaths / stats.seconds * 1e-6 : 0, "%.3f M"));
+    std::fprintf(stderr, "  Memory\n");
+    row("Peak resident set size", number(double(usage.ru_maxrss) / 1024.0, "%.1f MB"));
+    row("Embree BVH peak", number(double(scene.aggregate->EmbreePeakBytes()) * 1e-6, "%.1f MB"));
+    row("Committed to the scene (estimated)",
+        number(scene.arena.Budget().Committed() * 1e-6, "%.1f MB"));
 }
 
 // Renders one image (one frame of an animation) of a loaded scene and writes it to every
@@ -211,6 +297,53 @@ int RenderFrame(const CommandLineOptions& options, LoadedScene& loaded, std::opt
             }
         };
     }
+    // pbrt-v4's --mse-reference-image: "spp, MSE" after every sample per pixel (one-sample
+    // waves), against the reference's R, G, B over this film's pixels
+    std::optional<Image> reference;
+    std::string mseLines;
+    if (!options.mseReferenceImage.empty()) {
+        try {
+            reference = MSEReference(options.mseReferenceImage, scene->job->film->PixelBounds());
+        } catch (const std::exception& e) {
+            std::cerr << "kiln: error: " << e.what() << "; nothing rendered\n";
+            return 1;
+        }
+        settings.maxWaveSize = 1;
+    }
+    // pbrt-v4's --write-partial-images: the outputs after every wave but the last (which the
+    // render writes below), marked partial, at the film's exposure
+    auto partialMetadata = [&](int completed) {
+        ImageMetadata m;
+        m.strings["kiln:exposureEV"] = std::to_string(scene->job->film->GetOptions().exposureEV);
+        m.samplesPerPixel = completed;
+        m.strings["kiln:partial"] = "true";
+        m.strings["kiln:seed"] = std::to_string(scene->job->sampler->Seed());
+        m.strings["kiln:scene"] = identity.scene;
+        m.strings["kiln:options"] = optionsKey;
+        if (frame) m.strings["kiln:frame"] = std::to_string(*frame);
+        return m;
+    };
+    const int spp = scene->job->sampler->SamplesPerPixel();
+    settings.afterWave = [&](int completed) {
+        if (reference) {
+            char line[64];
+            std::snprintf(line, sizeof(line), "%d, %.9g\n", completed,
+                          MeanSquaredError(scene->job->film->GetImage(nullptr), *reference));
+            mseLines += line;
+            try {
+                WriteFileAtomically(options.mseReferenceOut, mseLines);
+            } catch (const std::exception& e) {
+                std::cerr << "kiln: warning: " << e.what() << "\n";
+            }
+        }
+        if (options.writePartialImages && completed < spp)
+            for (const std::string& out : outputs) try {
+                    scene->job->film->WriteImage(out, partialMetadata(completed), options.view,
+                                                 &diag);
+                } catch (const std::exception& e) {
+                    std::cerr << "kiln: warning: " << e.what() << "\n";
+                }
+    };
     RenderStats stats;
     try {
         stats = Render(*scene, settings);
@@ -246,6 +379,7 @@ int RenderFrame(const CommandLineOptions& options, LoadedScene& loaded, std::opt
     metadata.strings["kiln:options"] = optionsKey;
     if (frame) metadata.strings["kiln:frame"] = std::to_string(*frame);
     int status = 0;
+    const auto writeStarted = std::chrono::steady_clock::now();
     for (const std::string& out : outputs) {
         try {
             scene->job->film->WriteImage(out, metadata, options.view, &diag);
@@ -255,6 +389,8 @@ int RenderFrame(const CommandLineOptions& options, LoadedScene& loaded, std::opt
         }
     }
     // A finished render needs its checkpoint no more (an interrupted one resumes from it)
+    double writeSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - writeStarted).count();
     if (!checkpoint.empty() && status == 0 && !stats.cancelled) RemoveCheckpoint(checkpoint);
     // --polarisation: pictures of the degree and angle of polarisation beside each output
     if (options.polarisation)
@@ -277,6 +413,7 @@ int RenderFrame(const CommandLineOptions& options, LoadedScene& loaded, std::opt
                      stats.resolution.x, stats.resolution.y, stats.samplesPerPixel, stats.seconds,
                      mpaths, stats.cancelled ? " (interrupted)" : "");
     }
+    if (options.stats) PrintStatistics(loaded, stats, writeSeconds);
     if (status == 0 && (stats.cancelled || interruptRequested.load())) status = InterruptStatus();
     return status;
 }
@@ -296,7 +433,7 @@ int RenderCommand(const CommandLineOptions& options) {
         return 2;
     }
     InstallInterruptHandlers();
-    Diagnostics diag(&std::cerr);
+    Diagnostics diag(options.warnings ? &std::cerr : nullptr);
     int status = 0;
     std::optional<LoadedScene> loaded = LoadScene(options, first, diag, status);
     if (!loaded) return status;

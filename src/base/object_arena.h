@@ -36,6 +36,7 @@ class ObjectArena {
     }
 
     MemoryBudget& Budget() { return *budget_; }
+    const MemoryBudget& Budget() const { return *budget_; }
 
   private:
     MemoryBudget ownBudget_;

@@ -126,8 +126,9 @@ RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
     std::atomic<int64_t> pathsTraced{0};
     const auto start = std::chrono::steady_clock::now();
 
-    // Waves of 1, 2, 4, ... samples per pixel (at most 64), as pbrt-v4; with checkpoints,
-    // small enough that a wave takes at most a quarter of the checkpoint interval
+    // Waves of 1, 2, 4, ... samples per pixel (at most settings.maxWaveSize, 64 by default), as
+    // pbrt-v4; with checkpoints, small enough that a wave takes at most a quarter of the
+    // checkpoint interval
     constexpr int tileSize = 16;
     int waveStart = std::clamp(settings.startSample, 0, spp), waveSize = 1;
     if (observer && waveStart > 0) observer->Advanced(int64_t(res.x) * res.y * waveStart);
@@ -163,7 +164,8 @@ RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
             settings.checkpoint(waveEnd);
             lastCheckpoint = std::chrono::steady_clock::now();
         }
-        int next = std::min(2 * waveSize, 64);
+        if (settings.afterWave) settings.afterWave(waveEnd);
+        int next = std::clamp(2 * waveSize, 1, std::max(1, settings.maxWaveSize));
         if (settings.checkpoint) {
             double perSample = std::chrono::duration<double>(now - waveBegan).count() /
                                double(waveEnd - waveStart);

@@ -39,6 +39,11 @@ struct RenderSettings {
     // enough (measured) that one takes at most a quarter of that.
     std::function<void(int completed)> checkpoint;
     double checkpointSeconds = 0;
+    // Called after every wave, the last included (the film then holds samples [0, completed)
+    // of every pixel): kiln --write-partial-images and --mse-reference-image
+    std::function<void(int completed)> afterWave;
+    // The largest wave, samples per pixel (64, as pbrt-v4; 1 for an error per sample count)
+    int maxWaveSize = 64;
 };
 
 struct RenderStats {

@@ -162,3 +162,44 @@ TEST(RenderJob, NewFramesRenderWhatFreshLoadsOfThoseFramesRender) {
 
 }  // namespace
 }  // namespace kiln
+
+namespace kiln {
+namespace {
+
+// RenderSettings::afterWave sees the film after every wave: each time it holds exactly what a
+// render with that many samples per pixel holds (in a scene without filtered textures, whose
+// footprints depend on the samples per pixel, as in pbrt-v4); maxWaveSize 1 gives a call per
+// sample count
+TEST(RenderWaves, AfterEveryWaveTheFilmIsARenderOfThatManySamples) {
+    Diagnostics diag(nullptr);
+    RenderOptions o = AtFrame(0);
+    o.samplesPerPixel = 12;
+    std::unique_ptr<Scene> scene = testing::BuildScene(kAnimatedScene, diag, o);
+    std::vector<int> completed;
+    std::vector<Image> images;
+    RenderSettings settings;
+    settings.threads = 2;
+    settings.afterWave = [&](int n) {
+        completed.push_back(n);
+        images.push_back(scene->job->film->GetImage(nullptr));
+    };
+    Render(*scene, settings);
+    EXPECT_EQ(completed, (std::vector<int>{1, 3, 7, 12}));  // waves of 1, 2, 4, 5
+    for (size_t i = 0; i < completed.size(); ++i) {
+        RenderOptions fewer = AtFrame(0);
+        fewer.samplesPerPixel = completed[i];
+        Diagnostics d(nullptr);
+        std::unique_ptr<Scene> fresh = testing::BuildScene(kAnimatedScene, d, fewer);
+        ExpectIdentical(images[i], RenderJob(*fresh));
+    }
+    // One sample per wave
+    scene->SetJob(o, diag);
+    completed.clear();
+    settings.maxWaveSize = 1;
+    Render(*scene, settings);
+    EXPECT_EQ(completed.size(), 12u);
+    EXPECT_EQ(completed.back(), 12);
+}
+
+}  // namespace
+}  // namespace kiln

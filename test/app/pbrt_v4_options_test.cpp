@@ -1,0 +1,118 @@
+// pbrt-v4's rendering options on the kiln command: --mse-reference-image with
+// --mse-reference-out writes "spp, MSE" after every sample per pixel (the last line is the
+// final image's MSE, as kiln diff measures it), and --write-partial-images renders the same
+// final image as a render without it; --stats prints time per phase, camera paths and memory;
+// --log-level error silences scene warnings.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "app_test_util.h"
+
+namespace kiln {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr auto Q = testing::ShellQuote;
+
+class PbrtV4Options : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir = fs::path(::testing::TempDir()) / ("kiln_pbrt_options_" + std::to_string(getpid()));
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        std::ofstream(dir / "scene.pbrt")
+            << "Film \"rgb\" \"integer xresolution\" 32 \"integer yresolution\" 24\n"
+               "Sampler \"independent\"\nLookAt 0 0 -4 0 0 0 0 1 0 Camera \"perspective\"\n"
+               "WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.3 0.3 0.3]\n"
+               "Material \"diffuse\" \"float temperature\" 1500\nShape \"sphere\"\n";
+    }
+    void TearDown() override { fs::remove_all(dir); }
+    int Run(const std::string& args) {
+        std::string command = "cd " + Q(dir.string()) + " && " + Q(kiln) + " " + args + " > " +
+                              Q((dir / "log.txt").string()) + " 2>&1";
+        int status = std::system(command.c_str());
+        log = testing::ReadAll((dir / "log.txt").string());
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+    fs::path dir;
+    std::string log;
+    const std::string kiln = std::string(KILN_BINARY_DIR) + "/kiln";
+};
+
+TEST_F(PbrtV4Options, MSEAgainstAReferenceAfterEverySample) {
+    ASSERT_EQ(Run("scene.pbrt --quiet --spp 256 --seed 9 -o ref.exr"), 0) << log;
+    ASSERT_EQ(Run("scene.pbrt --quiet --spp 8 -o img.exr --mse-reference-image ref.exr "
+                  "--mse-reference-out mse.txt"),
+              0)
+        << log;
+    std::istringstream lines(testing::ReadAll((dir / "mse.txt").string()));
+    std::vector<double> mse;
+    int spp;
+    double value;
+    char comma;
+    while (lines >> spp >> comma >> value) {
+        EXPECT_EQ(spp, int(mse.size()) + 1);
+        EXPECT_EQ(comma, ',');
+        mse.push_back(value);
+    }
+    ASSERT_EQ(mse.size(), 8u);
+    // 8 samples have about an eighth of one sample's variance (plus the reference's, 1/256)
+    EXPECT_LT(mse.back(), mse.front() / 3);
+    // The last line is the written image's MSE (kiln diff's rmse, squared)
+    ASSERT_EQ(Run("diff img.exr ref.exr --metric rmse"), 0) << log;
+    double rmse = -1;
+    for (std::istringstream out(log); out;) {
+        std::string name;
+        out >> name;
+        if (name == "rmse") out >> rmse;
+    }
+    EXPECT_NEAR(mse.back(), rmse * rmse, 1e-4 * rmse * rmse + 1e-30);
+    // Both or neither; a reference that does not cover the image stops before rendering
+    EXPECT_EQ(Run("scene.pbrt --quiet -o x.exr --mse-reference-image ref.exr"), 2);
+    ASSERT_EQ(Run("scene.pbrt --quiet --spp 1 --pixelbounds 0,8,0,8 -o small.exr"), 0) << log;
+    EXPECT_EQ(Run("scene.pbrt --quiet -o x.exr --mse-reference-image small.exr "
+                  "--mse-reference-out m.txt"),
+              1);
+    EXPECT_NE(log.find("do not cover"), std::string::npos) << log;
+}
+
+TEST_F(PbrtV4Options, PartialImagesDoNotChangeTheFinalImage) {
+    ASSERT_EQ(Run("scene.pbrt --quiet --spp 6 -o plain.exr"), 0) << log;
+    ASSERT_EQ(Run("scene.pbrt --quiet --spp 6 -o partial.exr --write-partial-images"), 0) << log;
+    EXPECT_EQ(testing::Pixels((dir / "plain.exr").string()),
+              testing::Pixels((dir / "partial.exr").string()));
+    ASSERT_EQ(Run("info partial.exr"), 0);
+    EXPECT_EQ(log.find("partial"), log.find("partial.exr")) << log;  // no kiln:partial
+}
+
+TEST_F(PbrtV4Options, StatsAndLogLevels) {
+    ASSERT_EQ(Run("scene.pbrt --quiet --spp 3 -o s.exr --stats"), 0) << log;
+    for (const char* expect : {"Statistics:", "Parsing and scene creation", "Rendering",
+                               "Peak resident set size", "Lights (thermal)"})
+        EXPECT_NE(log.find(expect), std::string::npos) << expect << "\n" << log;
+    // 32 x 24 pixels x 3 samples
+    std::string paths = "Camera paths";
+    size_t at = log.find(paths);
+    ASSERT_NE(at, std::string::npos);
+    EXPECT_EQ(std::stol(log.substr(log.find_first_not_of(' ', at + paths.size()))), 32 * 24 * 3);
+    // A scene warning (a known parameter in the wrong place) shows, unless the level is error
+    std::ofstream(dir / "warn.pbrt", std::ios::app)
+        << testing::ReadAll((dir / "scene.pbrt").string()) << "Shape \"sphere\" \"float fov\" 3\n";
+    ASSERT_EQ(Run("warn.pbrt --quiet --spp 1 -o w.exr"), 0) << log;
+    EXPECT_NE(log.find("unused parameter 'float fov'"), std::string::npos) << log;
+    ASSERT_EQ(Run("warn.pbrt --quiet --spp 1 -o w.exr --log-level=error"), 0) << log;
+    EXPECT_EQ(log, "");
+    EXPECT_EQ(Run("scene.pbrt --log-level loud"), 2);
+}
+
+}  // namespace
+}  // namespace kiln
