@@ -64,6 +64,9 @@ std::string UsageText() {
            "  --crop x0 x1 y0 y1    render only this window (NDC, as Film \"cropwindow\";\n"
            "                        also --cropwindow; or x0,x1,y0,y1 as pbrt-v4)\n"
            "  --write-partial-images  write the outputs after every wave of samples (pbrt-v4)\n"
+           "  --display-server HOST:PORT\n"
+           "                        show the image in tev (or any viewer speaking its protocol)\n"
+           "                        after every wave of samples (pbrt-v4)\n"
            "  --stats               print statistics after rendering: time per phase, camera\n"
            "                        paths, memory (pbrt-v4)\n"
            "  --log-level L         verbose (as --verbose), warning (default), error or fatal\n"
@@ -161,6 +164,7 @@ const char* const kOptions[] = {"--help",
                                 "--mse-reference-image",
                                 "--mse-reference-out",
                                 "--stats",
+                                "--display-server",
                                 "--log-level"};
 
 // "unknown option 'X'", with the nearest known option when it is close
@@ -241,6 +245,8 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
             if (!(c[0] >= 0 && c[0] < c[1] && c[1] <= 1 && c[2] >= 0 && c[2] < c[3] && c[3] <= 1))
                 throw std::invalid_argument(a + " expects 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1");
             o.crop = Bounds2f{Point2f(c[0], c[2]), Point2f(c[1], c[3])};
+        } else if (a == "--display-server") {
+            o.displayServer = value();
         } else if (a == "--stats") {
             o.stats = true;
         } else if (a == "--log-level") {

@@ -8,11 +8,13 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
 
 #include "app/checkpoint.h"
+#include "app/display_server.h"
 #include "app/output_check.h"
 #include "app/progress.h"
 #include "base/atomic_file.h"
@@ -92,6 +94,11 @@ double MeanSquaredError(const Image& image, const Image& reference) {
                 sum += d * d;
             }
     return sum / (3.0 * reference.Resolution().x * reference.Resolution().y);
+}
+
+// The file name without folder and extension ("scenes/forge.pbrt" -> "forge")
+std::string FileStem(const std::string& path) {
+    return std::filesystem::path(path).stem().string();
 }
 
 // A scene parsed and created once, with what identifies its renders.
@@ -323,8 +330,25 @@ int RenderFrame(const CommandLineOptions& options, LoadedScene& loaded, std::opt
         if (frame) m.strings["kiln:frame"] = std::to_string(*frame);
         return m;
     };
+    // pbrt-v4's --display-server: the image after every wave, in tev. A viewer that cannot be
+    // reached is a warning: the render goes on.
+    std::unique_ptr<DisplayServerClient> display;
+    std::string displayName =
+        FileStem(options.sceneFile) + (frame ? " " + std::to_string(*frame) : "");
+    if (!options.displayServer.empty()) {
+        try {
+            display = DisplayServerClient::Connect(options.displayServer);
+            Bounds2i b = scene->job->film->PixelBounds();
+            display->CreateImage(displayName, b.pMax - b.pMin, {"R", "G", "B"});
+        } catch (const std::exception& e) {
+            std::cerr << "kiln: warning: " << e.what() << "; rendering without it\n";
+        }
+    }
     const int spp = scene->job->sampler->SamplesPerPixel();
     settings.afterWave = [&](int completed) {
+        if (display && display->Connected())
+            display->UpdateImage(
+                displayName, scene->job->film->GetImage(nullptr).SelectChannels({"R", "G", "B"}));
         if (reference) {
             char line[64];
             std::snprintf(line, sizeof(line), "%d, %.9g\n", completed,
