@@ -64,6 +64,10 @@ std::string UsageText() {
            "  --crop x0 x1 y0 y1    render only this window (NDC, as Film \"cropwindow\";\n"
            "                        also --cropwindow; or x0,x1,y0,y1 as pbrt-v4)\n"
            "  --write-partial-images  write the outputs after every wave of samples (pbrt-v4)\n"
+           "  --format              print the scene reformatted (Includes spliced in) to\n"
+           "                        standard output; render nothing (pbrt-v4)\n"
+           "  --toply               as --format, with every trianglemesh written to a PLY\n"
+           "                        file (mesh_00001.ply, ... in the working folder) (pbrt-v4)\n"
            "  --display-server HOST:PORT\n"
            "                        show the image in tev (or any viewer speaking its protocol)\n"
            "                        after every wave of samples (pbrt-v4)\n"
@@ -165,6 +169,8 @@ const char* const kOptions[] = {"--help",
                                 "--mse-reference-out",
                                 "--stats",
                                 "--display-server",
+                                "--format",
+                                "--toply",
                                 "--log-level"};
 
 // "unknown option 'X'", with the nearest known option when it is close
@@ -245,6 +251,10 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
             if (!(c[0] >= 0 && c[0] < c[1] && c[1] <= 1 && c[2] >= 0 && c[2] < c[3] && c[3] <= 1))
                 throw std::invalid_argument(a + " expects 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1");
             o.crop = Bounds2f{Point2f(c[0], c[2]), Point2f(c[1], c[3])};
+        } else if (a == "--format") {
+            o.format = true;
+        } else if (a == "--toply") {
+            o.format = o.toPly = true;
         } else if (a == "--display-server") {
             o.displayServer = value();
         } else if (a == "--stats") {

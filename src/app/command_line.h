@@ -34,6 +34,7 @@ struct CommandLineOptions {
     bool writePartialImages = false;          // --write-partial-images (pbrt-v4)
     bool stats = false;                       // --stats (pbrt-v4): statistics after rendering
     std::string displayServer;                // --display-server host:port (pbrt-v4; tev)
+    bool format = false, toPly = false;       // --format, --toply (pbrt-v4): print the scene
     bool warnings = true;                     // --log-level error|fatal (pbrt-v4): none
     // --mse-reference-image and --mse-reference-out (pbrt-v4): the mean squared error against
     // a reference after every sample per pixel

@@ -17,6 +17,7 @@
 #include "app/display_server.h"
 #include "app/output_check.h"
 #include "app/progress.h"
+#include "app/scene_formatter.h"
 #include "base/atomic_file.h"
 #include "core/film/film.h"
 #include "core/image/polarization_view.h"
@@ -445,6 +446,20 @@ int RenderFrame(const CommandLineOptions& options, LoadedScene& loaded, std::opt
 }  // namespace
 
 int RenderCommand(const CommandLineOptions& options) {
+    if (options.format) {  // pbrt-v4's --format / --toply: print, render nothing
+        Diagnostics diag(options.warnings ? &std::cerr : nullptr);
+        SceneFormatter formatter(std::cout, options.toPly);
+        try {
+            ParseFile(formatter, options.sceneFile, diag, DefaultMaxInputBytes());
+        } catch (const SceneError& e) {
+            std::cerr << e.what() << "\n";
+            return 1;
+        } catch (const std::exception& e) {
+            std::cerr << "kiln: error: " << e.what() << "\n";
+            return 1;
+        }
+        return 0;
+    }
     std::optional<int> first;
     if (options.frames) first = options.frames->first;
     // Every output can be written before anything is parsed or rendered
