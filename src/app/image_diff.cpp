@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/image_error.h"
 #include "core/image/color_encoding.h"
 #include "core/image/image_codec.h"
 
@@ -174,10 +175,18 @@ std::string ImageDiffUsageText() {
     return "usage: kiln diff A B [--metric rmse|relmse|mae|psnr|flip-like] [--threshold X]\n"
            "                    [--out DIFF.exr|DIFF.png]\n"
            "  compares test image A with reference B; prints every metric as 'name value';\n"
-           "  exit 1 if the metric (default relmse) is above X (psnr: below X), 2 on errors\n";
+           "  exit 1 if the metric (default relmse) is above X (psnr: below X), 2 on errors\n"
+           "   or: kiln diff error --reference REF [--metric mae|mse|relmse] [--errorfile OUT]\n"
+           "                    PREFIX   (mean error of every image starting with PREFIX)\n"
+           "   or: kiln diff falsecolor IMAGE -o OUT [--maxvalue V] [--plusminus]\n";
 }
 
 int RunImageDiff(const std::vector<std::string>& args) {
+    // pbrt-v4 imgtool's error and falsecolor (app/image_error.h)
+    if (!args.empty() && args[0] == "error")
+        return RunImageError(std::vector<std::string>(args.begin() + 1, args.end()));
+    if (!args.empty() && args[0] == "falsecolor")
+        return RunFalseColor(std::vector<std::string>(args.begin() + 1, args.end()));
     std::vector<std::string> files;
     std::string metric = "relmse", out;
     std::optional<double> threshold;
