@@ -20,8 +20,9 @@ std::vector<std::string> PluginDirectories();
 std::string PluginDirectory(const std::string& library);
 
 // The address of `symbol` in plugin `library` ("libkiln_oiio.so"), loaded once per process and
-// never unloaded, from the first of PluginDirectories() where it loads. Throws std::runtime_error naming the paths tried
-// and dlerror()'s reason when none loads or the symbol is missing. Thread-safe.
+// never unloaded, from the first of PluginDirectories() where it loads. Throws std::runtime_error
+// naming the paths tried and dlerror()'s reason when none loads or the symbol is missing.
+// Thread-safe.
 void* PluginSymbol(const std::string& library, const char* symbol);
 
 }  // namespace kiln

@@ -4,11 +4,9 @@
 // falsecolor maps values through the colour map, or signs to green and red.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -21,38 +19,25 @@ namespace kiln {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr auto Q = testing::ShellQuote;
 
-class ImageError : public ::testing::Test {
+class ImageError : public testing::KilnCommandTest {
   protected:
+    ImageError() : KilnCommandTest("image_error") {}
     void SetUp() override {
-        dir = fs::path(::testing::TempDir()) / ("kiln_image_error_" + std::to_string(getpid()));
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-        std::ofstream(dir / "scene.pbrt")
-            << "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 16\n"
-               "Sampler \"independent\"\nLookAt 0 0 -4 0 0 0 0 1 0 Camera \"perspective\"\n"
-               "WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5]\n"
-               "Material \"diffuse\" \"float temperature\" 1300\nShape \"sphere\"\n";
+        KilnCommandTest::SetUp();
+        WriteScene(
+            "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 16\n"
+            "Sampler \"independent\"\nLookAt 0 0 -4 0 0 0 0 1 0 Camera \"perspective\"\n"
+            "WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5]\n"
+            "Material \"diffuse\" \"float temperature\" 1300\nShape \"sphere\"\n");
     }
-    void TearDown() override { fs::remove_all(dir); }
-    int Run(const std::string& args) {
-        std::string command = "cd " + Q(dir.string()) + " && " + Q(kiln) + " " + args + " > " +
-                              Q((dir / "log.txt").string()) + " 2>&1";
-        int status = std::system(command.c_str());
-        log = testing::ReadAll((dir / "log.txt").string());
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    }
-    double Value(const std::string& name) {
+    double Value(const std::string& metric) {
         std::istringstream in(log);
         for (std::string line; std::getline(in, line);)
-            if (line.rfind(name, 0) == 0) return std::stod(line.substr(line.rfind(' ') + 1));
-        ADD_FAILURE() << name << " not in: " << log;
+            if (line.rfind(metric, 0) == 0) return std::stod(line.substr(line.rfind(' ') + 1));
+        ADD_FAILURE() << metric << " not in: " << log;
         return -1;
     }
-    fs::path dir;
-    std::string log;
-    const std::string kiln = std::string(KILN_BINARY_DIR) + "/kiln";
 };
 
 TEST_F(ImageError, TheEstimateIsTheMeanOfEachImagesErrorAndFallsWithSamples) {

@@ -5,11 +5,9 @@
 // --log-level error silences scene warnings.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -20,32 +18,17 @@
 namespace kiln {
 namespace {
 
-namespace fs = std::filesystem;
-constexpr auto Q = testing::ShellQuote;
-
-class PbrtV4Options : public ::testing::Test {
+class PbrtV4Options : public testing::KilnCommandTest {
   protected:
+    PbrtV4Options() : KilnCommandTest("pbrt_options") {}
     void SetUp() override {
-        dir = fs::path(::testing::TempDir()) / ("kiln_pbrt_options_" + std::to_string(getpid()));
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-        std::ofstream(dir / "scene.pbrt")
-            << "Film \"rgb\" \"integer xresolution\" 32 \"integer yresolution\" 24\n"
-               "Sampler \"independent\"\nLookAt 0 0 -4 0 0 0 0 1 0 Camera \"perspective\"\n"
-               "WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.3 0.3 0.3]\n"
-               "Material \"diffuse\" \"float temperature\" 1500\nShape \"sphere\"\n";
+        KilnCommandTest::SetUp();
+        WriteScene(
+            "Film \"rgb\" \"integer xresolution\" 32 \"integer yresolution\" 24\n"
+            "Sampler \"independent\"\nLookAt 0 0 -4 0 0 0 0 1 0 Camera \"perspective\"\n"
+            "WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.3 0.3 0.3]\n"
+            "Material \"diffuse\" \"float temperature\" 1500\nShape \"sphere\"\n");
     }
-    void TearDown() override { fs::remove_all(dir); }
-    int Run(const std::string& args) {
-        std::string command = "cd " + Q(dir.string()) + " && " + Q(kiln) + " " + args + " > " +
-                              Q((dir / "log.txt").string()) + " 2>&1";
-        int status = std::system(command.c_str());
-        log = testing::ReadAll((dir / "log.txt").string());
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    }
-    fs::path dir;
-    std::string log;
-    const std::string kiln = std::string(KILN_BINARY_DIR) + "/kiln";
 };
 
 TEST_F(PbrtV4Options, MSEAgainstAReferenceAfterEverySample) {
