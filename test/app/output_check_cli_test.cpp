@@ -24,41 +24,33 @@ namespace {
 namespace fs = std::filesystem;
 constexpr auto Q = testing::ShellQuote;
 
-class OutputCheckCLI : public ::testing::Test {
+class OutputCheckCLI : public testing::KilnCommandTest {
   protected:
+    OutputCheckCLI() : KilnCommandTest("outputs") {}
     void SetUp() override {
-        dir = fs::path(::testing::TempDir()) / ("kiln_outputs_" + std::to_string(getpid()));
-        fs::remove_all(dir);
-        fs::create_directories(dir);
+        KilnCommandTest::SetUp();
+        WriteScene(
+            "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 6\n"
+            "Sampler \"independent\" \"integer pixelsamples\" 1\n"
+            "Camera \"perspective\"\nWorldBegin\n"
+            "Material \"diffuse\" \"float temperature\" 1200\n"
+            "Translate 0 0 4 Shape \"sphere\"\n");
         scene = (dir / "scene.pbrt").string();
-        std::ofstream(scene) << "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 6\n"
-                                "Sampler \"independent\" \"integer pixelsamples\" 1\n"
-                                "Camera \"perspective\"\nWorldBegin\n"
-                                "Material \"diffuse\" \"float temperature\" 1200\n"
-                                "Translate 0 0 4 Shape \"sphere\"\n";
     }
     void TearDown() override {
         std::error_code ec;
         fs::permissions(dir / "readonly", fs::perms::owner_all, fs::perm_options::add, ec);
-        fs::remove_all(dir);
+        KilnCommandTest::TearDown();
     }
-    // Runs kiln with `args`; returns the exit status, stderr in `log`
-    int Run(const std::string& args) {
-        std::string command = "cd " + Q(dir.string()) + " && " + Q(kiln) + " " + args +
-                              " --quiet 2> " + Q((dir / "log.txt").string());
-        int status = std::system(command.c_str());
-        log = testing::ReadAll((dir / "log.txt").string());
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    }
+    // Runs kiln with `args` and --quiet; returns the exit status, its messages in `log`
+    int Run(const std::string& args) { return KilnCommandTest::Run(args + " --quiet"); }
     static int Lines(const std::string& text) {
         int n = 0;
         for (char c : text) n += c == '\n';
         return n;
     }
 
-    fs::path dir;
-    std::string scene, log;
-    const std::string kiln = std::string(KILN_BINARY_DIR) + "/kiln";
+    std::string scene;
 };
 
 TEST_F(OutputCheckCLI, BadOutputsFailBeforeParsingAndWriteNothing) {
