@@ -15,6 +15,7 @@
 
 #include "app/checkpoint.h"
 #include "app/display_server.h"
+#include "app/image_diff.h"
 #include "app/output_check.h"
 #include "app/progress.h"
 #include "app/scene_formatter.h"
@@ -82,19 +83,11 @@ Image MSEReference(const std::string& file, const Bounds2i& filmPixels) {
 }
 
 // Mean over pixels and R, G, B of the squared difference of an image's R, G, B from a
-// reference of the same size (pbrt-v4's Image::MSE averaged over the channels).
+// reference of the same size (pbrt-v4's Image::MSE averaged over the channels): kiln diff's
+// rmse, squared.
 double MeanSquaredError(const Image& image, const Image& reference) {
-    const int channel[3] = {image.ChannelIndex("R"), image.ChannelIndex("G"),
-                            image.ChannelIndex("B")};
-    double sum = 0;
-    for (int y = 0; y < reference.Resolution().y; ++y)
-        for (int x = 0; x < reference.Resolution().x; ++x)
-            for (int c = 0; c < 3; ++c) {
-                double d =
-                    double(image.GetChannel({x, y}, channel[c])) - reference.GetChannel({x, y}, c);
-                sum += d * d;
-            }
-    return sum / (3.0 * reference.Resolution().x * reference.Resolution().y);
+    double rmse = CompareImages(image.SelectChannels({"R", "G", "B"}), reference).rmse;
+    return rmse * rmse;
 }
 
 // The file name without folder and extension ("scenes/forge.pbrt" -> "forge")
