@@ -37,6 +37,15 @@ bool Material::UsesFootprint() const {
     return Dispatch([](const auto* m) { return m->usesFootprint; });
 }
 
+bool Material::MayPassLightStraightThrough() const {
+    if (const MixMaterial* mix = GetIf<MixMaterial>())
+        return mix->GetMaterial(0).MayPassLightStraightThrough() ||
+               mix->GetMaterial(1).MayPassLightStraightThrough();
+    if (const ThinDielectricMaterial* thin = GetIf<ThinDielectricMaterial>())
+        return thin->Eta().Is<ConstantSpectrum>();
+    return false;
+}
+
 std::optional<Spectrum> Material::InteriorEta() const {
     if (const DielectricMaterial* d = GetIf<DielectricMaterial>()) return d->Eta();
     return std::nullopt;

@@ -62,6 +62,11 @@ class Material
     // opaque; a mix has no single one).
     std::optional<Spectrum> InteriorEta() const;
 
+    // Whether some point of the surface may pass light straight through (BxDFFlags::
+    // StraightThrough: a non-dispersive thindielectric, alone or in a mix): the integrators
+    // then let shadow rays cross such surfaces (decided at load, SceneFeatures::sheets).
+    bool MayPassLightStraightThrough() const;
+
     bool IsInterface() const { return Is<InterfaceMaterial>(); }
     bool IsMix() const { return Is<MixMaterial>(); }
 

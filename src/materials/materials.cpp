@@ -95,7 +95,7 @@ DielectricBxDF DielectricMaterial::GetBxDF(const MaterialEvalContext& ctx,
 // ThinDielectricMaterial Method Definitions
 ThinDielectricBxDF ThinDielectricMaterial::GetBxDF(const MaterialEvalContext& ctx,
                                                    SampledWavelengths& lambda) const {
-    return ThinDielectricBxDF(SampleEta(eta, lambda));
+    return ThinDielectricBxDF(SampleEta(eta, lambda), eta.Is<ConstantSpectrum>());
 }
 
 // CoatedDiffuseMaterial Method Definitions

@@ -17,7 +17,8 @@ std::string SceneFeatures::ToString() const {
         buf, sizeof(buf),
         "thermal emission %s (%d lights, %d emissivity tables in %.2f s%s); texture footprints "
         "at %d of %d materials; pixel loop: AOVs %s, %d wavelength%s, %s pixel positions; "
-        "light sampler %s; area lights %s, environment light %s, dispersion %s; "
+        "light sampler %s; area lights %s, environment light %s, dispersion %s; shadow rays "
+        "cross %d sheet material%s; "
         "polarisation %s; media %d (%d emissive, %d thermal), integrator %s%s%s%s",
         onOff(thermalEmission), thermalLights, emissivityTables, emissivitySeconds,
         varyingTemperatures ? ", varying temperatures" : "", footprintMaterials, materials,
@@ -27,9 +28,9 @@ std::string SceneFeatures::ToString() const {
         : lightSelection == LightSelection::Power   ? "power"
         : lightSelection == LightSelection::Uniform ? "uniform"
                                                     : "area",
-        onOff(areaLights), onOff(environmentLight), onOff(dispersion),
-        polarized ? "on (Stokes vectors, Mueller matrices)" : "off", media, emissiveMedia,
-        thermalMedia, volumetric ? "volpath" : "path",
+        onOff(areaLights), onOff(environmentLight), onOff(dispersion), sheets,
+        sheets == 1 ? "" : "s", polarized ? "on (Stokes vectors, Mueller matrices)" : "off", media,
+        emissiveMedia, thermalMedia, volumetric ? "volpath" : "path",
         genericVolumes ? "; generic volpath (--generic)" : "",
         genericFootprints ? "; generic footprints (--generic)" : "",
         genericAOVs ? "; generic AOVs (--generic)" : "");

@@ -74,6 +74,10 @@ struct SceneFeatures {
     LightSelection lightSelection = LightSelection::BVH;
     bool areaLights = false, environmentLight = false;
     bool dispersion = false;  // wavelength-dependent IOR (terminates secondaries)
+    // Materials that pass light straight through (thin sheets, Material::
+    // MayPassLightStraightThrough): with any, shadow rays cross them (an Intersect loop),
+    // else one IntersectP
+    int sheets = 0;
     // Participating media: the integrator "volpath" runs VolPathIntegrator when the scene has
     // media, PathIntegrator otherwise (media cost nothing when absent); --generic volpath
     // runs VolPathIntegrator whatever the scene says

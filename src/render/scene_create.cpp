@@ -475,6 +475,7 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
     auto count = [&](const Material* m) {
         ++f.materials;
         if (m->UsesFootprint()) ++f.footprintMaterials;
+        if (m->MayPassLightStraightThrough()) ++f.sheets;
     };
     for (const auto& [name, m] : materials.named) count(m);
     for (const Material* m : materials.anonymous) count(m);

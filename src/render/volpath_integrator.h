@@ -9,7 +9,9 @@
 // one spectral MIS estimate (Miller, Georgiev & Jarosz 2019). Shadow rays pass through
 // interface surfaces and estimate transmittance by ratio tracking. Media emit at every
 // tentative collision (sigma_a Le, or thermal emission: medium_emission.h). Surfaces are
-// handled as in PathIntegrator: emission computed from the BSDF at the hit.
+// handled as in PathIntegrator: emission computed from the BSDF at the hit, and thin sheets
+// crossed by shadow rays (a path straight through one keeps its MIS state and depth, as at an
+// interface).
 //
 // Scenes without media run PathIntegrator (renderer.cpp); kiln --generic volpath runs this
 // one anyway, for comparisons.
@@ -44,6 +46,7 @@ class VolPathIntegrator {
         bool specularBounce = false, anyNonSpecularBounces = false;
         int depth = 0;
         Float etaScale = 1;
+        int sheetCrossings = 0;
         LightSampleContext prevContext;
         int medium = scene.cameraMedium;
         const int maxDepth = settings.maxDepth;
@@ -159,8 +162,25 @@ class VolPathIntegrator {
                 ray = isect.SpawnRay(ray.d);
                 continue;
             }
-            if (depth == 0 && visibleSurface)
+            if (depth == 0 && sheetCrossings == 0 && visibleSurface)
                 *visibleSurface = scene.MakeVisibleSurface(isect, bsdf, lambda);
+
+            // Straight through a thin sheet, which shadow rays cross too
+            std::optional<BSDFSampleOf<Throughput>> sheetSample;
+            if (IsStraightThrough(bsdf.Flags())) {
+                Float u = sampler.Get1D();
+                sheetSample = bsdf.Sample_f<Throughput>(isect.wo, u, sampler.Get2D());
+                if (!sheetSample || sheetSample->pdf == 0 || !sheetSample->f) break;
+                if (sheetSample->IsStraightThrough()) {
+                    if (++sheetCrossings > kMaxInterfaceCrossings) break;
+                    beta = beta * (sheetSample->f *
+                                   (AbsDot(sheetSample->wi, isect.shading.n) / sheetSample->pdf));
+                    medium = isect.MediumAfter(sheetSample->wi, medium);
+                    ray = isect.SpawnRay(sheetSample->wi);
+                    continue;
+                }
+            }
+
             if (depth++ >= maxDepth) return L;
             if (settings.regularize && anyNonSpecularBounces) bsdf.Regularize();
 
@@ -169,11 +189,13 @@ class VolPathIntegrator {
                 L += SampleLd(isect, &bsdf, nullptr, medium, lambda, sampler, beta, r_u);
             prevContext = LightSampleContext(isect);
 
-            // Continue by sampling the BSDF
+            // Continue by sampling the BSDF (a sheet's reflection is sampled already)
             Vector3f wo = isect.wo;
-            Float u = sampler.Get1D();
-            std::optional<BSDFSampleOf<Throughput>> bs =
-                bsdf.Sample_f<Throughput>(wo, u, sampler.Get2D());
+            std::optional<BSDFSampleOf<Throughput>> bs = sheetSample;
+            if (!bs) {
+                Float u = sampler.Get1D();
+                bs = bsdf.Sample_f<Throughput>(wo, u, sampler.Get2D());
+            }
             if (!bs || bs->pdf == 0 || !bs->f) break;
             beta = beta * (bs->f * (AbsDot(bs->wi, isect.shading.n) / bs->pdf));
             r_l = r_u / (bs->pdfIsProportional ? bsdf.PDF(wo, bs->wi) : bs->pdf);
@@ -259,15 +281,20 @@ class VolPathIntegrator {
         }
         if (!f_hat) return {};
 
-        // Transmittance to the light
+        // Transmittance to the light, through media and thin sheets
         Ray lightRay = intr.SpawnRayTo(ls->pLight);
         if (surface) medium = surface->MediumAfter(lightRay.d, medium);
         SampledSpectrum T_ray(1.f), r_l(1.f), r_u(1.f);
+        Throughput T_sheets = Radiance::One();
         RNG rng(Hash(lightRay.o), Hash(lightRay.d));
         for (int crossings = 0;; ++crossings) {
             std::optional<ShapeIntersection> si =
                 scene.aggregate->Intersect(lightRay, 1 - ShadowEpsilon);
-            if (si && si->intr.material && !si->intr.material->IsInterface()) return {};
+            if (si && si->intr.material && !si->intr.material->IsInterface()) {
+                std::optional<Throughput> T = SheetTransmittance(*si, lambda);
+                if (!T) return {};
+                T_sheets = T_sheets * *T;
+            }
             if (medium >= 0) {
                 Float tMax = si ? si->tHit : 1 - ShadowEpsilon;
                 SampledSpectrum T_maj = scene.media[size_t(medium)].SampleT_maj(
@@ -306,10 +333,25 @@ class VolPathIntegrator {
         if (!Li) return {};
         r_l *= r_p * p_l;
         r_u *= r_p * scatterPDF;
-        Spectrum contribution = Radiance::Apply(beta * f_hat, Li) * T_ray;
+        Spectrum contribution = Radiance::Apply(beta * f_hat * T_sheets, Li) * T_ray;
         if (IsDeltaLight(light.Type()) || settings.strategy == LightStrategy::LightOnly)
             return contribution / WavelengthMean(r_l, lambda);
         return contribution / WavelengthMean(r_l + r_u, lambda);
+    }
+
+    // The straight-through transmittance of a thin sheet hit by a shadow ray (towards si.intr.wo),
+    // or nothing when the surface blocks it.
+    std::optional<Throughput> SheetTransmittance(ShapeIntersection& si,
+                                                 const SampledWavelengths& lambda) const {
+        if (!si.intr.material->MayPassLightStraightThrough()) return std::nullopt;
+        SampledWavelengths sheetLambda = lambda;
+        BSDF sheet = scene.GetBSDF(si.intr, sheetLambda);
+        if (!sheet || !IsStraightThrough(sheet.Flags())) return std::nullopt;
+        std::optional<BSDFSampleOf<Throughput>> bs =
+            sheet.Sample_f<Throughput>(si.intr.wo, 0.5f, Point2f(0.5f, 0.5f),
+                                       TransportMode::Radiance, BxDFReflTransFlags::Transmission);
+        if (!bs || !bs->IsStraightThrough() || bs->pdf == 0) return std::nullopt;
+        return bs->f * (AbsDot(bs->wi, si.intr.shading.n) / bs->pdf);
     }
 
     static constexpr int kMaxInterfaceCrossings = 1024;

@@ -42,6 +42,7 @@ std::string Cavity(const Case& c, bool meshes, double T, int spp) {
          "\"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\" \"float roughness\" 0.05\n"
       << "MakeNamedMaterial \"checks\" \"string type\" \"diffuse\" \"texture reflectance\" "
          "\"checks\"\n"
+      << "MakeNamedMaterial \"thin\" \"string type\" \"thindielectric\" \"float eta\" 1.33\n"
       << "NamedMaterial \"checks\"\n"
       << (meshes ? testing::MeshSphere(6, 12, 8, 0, 0, 0, true)
                  : "Shape \"sphere\" \"float radius\" 6\n")
@@ -95,6 +96,11 @@ const Case kCases[] = {
     {"mix gold/diffuse",
      "\"mix\" \"string materials\" [\"gold\" \"checks\"] "
      "\"float amount\" 0.4"},
+    // Shadow rays cross thin sheets (thin_sheet_test.cpp); paths straight through them must
+    // not count again what light sampling found
+    {"thin glass sheet", "\"thindielectric\" \"float eta\" 1.5"},
+    {"mix thin glass/gold",
+     "\"mix\" \"string materials\" [\"thin\" \"gold\"] \"float amount\" 0.5"},
 };
 
 // Polarised transport: the cavity must also be unpolarised. Reflection from metals polarises
@@ -148,7 +154,8 @@ INSTANTIATE_TEST_SUITE_P(Cavities, Equilibrium,
 INSTANTIATE_TEST_SUITE_P(Cavities, PolarizedEquilibrium,
                          ::testing::Combine(::testing::Values(kCases[0], kCases[1], kCases[2],
                                                               kCases[3], kCases[4], kCases[5],
-                                                              kCases[6], kCases[8], kCases[9]),
+                                                              kCases[6], kCases[8], kCases[9],
+                                                              kCases[11], kCases[12]),
                                             ::testing::Bool()),
                          testing::CavityCaseName<Case>);
 

@@ -95,6 +95,14 @@ const Case kCases[] = {
      "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.05 0.1 0.02] \"rgb sigma_s\" [0.2 0.1 "
      "0.3] \"float g\" -0.4",
      1024},
+    // Shadow rays cross thin sheets: from the hot gas out to the wall, and from the hot air in
+    {"thin glass bulb, hot gas", "\"thindielectric\" \"float eta\" 1.5",
+     "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.5 0.4 0.3] \"rgb sigma_s\" [0.5 1 0.5]",
+     "", 512},
+    {"hot air, thin glass bulb", "\"thindielectric\" \"float eta\" 1.5", "",
+     "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.05 0.1 0.02] \"rgb sigma_s\" [0.2 0.1 "
+     "0.3]",
+     1024},
     {"hot air only", "", "",
      "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.2 0.2 0.2] \"rgb sigma_s\" [0.3 0.3 "
      "0.3]",

@@ -10,7 +10,9 @@
 // ideal depolariser f diag(1, 0, 0, 0), which needs no frame. A BxDF that is neither, or both,
 // does not compile into the closed set (static_assert below). Sampling is the same in both
 // variants: the polarised sample is the unpolarised one with its Mueller value, so both make the
-// same random decisions and M00 equals the unpolarised value.
+// same random decisions and M00 equals the unpolarised value (except for the thin dielectric,
+// whose unpolarised value follows pbrt-v4 where the polarised one must conserve each wave:
+// thin_dielectric_bxdf.cpp).
 #pragma once
 
 #include <concepts>

@@ -18,6 +18,9 @@ enum BxDFFlags : unsigned {
     Diffuse = 1 << 2,
     Glossy = 1 << 3,
     Specular = 1 << 4,
+    // Transmission that leaves the direction unchanged (a thin sheet: thindielectric). Light
+    // sampling looks through such a surface (the integrators' shadow rays cross it).
+    StraightThrough = 1 << 5,
     DiffuseReflection = Diffuse | Reflection,
     DiffuseTransmission = Diffuse | Transmission,
     GlossyReflection = Glossy | Reflection,
@@ -35,6 +38,7 @@ inline bool IsDiffuse(BxDFFlags f) { return f & BxDFFlags::Diffuse; }
 inline bool IsGlossy(BxDFFlags f) { return f & BxDFFlags::Glossy; }
 inline bool IsSpecular(BxDFFlags f) { return f & BxDFFlags::Specular; }
 inline bool IsNonSpecular(BxDFFlags f) { return f & (BxDFFlags::Diffuse | BxDFFlags::Glossy); }
+inline bool IsStraightThrough(BxDFFlags f) { return f & BxDFFlags::StraightThrough; }
 
 // Which hemispheres a sampling call may choose from.
 enum class BxDFReflTransFlags : unsigned {
@@ -72,6 +76,7 @@ struct BSDFSampleOf {
     bool IsReflection() const { return kiln::IsReflective(flags); }
     bool IsTransmission() const { return kiln::IsTransmissive(flags); }
     bool IsSpecular() const { return kiln::IsSpecular(flags); }
+    bool IsStraightThrough() const { return kiln::IsStraightThrough(flags); }
 };
 using BSDFSample = BSDFSampleOf<SampledSpectrum>;
 

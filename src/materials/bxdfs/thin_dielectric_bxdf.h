@@ -1,5 +1,9 @@
-// Thin dielectric slab (window pane): specular reflection and straight-through transmission
-// summed over all internal inter-reflections.
+// Thin dielectric slab (window pane, lamp bulb): specular reflection and straight-through
+// transmission summed over all internal inter-reflections. When its IOR does not vary with
+// wavelength, its transmission is flagged StraightThrough: the integrators' shadow rays cross
+// it, attenuated by T, so light sampling finds a lamp inside a bulb (a dispersive slab stays
+// an ordinary specular surface, since a shadow ray cannot terminate the path's secondary
+// wavelengths).
 #pragma once
 
 #include <optional>
@@ -10,10 +14,12 @@
 namespace kiln {
 
 // eta: IOR of the slab relative to the surrounding medium (dimensionless). Non-absorbing.
+// straightThrough: light sampling may look through it (eta is the same at every wavelength).
 class ThinDielectricBxDF {
   public:
     ThinDielectricBxDF() = default;
-    explicit ThinDielectricBxDF(Float eta) : eta(eta) {}
+    explicit ThinDielectricBxDF(Float eta, bool straightThrough = true)
+        : eta(eta), straightThrough(straightThrough) {}
 
     SampledSpectrum f(Vector3f, Vector3f, TransportMode) const { return SampledSpectrum(0.f); }
     std::optional<BSDFSample> Sample_f(
@@ -28,7 +34,8 @@ class ThinDielectricBxDF {
     MuellerMatrix MuellerF(Vector3f, Vector3f, TransportMode) const { return {}; }
     MuellerMatrix MuellerSample(Vector3f wo, const BSDFSample& bs, TransportMode mode) const;
     BxDFFlags Flags() const {
-        return BxDFFlags::Reflection | BxDFFlags::Transmission | BxDFFlags::Specular;
+        BxDFFlags f = BxDFFlags::Reflection | BxDFFlags::Transmission | BxDFFlags::Specular;
+        return straightThrough ? f | BxDFFlags::StraightThrough : f;
     }
     void Regularize() {}
 
@@ -39,6 +46,7 @@ class ThinDielectricBxDF {
 
   private:
     Float eta = 1;
+    bool straightThrough = true;
 };
 
 }  // namespace kiln
