@@ -32,6 +32,9 @@ namespace kiln {
 
 namespace {
 
+// How often --display-server sees the image at least (the longest wave), seconds
+constexpr double kDisplayUpdateSeconds = 1;
+
 // SIGINT (Ctrl-C) and SIGTERM (what schedulers send before they kill a job): the first stops
 // loading or rendering and lets the image so far be written; a second ends the process at
 // once, removing a temporary file being written. The exit status is 128 + the first signal's
@@ -324,8 +327,9 @@ int RenderFrame(const CommandLineOptions& options, LoadedScene& loaded, std::opt
         if (frame) m.strings["kiln:frame"] = std::to_string(*frame);
         return m;
     };
-    // pbrt-v4's --display-server: the image after every wave, in tev. A viewer that cannot be
-    // reached is a warning: the render goes on.
+    // pbrt-v4's --display-server: the image after every wave, in tev, waves kept to about a
+    // second each so that the view follows the render. A viewer that cannot be reached is a
+    // warning: the render goes on.
     std::unique_ptr<DisplayServerClient> display;
     std::string displayName =
         FileStem(options.sceneFile) + (frame ? " " + std::to_string(*frame) : "");
@@ -334,6 +338,7 @@ int RenderFrame(const CommandLineOptions& options, LoadedScene& loaded, std::opt
             display = DisplayServerClient::Connect(options.displayServer);
             Bounds2i b = scene->job->film->PixelBounds();
             display->CreateImage(displayName, b.pMax - b.pMin, {"R", "G", "B"});
+            settings.waveSeconds = kDisplayUpdateSeconds;
         } catch (const std::exception& e) {
             std::cerr << "kiln: warning: " << e.what() << "; rendering without it\n";
         }

@@ -128,7 +128,7 @@ RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
 
     // Waves of 1, 2, 4, ... samples per pixel (at most settings.maxWaveSize, 64 by default), as
     // pbrt-v4; with checkpoints, small enough that a wave takes at most a quarter of the
-    // checkpoint interval
+    // checkpoint interval, and with settings.waveSeconds at most that
     constexpr int tileSize = 16;
     int waveStart = std::clamp(settings.startSample, 0, spp), waveSize = 1;
     if (observer && waveStart > 0) observer->Advanced(int64_t(res.x) * res.y * waveStart);
@@ -166,11 +166,12 @@ RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
         }
         if (settings.afterWave) settings.afterWave(waveEnd);
         int next = std::clamp(2 * waveSize, 1, std::max(1, settings.maxWaveSize));
-        if (settings.checkpoint) {
+        double waveLimit = settings.waveSeconds > 0 ? settings.waveSeconds : Infinity;
+        if (settings.checkpoint) waveLimit = std::min(waveLimit, 0.25 * settings.checkpointSeconds);
+        if (waveLimit < Infinity) {
             double perSample = std::chrono::duration<double>(now - waveBegan).count() /
                                double(waveEnd - waveStart);
-            if (perSample > 0)
-                next = std::clamp(int(0.25 * settings.checkpointSeconds / perSample), 1, next);
+            if (perSample > 0) next = int(std::clamp<double>(waveLimit / perSample, 1, next));
         }
         waveStart = waveEnd;
         waveSize = next;

@@ -44,6 +44,9 @@ struct RenderSettings {
     std::function<void(int completed)> afterWave;
     // The largest wave, samples per pixel (64, as pbrt-v4; 1 for an error per sample count)
     int maxWaveSize = 64;
+    // When > 0, waves are kept short enough (measured) that one takes at most about this long:
+    // kiln --display-server shows the image at least this often
+    double waveSeconds = 0;
 };
 
 struct RenderStats {

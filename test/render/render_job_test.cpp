@@ -199,6 +199,16 @@ TEST(RenderWaves, AfterEveryWaveTheFilmIsARenderOfThatManySamples) {
     Render(*scene, settings);
     EXPECT_EQ(completed.size(), 12u);
     EXPECT_EQ(completed.back(), 12);
+    // A wave time limit no wave can meet (--display-server's, made tiny) also gives one sample
+    // per wave after the first, and the image of the same samples
+    scene->SetJob(o, diag);
+    completed.clear();
+    settings.maxWaveSize = 64;
+    settings.waveSeconds = 1e-12;
+    Render(*scene, settings);
+    EXPECT_EQ(completed.size(), 12u);
+    EXPECT_EQ(completed.back(), 12);
+    ExpectIdentical(scene->job->film->GetImage(nullptr), images.back());
 }
 
 }  // namespace
