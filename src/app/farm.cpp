@@ -133,12 +133,17 @@ std::string MergeScript(const FarmPlan& p) {
 }
 
 int RunFarm(const std::vector<std::string>& args) {
-    auto usage = [](const std::string& message) {
-        std::cerr << "kiln farm: " << message << "\n"
-                  << "usage: kiln farm SCENE [--tiles N] [--frames A-B] [--spp N] [-o OUT]\n"
-                     "                 [--dry-run] [--status] [-- SBATCH OPTIONS...]\n";
+    const char* synopsis =
+        "usage: kiln farm SCENE [--tiles N] [--frames A-B] [--spp N] [-o OUT]\n"
+        "                 [--dry-run] [--status] [-- SBATCH OPTIONS...]\n";
+    auto usage = [&](const std::string& message) {
+        std::cerr << "kiln farm: " << message << "\n" << synopsis;
         return 2;
     };
+    if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+        std::cout << synopsis;
+        return 0;
+    }
     FarmPlan plan;
     int tiles = 4;
     bool dryRun = false, status = false;

@@ -3,17 +3,23 @@
 // repository's scenes/ (a link) and out/, with the scene files the page writes out in ```pbrt
 // blocks (named by the `NAME.pbrt` mentioned just before the block). Renders get --spp 1 added
 // (the last --spp wins) so that the suite stays quick; kiln farm finds a stand-in sbatch, and
-// its --status may exit 1 (parts missing, as documented). The
-// set-up scripts (scripts/*.sh) are what CI itself runs; other programs (ffmpeg) are not run.
+// its --status may exit 1 (parts missing, as documented). Commands quoted inline in the prose
+// (`kiln convert IN.exr -o OUT.png`, `kiln --emission MODEL`) are synopses with placeholders:
+// each must name a real subcommand and only options its --help lists. scripts/test.sh is what
+// CI itself runs, scripts/demo.sh is run by test/install/demo_test.sh; other programs (ffmpeg)
+// are not run.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -104,6 +110,51 @@ TEST(DocsCommands, EveryKilnCommandInTheDocumentationRuns) {
         fs::remove_all(dir);
     }
     EXPECT_GE(run, 3);  // README's example, the cluster and animation pages
+}
+
+// The help text of kiln or of one of its subcommands (standard output and error).
+std::string HelpOf(const std::string& subcommand) {
+    std::string shell = testing::ShellQuote(std::string(KILN_BINARY_DIR) + "/kiln") + " " +
+                        subcommand + (subcommand.empty() ? "" : " ") + "--help 2>&1";
+    std::string text;
+    if (FILE* p = popen(shell.c_str(), "r")) {
+        char buf[4096];
+        size_t n;
+        while ((n = fread(buf, 1, sizeof(buf), p)) > 0) text.append(buf, n);
+        pclose(p);
+    }
+    return text;
+}
+
+TEST(DocsCommands, EveryInlineKilnCommandNamesRealOptions) {
+    const fs::path root(KILN_SOURCE_DIR);
+    std::vector<fs::path> files = {root / "README.md"};
+    for (const auto& e : fs::recursive_directory_iterator(root / "docs"))
+        if (e.path().extension() == ".md") files.push_back(e.path());
+    const std::set<std::string> subcommands = {"convert", "info", "diff", "merge", "farm"};
+    std::map<std::string, std::string> help;
+    int checked = 0;
+    const std::regex span("`(kiln [^`]*)`"), option("(^|[\\s\\[])(--[a-z][a-z0-9-]*)");
+    for (const fs::path& file : files) {
+        std::string text = testing::ReadAll(file.string());
+        for (std::sregex_iterator m(text.begin(), text.end(), span), end; m != end; ++m) {
+            std::string command = (*m)[1];
+            std::istringstream words(command.substr(5));
+            std::string first;
+            words >> first;
+            std::string sub = subcommands.count(first) ? first : "";
+            if (!help.count(sub)) help[sub] = HelpOf(sub);
+            ASSERT_NE(help[sub].find("usage"), std::string::npos) << "kiln " << sub << " --help";
+            for (std::sregex_iterator o(command.begin(), command.end(), option); o != end; ++o) {
+                std::string name = (*o)[2];
+                EXPECT_NE(help[sub].find(name), std::string::npos)
+                    << file.filename().string() << ": `" << command << "` names " << name
+                    << ", which kiln " << sub << (sub.empty() ? "" : " ") << "--help does not list";
+            }
+            ++checked;
+        }
+    }
+    EXPECT_GE(checked, 30);
 }
 
 }  // namespace
