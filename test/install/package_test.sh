@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # kiln installed elsewhere renders: `cmake --install` into a fresh prefix, and the Debian package
-# that `cpack -G DEB` builds, unpacked into a fresh root, each run from an unrelated working
+# that `cpack -G DEB` builds, unpacked into a fresh root and (as root, when no kiln package is
+# installed) installed with dpkg -i and removed again, each run from an unrelated working
 # directory. Each must find its plugins and display config in its own tree (kiln --version
 # says where), render a PNG (display config) and a JPEG (OpenImageIO plugin), and the package
 # must depend only on Debian 12 packages that are installed here (what apt installs with it).
@@ -50,4 +51,17 @@ for d in "${deps[@]}"; do
     dpkg-query -W -f='${Status}' "$name" 2>/dev/null | grep -q "install ok installed" ||
         fail "dependency $name is not an installed package"
 done
-echo "package_test: install tree and $(basename "$deb") render (${#deps[@]} dependencies)"
+# 3. The Debian package, installed by dpkg (which refuses it if a dependency is missing) and
+# removed again: only as root, and only where no kiln package is installed already
+installed=""
+if [ "$(id -u)" = 0 ] && ! dpkg-query -W -f='${Status}' kiln 2>/dev/null | grep -q "ok installed"; then
+    trap 'dpkg -r kiln >/dev/null 2>&1 || true; rm -rf "$tmp"' EXIT
+    dpkg -i "$deb" >"$tmp/dpkg.txt" 2>&1 || fail "dpkg -i refused the package: $(cat "$tmp/dpkg.txt")"
+    check_tree /usr/bin/kiln /usr
+    dpkg -r kiln >/dev/null || fail "dpkg -r kiln failed"
+    [ ! -e /usr/bin/kiln ] || fail "dpkg -r left /usr/bin/kiln"
+    installed=", installed by dpkg -i and removed"
+else
+    echo "package_test: not installing the package (needs root and no kiln package installed)" >&2
+fi
+echo "package_test: install tree and $(basename "$deb") render (${#deps[@]} dependencies$installed)"
