@@ -2,14 +2,17 @@
 # Renders the showcase scenes (scenes/showcase/) at full size into docs/images/showcase-*.png,
 # each with a line of what it took (spp, resolution, render time, machine) in
 # docs/images/showcase-*.txt, which README.md quotes.
-# Usage: scripts/showcase.sh [spp]   (default 256)
+# Usage: scripts/showcase.sh [spp [scene ...]]   (default 256; scenes: forge bulbs pour)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 kiln="${KILN_BUILD_DIR:-$root/build}/kiln"
 spp="${1:-256}"
+shift || true
+scenes=("$@")
+[ ${#scenes[@]} -gt 0 ] || scenes=(forge bulbs pour)
 out="$root/docs/images"
 mkdir -p "$out"
-for scene in forge; do
+for scene in "${scenes[@]}"; do
     log="$(mktemp)"
     "$kiln" "$root/scenes/showcase/$scene.pbrt" --spp "$spp" -o "$out/showcase-$scene.png" \
         2>"$log"
