@@ -12,48 +12,11 @@ Usage: generate_bulbs.py (no arguments; writes bulbs.pbrt next to this script)
 import math
 import os
 
+from scene_text import SceneText, add, cross, mul, norm, sub
+
 HERE = os.path.dirname(os.path.abspath(__file__))
-out = []
-
-
-def emit(s=""):
-    out.append(s)
-
-
-def fmt(values, digits=5):
-    return " ".join("%.*g" % (digits, v) for v in values)
-
-
-def mesh(points, tris, normals=None, temperatures=None, extra=""):
-    emit('Shape "trianglemesh" "point3 P" [%s]' % fmt([c for p in points for c in p]))
-    emit('    "integer indices" [%s]' % " ".join(str(i) for t in tris for i in t))
-    if normals:
-        emit('    "normal N" [%s]' % fmt([c for n in normals for c in n]))
-    if temperatures:
-        emit('    "float temperature" [%s]' % fmt(temperatures, 4))
-    if extra:
-        emit("    " + extra)
-
-
-def sub(a, b):
-    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
-
-
-def add(a, b):
-    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
-
-
-def mul(a, s):
-    return (a[0] * s, a[1] * s, a[2] * s)
-
-
-def cross(a, b):
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-
-
-def norm(a):
-    length = math.sqrt(a[0] ** 2 + a[1] ** 2 + a[2] ** 2)
-    return mul(a, 1 / length)
+scene = SceneText(temperature_digits=4)
+emit, mesh = scene.emit, scene.mesh
 
 
 def frame(d):
@@ -64,57 +27,13 @@ def frame(d):
 
 
 def tube(path, radius, sides=8, temperatures=None, normals=True):
-    """A tube of the given radius along a polyline path (smooth normals unless the tube is too
-    thin to show facets)."""
-    pts, nrm, tris, temps = [], [], [], []
-    n = len(path)
-    for i, p in enumerate(path):
-        d = norm(sub(path[min(i + 1, n - 1)], path[max(i - 1, 0)]))
-        u, v = frame(d)
-        for k in range(sides):
-            a = 2 * math.pi * k / sides
-            nn = add(mul(u, math.cos(a)), mul(v, math.sin(a)))
-            pts.append(add(p, mul(nn, radius)))
-            nrm.append(nn)
-            if temperatures:
-                temps.append(temperatures[i])
-    for i in range(n - 1):
-        for k in range(sides):
-            a, b = i * sides + k, i * sides + (k + 1) % sides
-            c, d = a + sides, b + sides
-            tris += [(a, c, b), (b, c, d)]
-    mesh(pts, tris, nrm if normals else None, temps or None)
+    """A tube of one radius along a path (flat-shaded without normals: wires too thin to show
+    facets)."""
+    scene.tube(path, [radius] * len(path), sides, temperatures, normals=normals, twist_free=False)
 
 
-def lathe(profile, segments=64, flip=False):
-    """A surface of revolution about the y axis: profile [(radius, y)], smooth normals."""
-    pts, nrm, tris = [], [], []
-    m = len(profile)
-    for j, (r, y) in enumerate(profile):
-        r0, y0 = profile[max(j - 1, 0)]
-        r1, y1 = profile[min(j + 1, m - 1)]
-        # outward normal of the profile curve (dr, dy) rotated
-        nr, ny = (y1 - y0), -(r1 - r0)
-        length = math.hypot(nr, ny) or 1
-        nr, ny = nr / length, ny / length
-        if flip:
-            nr, ny = -nr, -ny
-        for k in range(segments):
-            a = 2 * math.pi * k / segments
-            pts.append((r * math.cos(a), y, r * math.sin(a)))
-            nrm.append((nr * math.cos(a), ny, nr * math.sin(a)))
-    for j in range(m - 1):
-        for k in range(segments):
-            a, b = j * segments + k, j * segments + (k + 1) % segments
-            c, d = a + segments, b + segments
-            # no triangle with two corners on the axis (a profile point of radius 0)
-            quad = [(a, b, c), (b, d, c)] if not flip else [(a, c, b), (b, c, d)]
-            if profile[j][0] == 0:
-                quad = quad[1:]
-            if profile[j + 1][0] == 0:
-                quad = quad[:1]
-            tris += quad
-    mesh(pts, tris, nrm)
+def lathe(profile, segments=64):
+    scene.lathe(profile, segments)
 
 
 def smoothstep(s):
@@ -268,7 +187,7 @@ def main():
     bulb(-0.15, 0.05, 0.15, 2000, 25)
     bulb(0.2, -0.01, 0.28, 1650, 50)
     with open(os.path.join(HERE, "bulbs.pbrt"), "w") as f:
-        f.write("\n".join(out) + "\n")
+        f.write(scene.text())
 
 
 if __name__ == "__main__":

@@ -12,39 +12,11 @@ import math
 import os
 import random
 
+from scene_text import SceneText
+
 HERE = os.path.dirname(os.path.abspath(__file__))
-out = []
-
-
-def emit(s=""):
-    out.append(s)
-
-
-def fmt(values):
-    return " ".join("%.5g" % v for v in values)
-
-
-def mesh(points, tris, extra="", normals=None, temperatures=None):
-    """A trianglemesh shape: points [(x, y, z)], tris [(i, j, k)]."""
-    emit('Shape "trianglemesh" "point3 P" [%s]' % fmt([c for p in points for c in p]))
-    emit('    "integer indices" [%s]' % " ".join(str(i) for t in tris for i in t))
-    if normals:
-        emit('    "normal N" [%s]' % fmt([c for n in normals for c in n]))
-    if temperatures:
-        emit('    "float temperature" [%s]' % fmt(temperatures))
-    if extra:
-        emit("    " + extra)
-
-
-def box(x0, x1, y0, y1, z0, z1):
-    """Six quads of an axis-aligned box, outward facing."""
-    p = [(x, y, z) for z in (z0, z1) for y in (y0, y1) for x in (x0, x1)]
-    # vertex index: x + 2 y + 4 z
-    quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
-    tris = []
-    for a, b, c, d in quads:
-        tris += [(a, b, c), (a, c, d)]
-    mesh(p, tris)
+scene = SceneText()
+emit, mesh, box = scene.emit, scene.mesh, scene.box
 
 
 def frustum(xb, zb, xt, zt, y0, y1):
@@ -273,7 +245,7 @@ def main():
     emit("AttributeEnd")
     emit()
     with open(os.path.join(HERE, "forge.pbrt"), "w") as f:
-        f.write("\n".join(out) + "\n")
+        f.write(scene.text())
 
 
 if __name__ == "__main__":

@@ -14,121 +14,13 @@ import math
 import os
 import random
 
+from scene_text import SceneText, fmt
+
 HERE = os.path.dirname(os.path.abspath(__file__))
-out = []
 G = 9.81
-
-
-def emit(s=""):
-    out.append(s)
-
-
-def fmt(values, digits=5):
-    return " ".join("%.*g" % (digits, v) for v in values)
-
-
-def mesh(points, tris, normals=None, temperatures=None):
-    emit('Shape "trianglemesh" "point3 P" [%s]' % fmt([c for p in points for c in p]))
-    emit('    "integer indices" [%s]' % " ".join(str(i) for t in tris for i in t))
-    if normals:
-        emit('    "normal N" [%s]' % fmt([c for n in normals for c in n], 4))
-    if temperatures:
-        emit('    "float temperature" [%s]' % fmt(temperatures, 4))
-
-
-def add(a, b):
-    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
-
-
-def sub(a, b):
-    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
-
-
-def mul(a, s):
-    return (a[0] * s, a[1] * s, a[2] * s)
-
-
-def cross(a, b):
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-
-
-def norm(a):
-    length = math.sqrt(a[0] ** 2 + a[1] ** 2 + a[2] ** 2)
-    return mul(a, 1 / length)
-
-
-def tube(path, radii, sides=12, temperatures=None, ripple=None):
-    """A tube along a polyline; radii one per path point; ripple(i, k) scales the radius."""
-    pts, nrm, tris, temps = [], [], [], []
-    n = len(path)
-    prev_u = None
-    for i, p in enumerate(path):
-        d = norm(sub(path[min(i + 1, n - 1)], path[max(i - 1, 0)]))
-        # parallel transport of the frame keeps the tube from twisting
-        helper = prev_u if prev_u else ((0, 0, 1) if abs(d[2]) < 0.9 else (1, 0, 0))
-        u = norm(cross(cross(d, helper), d))
-        v = cross(d, u)
-        prev_u = u
-        for k in range(sides):
-            a = 2 * math.pi * k / sides
-            nn = add(mul(u, math.cos(a)), mul(v, math.sin(a)))
-            r = radii[i] * (ripple(i, k) if ripple else 1)
-            pts.append(add(p, mul(nn, r)))
-            nrm.append(nn)
-            if temperatures:
-                temps.append(temperatures[i])
-    for i in range(n - 1):
-        for k in range(sides):
-            a, b = i * sides + k, i * sides + (k + 1) % sides
-            c, d = a + sides, b + sides
-            tris += [(a, c, b), (b, c, d)]
-    mesh(pts, tris, nrm, temps or None)
-
-
-def lathe(profile, segments=48):
-    """A surface of revolution about the local y axis: profile [(radius, y)]."""
-    pts, nrm, tris = [], [], []
-    m = len(profile)
-    for j, (r, y) in enumerate(profile):
-        r0, y0 = profile[max(j - 1, 0)]
-        r1, y1 = profile[min(j + 1, m - 1)]
-        nr, ny = (y1 - y0), -(r1 - r0)
-        length = math.hypot(nr, ny) or 1
-        for k in range(segments):
-            a = 2 * math.pi * k / segments
-            pts.append((r * math.cos(a), y, r * math.sin(a)))
-            nrm.append((nr / length * math.cos(a), ny / length, nr / length * math.sin(a)))
-    for j in range(m - 1):
-        for k in range(segments):
-            a, b = j * segments + k, j * segments + (k + 1) % segments
-            c, d = a + segments, b + segments
-            # no triangle with two corners on the axis (a profile point of radius 0)
-            quad = [(a, b, c), (b, d, c)]
-            if profile[j][0] == 0:
-                quad = quad[1:]
-            if profile[j + 1][0] == 0:
-                quad = quad[:1]
-            tris += quad
-    mesh(pts, tris, nrm)
-
-
-def box(x0, x1, y0, y1, z0, z1):
-    p = [(x, y, z) for z in (z0, z1) for y in (y0, y1) for x in (x0, x1)]
-    quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
-    tris = []
-    for a, b, c, d in quads:
-        tris += [(a, b, c), (a, c, d)]
-    mesh(p, tris)
-
-
-def disc(cx, y, cz, r, segments=32, temperature=None, wobble=None):
-    pts = [(cx, y, cz)]
-    for k in range(segments):
-        a = 2 * math.pi * k / segments
-        rr = r * (wobble(k) if wobble else 1)
-        pts.append((cx + rr * math.cos(a), y, cz + rr * math.sin(a)))
-    tris = [(0, 1 + (k + 1) % segments, 1 + k) for k in range(segments)]
-    mesh(pts, tris, [(0, 1, 0)] * len(pts), [temperature] * len(pts) if temperature else None)
+scene = SceneText(normal_digits=4, temperature_digits=4)
+emit, mesh, box, lathe, tube, disc = (scene.emit, scene.mesh, scene.box, scene.lathe, scene.tube,
+                                      scene.disc)
 
 
 # The ladle: a bucket of radius R_LADLE and height H_LADLE, tilted by TILT about z so that
@@ -397,7 +289,7 @@ def main():
     earlier_mould()
     floor_drops()
     fumes(cup)
-    text = "\n".join(out) + "\n"
+    text = scene.text()
     with open(os.path.join(HERE, "pour.pbrt"), "w") as f:
         f.write(text)
 
