@@ -20,6 +20,7 @@
 #include "core/camera/sampler.h"
 #include "render/radiance.h"
 #include "render/scene.h"
+#include "render/thin_sheets.h"
 
 namespace kiln {
 
@@ -93,16 +94,14 @@ class PathIntegrator {
                 *visibleSurface = scene.MakeVisibleSurface(isect, bsdf, lambda);
             if (settings.regularize && anyNonSpecularBounces) bsdf.Regularize();
 
-            // Straight through a thin sheet, which shadow rays cross too
+            // Straight through a thin sheet, which shadow rays cross too (thin_sheets.h)
             std::optional<BSDFSampleOf<Throughput>> sheetSample;
             if (IsStraightThrough(bsdf.Flags())) {
-                Float u = sampler.Get1D();
-                sheetSample = bsdf.Sample_f<Throughput>(isect.wo, u, sampler.Get2D());
-                if (!sheetSample || sheetSample->pdf == 0 || !sheetSample->f) break;
+                sheetSample = SampleSheet<Throughput>(bsdf, isect.wo, sampler);
+                if (!sheetSample) break;
                 if (sheetSample->IsStraightThrough()) {
                     if (++sheetCrossings > kMaxSheetCrossings) break;
-                    beta = beta * (sheetSample->f *
-                                   (AbsDot(sheetSample->wi, isect.shading.n) / sheetSample->pdf));
+                    beta = beta * CrossingWeight(*sheetSample, isect.shading.n);
                     ray = isect.SpawnRay(sheetSample->wi);
                     continue;
                 }
@@ -187,7 +186,7 @@ class PathIntegrator {
             if (scene.aggregate->IntersectP(intr.SpawnRayTo(ls->pLight), 1 - ShadowEpsilon))
                 return {};
         } else {
-            std::optional<Throughput> sheets = SheetTransmittance(intr, ls->pLight, lambda);
+            std::optional<Throughput> sheets = SheetsTransmittance(intr, ls->pLight, lambda);
             if (!sheets) return {};
             f = f * *sheets;
         }
@@ -203,33 +202,25 @@ class PathIntegrator {
     }
 
     // What reaches intr from pLight through the thin sheets between them (the product of their
-    // straight-through transmittances), or nothing when another surface is in the way.
-    std::optional<Throughput> SheetTransmittance(const Interaction& intr, const Interaction& pLight,
-                                                 const SampledWavelengths& lambda) const {
+    // transmittances), or nothing when another surface is in the way.
+    std::optional<Throughput> SheetsTransmittance(const Interaction& intr,
+                                                  const Interaction& pLight,
+                                                  const SampledWavelengths& lambda) const {
         Throughput T = Radiance::One();
         Ray ray = intr.SpawnRayTo(pLight);
         for (int crossings = 0;; ++crossings) {
             std::optional<ShapeIntersection> si =
                 scene.aggregate->Intersect(ray, 1 - ShadowEpsilon);
             if (!si) return T;
-            const Material* material = si->intr.material;
-            if (!material || !material->MayPassLightStraightThrough() ||
-                crossings == kMaxSheetCrossings)
-                return std::nullopt;
-            SampledWavelengths sheetLambda = lambda;
-            BSDF sheet = scene.GetBSDF(si->intr, sheetLambda);
-            if (!sheet || !IsStraightThrough(sheet.Flags())) return std::nullopt;
-            std::optional<BSDFSampleOf<Throughput>> bs = sheet.Sample_f<Throughput>(
-                si->intr.wo, 0.5f, Point2f(0.5f, 0.5f), TransportMode::Radiance,
-                BxDFReflTransFlags::Transmission);
-            if (!bs || !bs->IsStraightThrough() || bs->pdf == 0) return std::nullopt;
-            T = T * (bs->f * (AbsDot(bs->wi, si->intr.shading.n) / bs->pdf));
+            if (crossings == kMaxSheetCrossings) return std::nullopt;
+            std::optional<Throughput> sheet =
+                SheetTransmittance<Throughput>(scene, si->intr, lambda);
+            if (!sheet) return std::nullopt;
+            T = T * *sheet;
             ray = si->intr.SpawnRayTo(pLight);
         }
     }
 
-    // A path through thousands of sheets is treated as blocked
-    static constexpr int kMaxSheetCrossings = 1024;
     const Scene& scene;
     PathIntegratorSettings settings;
 };

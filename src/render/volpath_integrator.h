@@ -24,6 +24,7 @@
 #include "materials/bxdfs/hg_phase_function.h"
 #include "render/radiance.h"
 #include "render/scene.h"
+#include "render/thin_sheets.h"
 
 namespace kiln {
 
@@ -165,16 +166,14 @@ class VolPathIntegrator {
             if (depth == 0 && sheetCrossings == 0 && visibleSurface)
                 *visibleSurface = scene.MakeVisibleSurface(isect, bsdf, lambda);
 
-            // Straight through a thin sheet, which shadow rays cross too
+            // Straight through a thin sheet, which shadow rays cross too (thin_sheets.h)
             std::optional<BSDFSampleOf<Throughput>> sheetSample;
             if (IsStraightThrough(bsdf.Flags())) {
-                Float u = sampler.Get1D();
-                sheetSample = bsdf.Sample_f<Throughput>(isect.wo, u, sampler.Get2D());
-                if (!sheetSample || sheetSample->pdf == 0 || !sheetSample->f) break;
+                sheetSample = SampleSheet<Throughput>(bsdf, isect.wo, sampler);
+                if (!sheetSample) break;
                 if (sheetSample->IsStraightThrough()) {
-                    if (++sheetCrossings > kMaxInterfaceCrossings) break;
-                    beta = beta * (sheetSample->f *
-                                   (AbsDot(sheetSample->wi, isect.shading.n) / sheetSample->pdf));
+                    if (++sheetCrossings > kMaxSheetCrossings) break;
+                    beta = beta * CrossingWeight(*sheetSample, isect.shading.n);
                     medium = isect.MediumAfter(sheetSample->wi, medium);
                     ray = isect.SpawnRay(sheetSample->wi);
                     continue;
@@ -291,7 +290,8 @@ class VolPathIntegrator {
             std::optional<ShapeIntersection> si =
                 scene.aggregate->Intersect(lightRay, 1 - ShadowEpsilon);
             if (si && si->intr.material && !si->intr.material->IsInterface()) {
-                std::optional<Throughput> T = SheetTransmittance(*si, lambda);
+                std::optional<Throughput> T =
+                    SheetTransmittance<Throughput>(scene, si->intr, lambda);
                 if (!T) return {};
                 T_sheets = T_sheets * *T;
             }
@@ -337,21 +337,6 @@ class VolPathIntegrator {
         if (IsDeltaLight(light.Type()) || settings.strategy == LightStrategy::LightOnly)
             return contribution / WavelengthMean(r_l, lambda);
         return contribution / WavelengthMean(r_l + r_u, lambda);
-    }
-
-    // The straight-through transmittance of a thin sheet hit by a shadow ray (towards si.intr.wo),
-    // or nothing when the surface blocks it.
-    std::optional<Throughput> SheetTransmittance(ShapeIntersection& si,
-                                                 const SampledWavelengths& lambda) const {
-        if (!si.intr.material->MayPassLightStraightThrough()) return std::nullopt;
-        SampledWavelengths sheetLambda = lambda;
-        BSDF sheet = scene.GetBSDF(si.intr, sheetLambda);
-        if (!sheet || !IsStraightThrough(sheet.Flags())) return std::nullopt;
-        std::optional<BSDFSampleOf<Throughput>> bs =
-            sheet.Sample_f<Throughput>(si.intr.wo, 0.5f, Point2f(0.5f, 0.5f),
-                                       TransportMode::Radiance, BxDFReflTransFlags::Transmission);
-        if (!bs || !bs->IsStraightThrough() || bs->pdf == 0) return std::nullopt;
-        return bs->f * (AbsDot(bs->wi, si.intr.shading.n) / bs->pdf);
     }
 
     static constexpr int kMaxInterfaceCrossings = 1024;

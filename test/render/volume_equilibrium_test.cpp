@@ -102,7 +102,7 @@ const Case kCases[] = {
     {"hot air, thin glass bulb", "\"thindielectric\" \"float eta\" 1.5", "",
      "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.05 0.1 0.02] \"rgb sigma_s\" [0.2 0.1 "
      "0.3]",
-     1024},
+     512},
     {"hot air only", "", "",
      "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.2 0.2 0.2] \"rgb sigma_s\" [0.3 0.3 "
      "0.3]",
