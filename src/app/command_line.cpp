@@ -70,7 +70,7 @@ std::string UsageText() {
            "                        file (mesh_00001.ply, ... in the working folder) (pbrt-v4)\n"
            "  --display-server HOST:PORT\n"
            "                        show the image in tev (or any viewer speaking its protocol)\n"
-           "                        after every wave of samples, at least once a second (pbrt-v4)\n"
+           "                        after every wave of samples, about once a second (pbrt-v4)\n"
            "  --stats               print statistics after rendering: time per phase, camera\n"
            "                        paths, memory (pbrt-v4)\n"
            "  --log-level L         verbose (as --verbose), warning (default), error or fatal\n"

@@ -32,7 +32,8 @@ namespace kiln {
 
 namespace {
 
-// How often --display-server sees the image at least (the longest wave), seconds
+// The wave length --display-server aims for, seconds (a wave still has at least one sample
+// per pixel)
 constexpr double kDisplayUpdateSeconds = 1;
 
 // SIGINT (Ctrl-C) and SIGTERM (what schedulers send before they kill a job): the first stops

@@ -44,8 +44,8 @@ struct RenderSettings {
     std::function<void(int completed)> afterWave;
     // The largest wave, samples per pixel (64, as pbrt-v4; 1 for an error per sample count)
     int maxWaveSize = 64;
-    // When > 0, waves are kept short enough (measured) that one takes at most about this long:
-    // kiln --display-server shows the image at least this often
+    // When > 0, waves are kept short enough (measured on the previous wave) that one takes about
+    // this long, but never below one sample per pixel: kiln --display-server's update interval
     double waveSeconds = 0;
 };
 
