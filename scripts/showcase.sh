@@ -14,8 +14,9 @@ out="$root/docs/images"
 mkdir -p "$out"
 for scene in "${scenes[@]}"; do
     log="$(mktemp)"
-    "$kiln" "$root/scenes/showcase/$scene.pbrt" --spp "$spp" -o "$out/showcase-$scene.png" \
-        2>"$log"
+    file="$root/scenes/showcase/$scene.pbrt"
+    [ -f "$file" ] || file="$file.gz"  # the bulbs are gzip-compressed
+    "$kiln" "$file" --spp "$spp" -o "$out/showcase-$scene.png" 2>"$log"
     # kiln's last line: "kiln: 1280x720, 256 spp, 123.45s wall, 1.23 Mpaths/s"
     summary="$(tail -n 1 "$log" | sed 's/^kiln: //')"
     rm -f "$log"

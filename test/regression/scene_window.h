@@ -57,12 +57,21 @@ inline bool IsBlack(const Image& image) {
     return true;
 }
 
-// Every .pbrt file under scenes/, sorted.
+// A scene file: NAME.pbrt, or NAME.pbrt.gz (gzip-compressed, as pbrt-v4 reads them).
+inline bool IsSceneFile(const std::string& path) {
+    auto endsWith = [&](const std::string& tail) {
+        return path.size() >= tail.size() &&
+               path.compare(path.size() - tail.size(), tail.size(), tail) == 0;
+    };
+    return endsWith(".pbrt") || endsWith(".pbrt.gz");
+}
+
+// Every .pbrt (or .pbrt.gz) file under scenes/, sorted.
 inline std::vector<std::string> SceneFiles() {
     std::vector<std::string> files;
     for (const auto& e :
          std::filesystem::recursive_directory_iterator(std::string(KILN_SOURCE_DIR) + "/scenes"))
-        if (e.path().extension() == ".pbrt") files.push_back(e.path().string());
+        if (IsSceneFile(e.path().string())) files.push_back(e.path().string());
     std::sort(files.begin(), files.end());
     return files;
 }
