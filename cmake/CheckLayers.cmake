@@ -31,6 +31,7 @@ set(LAYERS
     media/vdb_plugin    51   # OpenVDB, loaded on first use
     render              60
     app                 70
+    python              80   # the Python module (pybind11)
 )
 set(THERMAL_HOST_INDEPENDENT
     thermal/emission_model.h thermal/emission_model.cpp

@@ -9,11 +9,13 @@ build="${KILN_BUILD_DIR:-$root/build}"
 
 # What rendering needs (scripts/demo.sh: KILN_SETUP=render), and what the tests add
 packages=(build-essential cmake pkg-config libembree-dev libopenimageio-dev libopenexr-dev
-          libpng-dev libopencolorio-dev libtbb-dev zlib1g-dev libopenvdb-dev libboost-dev)
+          libpng-dev libopencolorio-dev libtbb-dev zlib1g-dev libopenvdb-dev libboost-dev
+          pybind11-dev python3-dev python3-numpy)  # the Python module
 if [ "${KILN_SETUP:-all}" != render ]; then
     packages+=(openimageio-tools libgtest-dev libbenchmark-dev libfmt-dev clang-format
                dpkg-dev  # the Debian package test (dpkg-shlibdeps)
-               munge slurmctld slurmd slurm-client)  # the Slurm cluster test
+               munge slurmctld slurmd slurm-client  # the Slurm cluster test
+               python3-pytest python3-matplotlib blender)  # the Python and Blender tests
 fi
 source "$root/scripts/packages.sh"
 kiln_install_missing "${packages[@]}"

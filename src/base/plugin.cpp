@@ -13,12 +13,39 @@ std::string ExecutableDirectory() {
     return ec ? std::string() : exe.parent_path().string();
 }
 
+namespace {
+
+// The shared object holding this code when it is one (the Python module), else empty
+std::filesystem::path SharedObjectFile() {
+    Dl_info info = {};
+    if (dladdr(reinterpret_cast<const void*>(&SharedObjectFile), &info) == 0 || !info.dli_fname)
+        return {};
+    std::filesystem::path file = info.dli_fname;
+    if (file.extension() != ".so") return {};  // the executable
+    std::error_code ec;
+    std::filesystem::path absolute = std::filesystem::weakly_canonical(file, ec);
+    return ec ? file : absolute;
+}
+
+}  // namespace
+
+std::string InstallPrefix() {
+    if (std::filesystem::path module = SharedObjectFile(); !module.empty()) {
+        // <prefix>/lib/pythonX.Y/dist-packages/kiln/_kiln....so
+        std::filesystem::path prefix = module;
+        for (int i = 0; i < 5; ++i) prefix = prefix.parent_path();
+        return prefix.string();
+    }
+    std::string exe = ExecutableDirectory();
+    return exe.empty() ? "" : std::filesystem::path(exe).parent_path().string();
+}
+
 std::vector<std::string> PluginDirectories() {
     std::vector<std::string> dirs;
-    if (std::string exe = ExecutableDirectory(); !exe.empty()) {
-        dirs.push_back(exe);
-        dirs.push_back((std::filesystem::path(exe).parent_path() / "lib" / "kiln").string());
-    }
+    if (SharedObjectFile().empty())
+        if (std::string exe = ExecutableDirectory(); !exe.empty()) dirs.push_back(exe);
+    if (std::string prefix = InstallPrefix(); !prefix.empty())
+        dirs.push_back((std::filesystem::path(prefix) / "lib" / "kiln").string());
     dirs.push_back(KILN_PLUGIN_DIR);
     return dirs;
 }

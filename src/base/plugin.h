@@ -11,9 +11,14 @@ namespace kiln {
 // The folder of the running executable ("" if /proc/self/exe cannot be read).
 std::string ExecutableDirectory();
 
-// Where plugins are looked for, in order: beside the running executable (a build tree), in the
-// installed tree it belongs to (<executable's folder>/../lib/kiln: `cmake --install`, the
-// Debian package), then the build directory kiln was built in (KILN_PLUGIN_DIR).
+// The installation prefix kiln's code runs from: <prefix>/bin/kiln, or for the Python module
+// <prefix>/lib/pythonX.Y/dist-packages/kiln/_kiln*.so ("" if unknown). In a build tree it names
+// a folder that holds no kiln installation.
+std::string InstallPrefix();
+
+// Where plugins are looked for, in order: beside the running kiln executable (a build tree),
+// in the installed tree (<InstallPrefix()>/lib/kiln: `cmake --install`, the Debian package),
+// then the build directory kiln was built in (KILN_PLUGIN_DIR).
 std::vector<std::string> PluginDirectories();
 
 // The first of PluginDirectories() that holds `library`; "" if none does.

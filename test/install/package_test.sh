@@ -5,6 +5,8 @@
 # directory. Each must find its plugins and display config in its own tree (kiln --version
 # says where), render a PNG (display config) and a JPEG (OpenImageIO plugin), and the package
 # must depend only on Debian 12 packages that are installed here (what apt installs with it).
+# With KILN_TEST_PYTHON set (the Python the module was built for), the Python module in each
+# tree renders too.
 #   package_test.sh BUILD_DIR
 set -euo pipefail
 build="$(cd "$1" && pwd)"
@@ -31,6 +33,24 @@ check_tree() {
     (cd / && "$kiln" "$tmp/scene.pbrt" --quiet -o "$out/a.png" -o "$out/a.jpg" -o "$out/a.exr") ||
         fail "$kiln could not render"
     for f in a.png a.jpg a.exr; do [ -s "$out/$f" ] || fail "$kiln wrote no $f"; done
+    # The Python module, when built: imported from the tree (PYTHONPATH; Debian's Python
+    # searches <prefix>/lib/python3.X/dist-packages itself for /usr and /usr/local), it finds
+    # its plugins and display config in the tree too
+    local python="${KILN_TEST_PYTHON:-}" pydir
+    pydir="$(ls -d "$tree"/lib/python3*/dist-packages 2>/dev/null | head -1)"
+    if [ -n "$python" ]; then
+        [ -f "$pydir/kiln/__init__.py" ] || fail "no Python module under $tree/lib"
+        (cd / && PYTHONPATH="$pydir" "$python" -c "
+import kiln, sys
+assert kiln.__file__.startswith('$tree/'), kiln.__file__
+assert kiln._kiln._install_prefix() == '$tree', kiln._kiln._install_prefix()
+scene = kiln.load('$tmp/scene.pbrt')
+img = scene.render(spp=2)
+assert img.shape == (16, 24, 3) and img.max() > 0
+scene.write('$out/py.png'); scene.write('$out/py.jpg')
+") || fail "the Python module in $tree could not render"
+        for f in py.png py.jpg; do [ -s "$out/$f" ] || fail "the Python module wrote no $f"; done
+    fi
 }
 
 # 1. cmake --install into a prefix

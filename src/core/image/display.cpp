@@ -42,10 +42,10 @@ void Apply(const OCIO::ConstConfigRcPtr& config, const char* from, const char* t
 
 std::string OCIOConfigPath() {
     if (const char* env = std::getenv("KILN_OCIO_CONFIG"); env && *env) return env;
-    // An installed kiln: <prefix>/bin/kiln and <prefix>/share/kiln/ocio
-    if (std::string exe = ExecutableDirectory(); !exe.empty()) {
+    // An installed kiln (its executable or Python module): <prefix>/share/kiln/ocio
+    if (std::string prefix = InstallPrefix(); !prefix.empty()) {
         std::filesystem::path installed =
-            std::filesystem::path(exe).parent_path() / "share" / "kiln" / "ocio" / "config.ocio";
+            std::filesystem::path(prefix) / "share" / "kiln" / "ocio" / "config.ocio";
         std::error_code ec;
         if (std::filesystem::exists(installed, ec)) return installed.string();
     }
