@@ -34,7 +34,7 @@ struct PythonImage {
     Image image;
     ImageMetadata metadata;
     RenderStats stats;
-    int seed = 0;
+    bool rendered = false;  // by Scene.render (else read from a file)
 
     // Channels `names` (all when empty) as a float32 array, height x width x channels.
     py::array_t<float> Array(const std::vector<std::string>& names) const {
@@ -62,11 +62,14 @@ struct PythonImage {
     }
     py::dict Metadata() const {
         py::dict d;
-        d["samples_per_pixel"] = stats.cancelled ? stats.completedSamples : stats.samplesPerPixel;
-        d["seed"] = seed;
-        d["render_seconds"] = stats.seconds;
-        d["camera_paths"] = stats.cameraPaths;
-        d["interrupted"] = stats.cancelled;
+        if (metadata.samplesPerPixel) d["samples_per_pixel"] = *metadata.samplesPerPixel;
+        if (metadata.renderTimeSeconds) d["render_seconds"] = *metadata.renderTimeSeconds;
+        if (auto seed = metadata.strings.find("kiln:seed"); seed != metadata.strings.end())
+            d["seed"] = std::stoi(seed->second);
+        if (rendered) {
+            d["camera_paths"] = stats.cameraPaths;
+            d["interrupted"] = stats.cancelled;
+        }
         if (metadata.fullResolution)
             d["full_resolution"] =
                 py::make_tuple(metadata.fullResolution->x, metadata.fullResolution->y);
@@ -272,11 +275,11 @@ class PythonScene {
         auto image = std::make_unique<PythonImage>();
         image->image = scene->job->film->GetImage(&image->metadata);
         image->stats = stats;
-        image->seed = scene->job->sampler->Seed();
+        image->rendered = true;
         image->metadata.renderTimeSeconds = float(stats.seconds);
         image->metadata.samplesPerPixel =
             stats.cancelled ? stats.completedSamples : stats.samplesPerPixel;
-        image->metadata.strings["kiln:seed"] = std::to_string(image->seed);
+        image->metadata.strings["kiln:seed"] = std::to_string(scene->job->sampler->Seed());
         image->metadata.strings["kiln:options"] = RenderOptionsKey(created);
         image->metadata.strings["kiln:exposureEV"] =
             std::to_string(scene->job->film->GetOptions().exposureEV);
@@ -325,6 +328,16 @@ void RegisterScene(py::module_& m) {
         .def("image", &PythonScene::LastImage, py::return_value_policy::copy)
         .def("write", &PythonScene::Write, py::arg("path"), py::kw_only(), py::arg("view") = "");
 
+    m.def(
+        "read_image",
+        [](const std::string& path) {
+            PythonImage image;
+            image.image = Image::Read(path, &image.metadata);
+            return image;
+        },
+        py::arg("path"),
+        "Reads an image (EXR with every layer and kiln's metadata, or any format OpenImageIO "
+        "reads) as a kiln.Image.");
     m.def("_install_prefix", &InstallPrefix);  // where the module finds plugins (tests)
     py::register_exception<SceneError>(m, "SceneError", PyExc_ValueError);
     m.def(

@@ -11,7 +11,7 @@
 Scene.render(spp, seed, threads, crop, frame, time, fps, emission, stokes) renders and returns the
 R, G, B channels; Scene.image() is the last render with every channel the film records (AOVs,
 Stokes layers S0.R ... S3.B) and its metadata; Scene.write(path, view=...) writes it as the kiln
-command writes its outputs. Errors in scene text raise kiln.SceneError (a ValueError) whose
+command writes its outputs; kiln.read_image(path) reads one back. Errors in scene text raise kiln.SceneError (a ValueError) whose
 message starts with file:line:column.
 
 Units: wavelengths in nm, temperatures in kelvin, angles in radians from the surface normal,
@@ -34,9 +34,9 @@ except ModuleNotFoundError:
     sys.path.append("/usr/lib/python3/dist-packages")
     import numpy as np
 
-from ._kiln import Image, Scene, SceneError
+from ._kiln import Image, Scene, SceneError, read_image
 
-__all__ = ["load", "load_string", "Scene", "Image", "SceneError", "emissivity",
+__all__ = ["load", "load_string", "read_image", "Scene", "Image", "SceneError", "emissivity",
            "directional_albedo", "planck", "named_spectrum", "glow_color", "GlowColor",
            "material_parameters"]
 
