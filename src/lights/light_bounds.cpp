@@ -77,7 +77,9 @@ Float LightBounds::Importance(Point3f p, Normal3f n) const {
     Float cosThetaX = CosSubClamped(sinThetaW, cosThetaW, sinThetaO, cosTheta_o);
     Float sinThetaX = SinSubClamped(sinThetaW, cosThetaW, sinThetaO, cosTheta_o);
     Float cosThetaP = CosSubClamped(sinThetaX, cosThetaX, sinThetaB, cosThetaB);
-    if (cosThetaP <= cosTheta_e) return 0;
+    // Outside the emission cone (strictly: a hard-edged spot has cos theta_e = 1, and a point
+    // inside its cone cos theta' = 1; pbrt-v4's <= gives those no importance)
+    if (cosThetaP < cosTheta_e) return 0;
     Float importance = phi * cosThetaP / d2;
     // The cosine at a receiving surface
     if (n != Normal3f(0, 0, 0)) {

@@ -119,3 +119,21 @@ TEST(BVHLightSampler, SamplesFollowThePMFAtEveryReceiver) {
         EXPECT_TRUE(chi.passed) << chi.message;
     }
 }
+
+// A spot whose falloff is narrower than float can tell from a hard edge (cos of the falloff
+// angle rounds to 1) is still picked inside its cone (LightBounds::Importance), and never
+// outside it.
+TEST(BVHLightSampler, HardEdgedSpotsArePickedInsideTheirCone) {
+    PointLight point(Translate(Vector3f(3, 0, 0)), Spectrum(ConstantSpectrum(1)), 1);
+    for (Float falloffStart : {30.f, 29.99f, 29.f}) {
+        SCOPED_TRACE(falloffStart);
+        SpotLight spot(Transform(), Spectrum(ConstantSpectrum(1)), 1, 30, falloffStart);
+        std::vector<Light> lights = {Light(&point), Light(&spot)};
+        for (const Light& l : lights) l.Preprocess(Bounds3f(Point3f(-5, -5, 0), Point3f(5, 5, 5)));
+        BVHLightSampler sampler(lights);
+        LightSampleContext inside(Point3f(0.5f, 0, 5), Normal3f(0, 0, -1), Normal3f(0, 0, -1));
+        EXPECT_GT(sampler.PMF(inside, 1), 0.01f);
+        LightSampleContext outside(Point3f(5, 0, 1), Normal3f(-1, 0, 0), Normal3f(-1, 0, 0));
+        EXPECT_EQ(sampler.PMF(outside, 1), 0);
+    }
+}
