@@ -158,8 +158,10 @@ class KilnPreferences(bpy.types.AddonPreferences):
 
 def find_executable(scene):
     """The kiln program to run: the scene's setting if not empty, else the add-on preference
-    if not empty, else the environment variable KILN_EXECUTABLE, else ``kiln`` on PATH.
-    Returns None if none is found. Paths are made absolute (Blender's // prefix resolved)."""
+    if not empty, else the environment variable KILN_EXECUTABLE, else, when the add-on is
+    loaded from a kiln source tree (also through a symbolic link to blender/kiln_blender), that
+    tree's build/kiln if it was built, else ``kiln`` on PATH. Returns None if none is found.
+    Paths are made absolute (Blender's // prefix resolved)."""
     import shutil
     candidates = [scene.kiln.executable]
     try:
@@ -172,6 +174,10 @@ def find_executable(scene):
     for candidate in candidates:
         if candidate:
             return os.path.abspath(bpy.path.abspath(candidate))
+    tree = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))
+    built = os.path.join(tree, "build", "kiln")
+    if os.path.isfile(os.path.join(tree, "src", "app", "main.cpp")) and os.access(built, os.X_OK):
+        return built
     return shutil.which("kiln")
 
 

@@ -70,14 +70,11 @@ std::string SetTemperature(SceneDescription& d, const std::string& name, double 
     if (texture) {
         for (auto& [n, entity] : d.floatTextures)
             if (n == name) {
+                ParsedParameter value = TemperatureParameter(kelvin, entity.loc);
+                value.name = "value";
                 entity.texName = "constant";
-                entity.parameters = ParameterDictionary(
-                    {[&] {
-                        ParsedParameter p = TemperatureParameter(kelvin, entity.loc);
-                        p.name = "value";
-                        return p;
-                    }()},
-                    entity.parameters.ColorSpace());
+                entity.parameters =
+                    ParameterDictionary({std::move(value)}, entity.parameters.ColorSpace());
             }
         return "texture";
     }

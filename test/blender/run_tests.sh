@@ -63,4 +63,19 @@ assert (w, h) == (96, 72), (w, h)
 assert rgb.max() > 0.1, 'the image is black'
 " >"$tmp/check.log" 2>&1 || { cat "$tmp/check.log"; fail "the headless render's image"; }
 grep "run_tests:" "$tmp/check.log"
+
+# 4. The add-on linked from the source tree, with no kiln named anywhere (no KILN_EXECUTABLE,
+#    none on PATH): it runs the tree's own build/kiln (when BUILD_DIR is SOURCE_DIR/build)
+if [ "$build" = "$source/build" ]; then
+    echo "== the add-on linked from the source tree runs the tree's build/kiln"
+    mkdir -p "$tmp/linked/addons"
+    ln -s "$source/blender/kiln_blender" "$tmp/linked/addons/kiln_blender"
+    (unset KILN_EXECUTABLE; BLENDER_USER_SCRIPTS="$tmp/linked" PATH="$(dirname "$(command -v "$blender")"):/usr/bin:/bin" \
+        "$blender" -b "$tmp/work/scene.blend" --addons kiln_blender -E KILN \
+        -o "$tmp/linked-out/frame_####" -f 1) >"$tmp/linked.log" 2>&1 ||
+        { tail -n 30 "$tmp/linked.log"; fail "the linked add-on's render"; }
+    [ -s "$tmp/linked-out/frame_0001.png" ] && ! grep -q "no kiln executable\|kiln exited" "$tmp/linked.log" ||
+        { tail -n 30 "$tmp/linked.log"; fail "the linked add-on did not render with build/kiln"; }
+    echo "run_tests: rendered frame_0001.png with $source/build/kiln"
+fi
 echo "run_tests: all passed in $(python3 -c "print('%.1f' % ($(date +%s.%N) - $started))") s"
