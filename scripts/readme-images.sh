@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Renders the small images of README.md and the user guide (docs/guide/) into docs/images/.
-# Usage: scripts/readme-images.sh [spp] [all|thermal|polarization|media]   (default 64 all)
+# Usage: scripts/readme-images.sh [spp] [all|thermal|paper|polarization|media]   (default 64 all)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 kiln="${KILN_BUILD_DIR:-$root/build}/kiln"
@@ -27,6 +27,22 @@ done
 render "$root/scenes/coins/coins.pbrt" "$tmp/coins.png"
 oiiotool "$tmp/coins.png" --resize 66.67% -o "$out/coins.png"
 fi
+# Wilkie & Weidlich 2011 Figs. 6 and 7 (docs/paper.md): Kirchhoff's law, each image at its own
+# automatic exposure as the paper's tone reproduction; Fig. 6 with ambient light (selenium,
+# platinum / silver, black quartz), Fig. 7 without (black quartz, silver / gold, copper)
+if [ "$mode" = all ] || [ "$mode" = paper ]; then
+for m in selenium platinum silver black-quartz; do
+    render "$root/scenes/wilkie2011/$m-kirchhoff-ambient.pbrt" "$tmp/fig6-$m.png" --exposure auto
+done
+oiiotool "$tmp/fig6-selenium.png" "$tmp/fig6-platinum.png" "$tmp/fig6-silver.png" \
+    "$tmp/fig6-black-quartz.png" --mosaic 2x2 --resize 50% -o "$out/fig6-materials.png"
+for m in black-quartz silver gold copper; do
+    render "$root/scenes/wilkie2011/$m-kirchhoff.pbrt" "$tmp/fig7-$m.png" --exposure auto
+done
+oiiotool "$tmp/fig7-black-quartz.png" "$tmp/fig7-silver.png" "$tmp/fig7-gold.png" \
+    "$tmp/fig7-copper.png" --mosaic 2x2 --resize 50% -o "$out/fig7-glow-colours.png"
+fi
+[ "$mode" = paper ] && exit 0
 # Polarisation (scenes/polarization/, Wilkie & Weidlich 2011 Figs. 8-10)
 if [ "$mode" = all ] || [ "$mode" = polarization ]; then
 pol="$root/scenes/polarization"
