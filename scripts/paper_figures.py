@@ -10,8 +10,10 @@ a dict of numbers. Pixels of a sphere or coin are found by projecting its centre
 scene's pbrt-v4 LookAt camera (a disc of 0.85 of its projected radius: "sphere"; 0.45:
 "centre"; from 0.75 to 0.95: "limb"), so no pixel of the floor is counted.
 """
+import importlib.util
 import math
 import os
+import re
 import sys
 
 import numpy as np
@@ -20,16 +22,32 @@ import kiln
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 
-# The ring of the paper's test scene (scenes/wilkie2011/generate.py): twelve spheres of radius
-# 0.9 at 4.2 from the centre, 1050 K (11 o'clock) to 1600 K (12 o'clock) in 50 K steps
-TEMPERATURES = [1050 + 50 * i for i in range(12)]
-CLOCK = [11 - i if 11 - i > 0 else 12 for i in range(12)]
-RING_RADIUS, SPHERE_RADIUS = 4.2, 0.9
-RING_CAMERA = dict(eye=(0, 9.5, 11), look=(0, 0, -0.6), fov=38, size=(640, 400))
-COINS_CAMERA = dict(eye=(0, 5.5, -6), look=(0, 0, 0), fov=32, size=(480, 270))
+# The ring of the paper's test scene, as scenes/wilkie2011/generate.py places it: twelve spheres
+# from 1050 K (11 o'clock) to 1600 K (12 o'clock) in 50 K steps
+_spec = importlib.util.spec_from_file_location(
+    "wilkie2011", os.path.join(ROOT, "scenes", "wilkie2011", "generate.py"))
+wilkie2011 = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(wilkie2011)
+CLOCK, SPHERE_RADIUS = wilkie2011.CLOCK, wilkie2011.SPHERE_RADIUS
 # sRGB (linear, D65) to CIE XYZ
 XYZ_FROM_SRGB = np.array([[0.4124, 0.3576, 0.1805], [0.2126, 0.7152, 0.0722],
                           [0.0193, 0.1192, 0.9505]])
+
+
+def camera_of(name):
+    """The LookAt eye and target, fov and resolution of a scene file (up must be +y)."""
+    with open(os.path.join(ROOT, "scenes", name)) as f:
+        text = f.read()
+    look = [float(v) for v in re.search(r"^LookAt\s+([-\d.\s]+?)\s*$", text, re.M).group(1).split()]
+    assert look[6:] == [0, 1, 0], name
+    fov = float(re.search(r'"float fov"\s+\[?\s*([\d.]+)', text).group(1))
+    size = tuple(int(re.search(rf'"integer {a}resolution"\s+\[?\s*(\d+)', text).group(1))
+                 for a in "xy")
+    return dict(eye=look[0:3], look=look[3:6], fov=fov, size=size)
+
+
+RING_CAMERA = camera_of("wilkie2011/silver-kirchhoff.pbrt")
+COINS_CAMERA = camera_of("coins/coins.pbrt")
 
 
 def scene(name):
@@ -37,8 +55,7 @@ def scene(name):
 
 
 def sphere_centre(clock):
-    angle = math.radians(30 * (clock % 12))
-    return np.array([-RING_RADIUS * math.sin(angle), SPHERE_RADIUS, -RING_RADIUS * math.cos(angle)])
+    return np.array(wilkie2011.sphere_position(clock))
 
 
 def project(camera, p):

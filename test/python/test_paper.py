@@ -124,3 +124,15 @@ def test_fig5_silver_bound_holds_for_every_nk_data_set():
         ybar = kiln._kiln._cie_xyz(lam)[:, 1]
         ratio = ybar.sum() / (e * ybar).sum()
         assert ratio > 10, (f, ratio)  # test_fig5's bound holds whichever data set is used
+
+
+def test_the_masks_follow_the_scenes_cameras():
+    """Sphere pixels are found with one camera for every scene of the ring: they must share it."""
+    import glob
+    root = os.path.join(paper.ROOT, "scenes")
+    ring = glob.glob(os.path.join(root, "wilkie2011", "*.pbrt")) + \
+        glob.glob(os.path.join(root, "polarization", "fig9-*.pbrt")) + \
+        glob.glob(os.path.join(root, "polarization", "fig10-*.pbrt"))
+    assert len(ring) == 30
+    for path in ring:
+        assert paper.camera_of(os.path.relpath(path, root)) == paper.RING_CAMERA, path
