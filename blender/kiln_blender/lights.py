@@ -25,6 +25,7 @@ import os
 import numpy as np
 
 from . import envmap, image_files, pbrt_text
+from .materials import follow_link
 
 # Radiance of a Cycles area light per watt, times its area: Cycles gives an area light of
 # power P and area A the radiance P / (4 A) (so it emits pi P / 4 in all); measured against
@@ -115,16 +116,6 @@ def _vector(x, y, z):
     return Vector((x, y, z))
 
 
-def _follow(socket):
-    while socket is not None and socket.is_linked:
-        node = socket.links[0].from_node
-        if node.bl_idname == "NodeReroute":
-            socket = node.inputs[0]
-            continue
-        return node
-    return None
-
-
 def _environment_file(node, strength, folder, relative, reports):
     """Write the equal-area map of an Environment Texture node; its scene-relative path, or
     None (reported) if the image is missing or not equirectangular."""
@@ -167,7 +158,7 @@ def world_lines(world, folder, relative, reports):
     if tree is not None:
         outputs = [n for n in tree.nodes if n.bl_idname == "ShaderNodeOutputWorld"]
         active = [n for n in outputs if n.is_active_output] or outputs
-        background = _follow(active[0].inputs.get("Surface")) if active else None
+        background = follow_link(active[0].inputs.get("Surface")) if active else None
         if background is None:
             colour = [0.0, 0.0, 0.0]
         elif background.bl_idname != "ShaderNodeBackground":
@@ -178,7 +169,7 @@ def world_lines(world, folder, relative, reports):
                 reports.add("world-nodes", world.name)
             strength = strength_socket.default_value
             colour_socket = background.inputs.get("Color")
-            source = _follow(colour_socket)
+            source = follow_link(colour_socket)
             if source is None:
                 colour = [c * strength for c in list(colour_socket.default_value)[:3]]
             elif source.bl_idname == "ShaderNodeTexEnvironment":

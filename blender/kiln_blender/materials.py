@@ -24,7 +24,7 @@ from . import metals, pbrt_text, temperature
 DEFAULT_MATERIAL = "kiln-default"
 
 
-def _follow(socket):
+def follow_link(socket):
     """The node linked into ``socket`` (passing through Reroute nodes), or None."""
     while socket is not None and socket.is_linked:
         node = socket.links[0].from_node
@@ -64,7 +64,7 @@ def output_surface_node(material):
         output = (active or outputs or [None])[0]
     if output is None:
         return None
-    return _follow(output.inputs.get("Surface"))
+    return follow_link(output.inputs.get("Surface"))
 
 
 class MaterialSpec:
@@ -136,7 +136,7 @@ def _colour(node, socket_names, texture_name, images, reports, owner):
     ("base-color-nodes") and use the socket's own colour."""
     socket = _input(node, *socket_names)
     rgb = list(socket.default_value)[:3] if socket is not None else [0.8, 0.8, 0.8]
-    linked = _follow(socket) if socket is not None else None
+    linked = follow_link(socket) if socket is not None else None
     if linked is not None:
         if linked.bl_idname == "ShaderNodeTexImage":
             lines = _image_texture(linked, texture_name, images, reports, owner)
