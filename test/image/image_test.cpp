@@ -198,6 +198,48 @@ TEST(Image, TiffRoundTrip) {
     EXPECT_EQ(ub.GetChannel({2, 4}, 2), u.GetChannel({2, 4}, 2));
 }
 
+// pbrt-v4 reads .tga, .jpg, .bmp, ... with stb_image and takes their 8-bit samples as sRGB
+// whatever encoding a texture asks for (its "encoding" applies to PNG only); so does kiln.
+TEST(Image, EightBitStbFormatsAreSRGBWhateverTheRequestedEncoding) {
+    TempDir dir;
+    Image im = Ramp(PixelFormat::U256, {6, 2}, {"R", "G", "B"}, ColorEncoding::SRGB());
+    for (const char* name : {"a.tga", "a.bmp", "a.TGA"}) {
+        im.Write(dir.File(name));
+        Image back = Image::Read(dir.File(name), nullptr, ColorEncoding::Linear());
+        ASSERT_EQ(back.Format(), PixelFormat::U256) << name;
+        EXPECT_EQ(back.Encoding(), ColorEncoding::SRGB()) << name;
+        EXPECT_EQ(back.GetChannel({4, 1}, 1), im.GetChannel({4, 1}, 1)) << name;
+    }
+    // PNG and TIFF keep the requested encoding: the same bytes then mean other values
+    for (const char* name : {"a.png", "a.tif"}) {
+        im.Write(dir.File(name));
+        Image back = Image::Read(dir.File(name), nullptr, ColorEncoding::Linear());
+        EXPECT_EQ(back.Encoding(), ColorEncoding::Linear()) << name;
+        EXPECT_NEAR(back.GetChannel({4, 1}, 1), LinearToSRGB(im.GetChannel({4, 1}, 1)), 1e-5f)
+            << name;
+    }
+    EXPECT_TRUE(IsPbrtV4SrgbOnlyFormat("dir.png/texture.JPEG"));
+    EXPECT_FALSE(IsPbrtV4SrgbOnlyFormat("dir.tga/texture.png"));
+}
+
+// Colours with alpha are read as stored, as pbrt-v4 reads them, not multiplied by alpha.
+TEST(Image, ColoursWithAlphaAreNotPremultiplied) {
+    TempDir dir;
+    Image im(PixelFormat::U256, {2, 2}, {"R", "G", "B", "A"}, ColorEncoding::SRGB());
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x) {
+            im.SetChannel({x, y}, 0, 0.5f), im.SetChannel({x, y}, 1, 0.25f);
+            im.SetChannel({x, y}, 2, 0.125f), im.SetChannel({x, y}, 3, x == 0 ? 0.2f : 1.f);
+        }
+    for (const char* name : {"rgba.png", "rgba.tga"}) {
+        im.Write(dir.File(name));
+        Image back = Image::Read(dir.File(name));
+        ASSERT_EQ(back.NChannels(), 4) << name;
+        for (int c = 0; c < 4; ++c)
+            EXPECT_NEAR(back.GetChannel({0, 1}, c), im.GetChannel({0, 1}, c), 1e-6f) << name;
+    }
+}
+
 TEST(Image, ReadErrorsNameTheFile) {
     try {
         Image::Read("/nonexistent/kiln.exr");

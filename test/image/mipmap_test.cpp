@@ -47,6 +47,38 @@ TEST(MIPMap, Levels) {
     EXPECT_EQ(m.GetRGBColorSpace(), &RGBColorSpace::sRGB());
 }
 
+// An 8-bit texture's levels stay 8-bit in its encoding (as pbrt-v4 stores them): within half a
+// code value of the levels computed in floats, and a third more memory than the image.
+TEST(MIPMap, EightBitLevelsStayEightBit) {
+    Image im(PixelFormat::U256, {37, 20}, {"R", "G", "B"}, ColorEncoding::SRGB());
+    for (int y = 0; y < 20; ++y)
+        for (int x = 0; x < 37; ++x)
+            for (int c = 0; c < 3; ++c)
+                im.SetChannel({x, y}, c, Float((x * 13 + y * 7 + c * 5) % 17) / 16);
+    MIPMap m8(im, nullptr, WrapMode::Repeat, {});
+    MIPMap m32(im.ConvertToFormat(PixelFormat::Float), nullptr, WrapMode::Repeat, {});
+    ASSERT_EQ(m8.Levels(), m32.Levels());
+    size_t bytes = 0;
+    for (int l = 0; l < m8.Levels(); ++l) {
+        const Image& a = m8.GetLevel(l);
+        EXPECT_EQ(a.Format(), PixelFormat::U256) << l;
+        EXPECT_EQ(a.Encoding(), ColorEncoding::SRGB()) << l;
+        Point2i r = a.Resolution();
+        bytes += size_t(r.x) * r.y * 3;
+        for (int y = 0; y < r.y; ++y)
+            for (int x = 0; x < r.x; ++x)
+                for (int c = 0; c < 3; ++c) {
+                    Float v = m32.GetLevel(l).GetChannel({x, y}, c);
+                    EXPECT_NEAR(LinearToSRGB(a.GetChannel({x, y}, c)), LinearToSRGB(v),
+                                0.5f / 255 + 1e-5f)
+                        << l;
+                }
+    }
+    EXPECT_EQ(m8.MemoryBytes(), bytes);
+    EXPECT_LT(double(bytes), 1.4 * 37 * 20 * 3);
+    EXPECT_GT(m32.MemoryBytes(), 3 * bytes);
+}
+
 TEST(MIPMap, ConstantFiltersToConstant) {
     RGB v(0.25f, 0.5f, 2.f);
     for (FilterFunction f : {FilterFunction::Point, FilterFunction::Bilinear,

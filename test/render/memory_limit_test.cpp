@@ -71,7 +71,7 @@ TEST(MemoryLimit, MeshesAndCurvesAreChargedBeforeTheyAreMade) {
 }
 
 TEST(MemoryLimit, ImagesAreChargedFromTheirHeader) {
-    // A PPM header (read by OpenImageIO) claiming 30000 x 30000 RGB pixels (10.8 GB as floats)
+    // A PPM header (read by OpenImageIO) claiming 30000 x 30000 RGB pixels (2.7 GB at 8 bits)
     // over 12 bytes of data
     std::string ppm = ::testing::TempDir() + "/kiln_claims_much.ppm";
     std::ofstream(ppm, std::ios::binary) << "P6\n30000 30000\n255\n" << std::string(12, '\0');

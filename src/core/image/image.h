@@ -78,13 +78,15 @@ class Image {
           ColorEncoding encoding = ColorEncoding::Linear());
 
     // Reads EXR and any format OpenImageIO reads. 8-bit data are kept as U256 and decoded with
-    // `encoding` (default: sRGB for 8-bit files unless the file says it is linear); 16-bit
+    // `encoding` (default: sRGB for 8-bit files unless the file says it is linear), except the
+    // formats IsPbrtV4SrgbOnlyFormat names, whose 8-bit data are always sRGB; 16-bit
     // integer data are decoded with the same encoding into Float; half stays Half, float and
     // everything else become Float (linear). For files whose data window is smaller than the
     // display window (crop renders) the data window is read and *metadata gets pixelBounds and
     // fullResolution. Throws std::runtime_error("file: reason").
-    // With a budget, the decoded pixels (as floats) are charged to it before they are read
-    // (MemoryLimitError if they do not fit); without, they must fit in half the machine's memory.
+    // With a budget, the decoded pixels (in the format they are kept in) are charged to it
+    // before they are read (MemoryLimitError if they do not fit); without, they must fit in
+    // half the machine's memory.
     static Image Read(const std::string& filename, ImageMetadata* metadata = nullptr,
                       std::optional<ColorEncoding> encoding = std::nullopt,
                       MemoryBudget* budget = nullptr);
@@ -106,6 +108,10 @@ class Image {
     const std::vector<std::string>& ChannelNames() const { return channelNames; }
     PixelFormat Format() const { return format; }
     const ColorEncoding& Encoding() const { return encoding; }
+    // Bytes per channel sample: 1 (U256), 2 (Half) or 4 (Float).
+    int BytesPerSample() const {
+        return format == PixelFormat::U256 ? 1 : format == PixelFormat::Half ? 2 : 4;
+    }
     // Index of the named channel, or -1 if absent.
     int ChannelIndex(std::string_view name) const;
     // New image with the named channels, in the given order (same format); throws
@@ -159,6 +165,10 @@ class Image {
 
 // Lower-case extension of path without the dot ("exr"), or "".
 std::string FileExtension(std::string_view path);
+// Whether the file's extension is one of the formats pbrt-v4 reads with stb_image (jpg, jpeg,
+// tga, bmp, gif, psd, pic, pnm, ppm, pgm): pbrt-v4 takes their 8-bit samples as sRGB whatever
+// an "encoding" parameter asks (it applies to PNG only), and so does Image::Read.
+bool IsPbrtV4SrgbOnlyFormat(const std::string& filename);
 // Whether Image::Write writes files with this extension (as FileExtension gives it): exr, png
 // and pfm always; every other format if OpenImageIO has a writer for it (this loads its plugin).
 bool CanWriteImageFormat(const std::string& extension);

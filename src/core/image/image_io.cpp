@@ -54,6 +54,17 @@ ColorEncoding FileEncoding(const std::string& cs) {
     return ColorEncoding::SRGB();
 }
 
+}  // namespace
+
+bool IsPbrtV4SrgbOnlyFormat(const std::string& filename) {
+    static constexpr std::string_view kStbFormats[] = {"jpg", "jpeg", "tga", "bmp", "gif",
+                                                       "psd", "pic",  "pnm", "ppm", "pgm"};
+    std::string ext = FileExtension(filename);
+    return std::find(std::begin(kStbFormats), std::end(kStbFormats), ext) != std::end(kStbFormats);
+}
+
+namespace {
+
 // The named colour space whose chromaticities match (within 1e-3), if any.
 const RGBColorSpace* MatchColorSpace(const float c[8]) {
     for (std::string_view name : RGBColorSpace::Names()) {
@@ -143,9 +154,17 @@ Image Image::Read(const std::string& filename, ImageMetadata* metadata,
     const ImageFileSpec& spec = in->Spec();
     int nc = int(spec.channelNames.size());
     if (spec.width <= 0 || spec.height <= 0 || nc <= 0) Fail(filename, "empty image");
-    if (!charged) charge(spec.width, spec.height, nc, double(spec.width) * spec.height * nc * 4.0);
+    if (!charged) {
+        // As stored: 8-bit data stay 8-bit, half stays half, the rest become floats
+        double sampleBytes = spec.type == SampleType::U8     ? 1
+                             : spec.type == SampleType::Half ? 2
+                                                             : 4;
+        charge(spec.width, spec.height, nc, double(spec.width) * spec.height * nc * sampleBytes);
+    }
     Point2i res(spec.width, spec.height);
     ColorEncoding enc = encoding ? *encoding : FileEncoding(spec.colorSpace);
+    if (spec.type == SampleType::U8 && IsPbrtV4SrgbOnlyFormat(filename))
+        enc = ColorEncoding::SRGB();
     Image image;
     size_t n = size_t(res.x) * res.y * nc;
     try {

@@ -55,10 +55,14 @@ MIPMap::MIPMap(Image image, const RGBColorSpace* colorSpace, WrapMode wrapMode,
     if (image.NChannels() == 3) rgbChannels[1] = 1, rgbChannels[2] = 2;
 
     // Build the pyramid: each level box-filters 2x2 texels of the previous one (odd sizes
-    // round up; the missing texels come from the wrap mode).
+    // round up; the missing texels come from the wrap mode). Levels are computed in floats and
+    // stored in the file's pixel format (8-bit levels in its encoding, as pbrt-v4 stores them):
+    // an 8-bit texture's pyramid takes a third more memory, not five times.
+    const PixelFormat format = image.Format();
+    const ColorEncoding encoding = image.Encoding();
+    Image prev = image.ConvertToFormat(PixelFormat::Float);
     pyramid.push_back(std::move(image));
     while (true) {
-        const Image& prev = pyramid.back();
         Point2i r = prev.Resolution();
         if (r.x == 1 && r.y == 1) break;
         Point2i nr(std::max(1, (r.x + 1) / 2), std::max(1, (r.y + 1) / 2));
@@ -73,7 +77,8 @@ MIPMap::MIPMap(Image image, const RGBColorSpace* colorSpace, WrapMode wrapMode,
                             sum += prev.GetChannel({sx * x + dx, sy * y + dy}, c, wrapMode);
                     next.SetChannel({x, y}, c, sum / (sx * sy));
                 }
-        pyramid.push_back(std::move(next));
+        pyramid.push_back(next.ConvertToFormat(format, encoding));
+        prev = std::move(next);
     }
 }
 
@@ -83,9 +88,9 @@ MIPMap* MIPMap::CreateFromFile(const std::string& filename, MIPMapFilterOptions 
     Image image = Image::Read(filename, &metadata, encoding, &arena.Budget());
     if (image.Format() == PixelFormat::U256 && !(image.Encoding() == encoding))
         image = image.ConvertToFormat(PixelFormat::U256, encoding);
-    // The pyramid's coarser levels: a third more
+    // The pyramid's coarser levels: a third more, in the image's own pixel format
     Point2i res = image.Resolution();
-    arena.Budget().Charge(double(res.x) * res.y * image.NChannels() * sizeof(float) / 3,
+    arena.Budget().Charge(double(res.x) * res.y * image.NChannels() * image.BytesPerSample() / 3,
                           "the MIP map of \"" + filename + "\"");
     return arena.New<MIPMap>(std::move(image), metadata.colorSpace, wrap, options);
 }

@@ -63,6 +63,15 @@ class MIPMap {
     int Levels() const { return int(pyramid.size()); }
     Point2i LevelResolution(int level) const { return pyramid[level].Resolution(); }
     const Image& GetLevel(int level) const { return pyramid[level]; }
+    // Bytes the levels' samples take.
+    size_t MemoryBytes() const {
+        size_t bytes = 0;
+        for (const Image& level : pyramid) {
+            Point2i r = level.Resolution();
+            bytes += size_t(r.x) * size_t(r.y) * level.NChannels() * level.BytesPerSample();
+        }
+        return bytes;
+    }
     const RGBColorSpace* GetRGBColorSpace() const { return colorSpace; }
     WrapMode GetWrapMode() const { return wrapMode; }
     const MIPMapFilterOptions& Options() const { return options; }

@@ -8,13 +8,14 @@
 // chunk or none, else from a gAMA chunk ("linear" for gamma 1, else "GammaG" with G = 1/gAMA
 // to two decimals), replaced by a tEXt "oiio:ColorSpace" if there is one; tEXt chunks become
 // strings.
-// Files with an alpha channel or a tRNS chunk are left to OpenImageIO, which premultiplies
-// their colours by alpha (OpenPng returns nullptr for them).
+// Files with an alpha channel or a tRNS chunk are left to OpenImageIO, which kiln asks for the
+// colours as stored, not multiplied by alpha, as pbrt-v4 reads them (OpenPng returns nullptr for
+// them).
 //
-// Writing: 8-bit grey or RGB images (an alpha channel, which OpenImageIO un-premultiplies, goes
-// to the plugin), with the chunks OpenImageIO writes: sRGB with its gAMA and cHRM for sRGB data,
-// gAMA 1/g for gamma g (1 for linear), oFFs 0 0, and a tEXt chunk for "oiio:ColorSpace" and
-// for every string attribute.
+// Writing: 8-bit grey or RGB images (an alpha channel goes to the plugin, which writes the
+// colours as given, not un-premultiplied), with the chunks OpenImageIO writes: sRGB with its gAMA
+// and cHRM for sRGB data, gAMA 1/g for gamma g (1 for linear), oFFs 0 0, and a tEXt chunk for
+// "oiio:ColorSpace" and for every string attribute.
 #pragma once
 
 #include <memory>

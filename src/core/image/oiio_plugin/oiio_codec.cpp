@@ -103,7 +103,11 @@ class OIIOReader final : public ImageFileReader {
 class OIIOImageCodec final : public ImageCodec {
   public:
     std::unique_ptr<ImageFileReader> Open(const std::string& filename) const override {
-        auto in = OIIO::ImageInput::open(filename);
+        // Colours as stored, not multiplied by alpha (OpenImageIO's default for formats with
+        // unassociated alpha such as PNG and TGA): pbrt-v4 reads them unpremultiplied
+        OIIO::ImageSpec config;
+        config.attribute("oiio:UnassociatedAlpha", 1);
+        auto in = OIIO::ImageInput::open(filename, &config);
         if (!in) throw std::runtime_error(OIIOError(OIIO::geterror(), "cannot open"));
         return std::make_unique<OIIOReader>(std::move(in));
     }
@@ -120,9 +124,10 @@ class OIIOImageCodec final : public ImageCodec {
         OIIO::ImageSpec s(spec.width, spec.height, nc, ToOIIO(spec.type));
         s.channelnames = spec.channelNames;
         for (int c = 0; c < nc; ++c) {
-            if (spec.channelNames[c] == "A") s.alpha_channel = c;
+            if (spec.channelNames[c] == "A") s.alpha_channel = c;  // colours not premultiplied
             if (spec.channelNames[c] == "Z") s.z_channel = c;
         }
+        s.attribute("oiio:UnassociatedAlpha", 1);  // as Read takes them
         if (!spec.colorSpace.empty()) s.attribute("oiio:ColorSpace", spec.colorSpace);
         if (spec.renderTimeSeconds) s.attribute("renderTimeSeconds", *spec.renderTimeSeconds);
         if (spec.samplesPerPixel) s.attribute("samplesPerPixel", *spec.samplesPerPixel);
