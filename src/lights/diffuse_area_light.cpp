@@ -12,7 +12,8 @@ DiffuseAreaLight::DiffuseAreaLight(const Transform&, Spectrum Lemit, Float scale
                                    const Shape* shape, bool twoSided, Image image,
                                    const RGBColorSpace* imageColorSpace, const AlphaMask* alpha)
     : shape(shape),
-      alpha(alpha),
+      alpha(alpha && !alpha->IsConstantZero() ? alpha : nullptr),
+      invisible(alpha && alpha->IsConstantZero()),
       area(shape->Area()),
       twoSided(twoSided),
       Lemit(std::move(Lemit)),

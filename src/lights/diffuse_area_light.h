@@ -23,14 +23,16 @@ class DiffuseAreaLight {
     // (R, G, B channels in imageColorSpace) emission comes from the image at
     // (u, 1 - v), bilinearly filtered, as pbrt-v4; Lemit is then unused.
     // alpha (the shape's cut-outs, nullptr: none) makes light sampling skip points where the
-    // shape is cut out; rays never hit such points in the first place.
+    // shape is cut out; rays never hit such points in the first place. A constant alpha of 0
+    // makes an invisible light as in pbrt-v4: never hit, yet emitting over the whole shape,
+    // found by light sampling alone (Type() DeltaPosition: no MIS against BSDF sampling).
     DiffuseAreaLight(const Transform& renderFromLight, Spectrum Lemit, Float scale,
                      const Shape* shape, bool twoSided, Image image = {},
                      const RGBColorSpace* imageColorSpace = nullptr,
                      const AlphaMask* alpha = nullptr);
 
     static constexpr LightType kType = LightType::Area;
-    LightType Type() const { return kType; }
+    LightType Type() const { return invisible ? LightType::DeltaPosition : kType; }
     // Whether SampleLi leaves the radiance to DeferredL (Light::DeferredL)
     static constexpr bool kDefersL = false;
     const Shape& GetShape() const { return *shape; }
@@ -57,7 +59,8 @@ class DiffuseAreaLight {
 
   private:
     const Shape* shape;
-    const AlphaMask* alpha;
+    const AlphaMask* alpha;  // nullptr for invisible lights
+    bool invisible;
     Float area;
     bool twoSided;
     Spectrum Lemit;

@@ -26,6 +26,17 @@ ImageInfiniteLight::ImageInfiniteLight(const Transform& renderFromLight, const I
     : renderFromLight(renderFromLight),
       colorSpace(colorSpace ? colorSpace : &RGBColorSpace::sRGB()),
       scale(scale) {
+    // Does the transform keep directions unit length (a rotation, in either direction)?
+    preservesLengths = true;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            Vector3f a(i == 0, i == 1, i == 2), b(j == 0, j == 1, j == 2);
+            Float expected = i == j ? 1 : 0;
+            if (std::abs(Dot(renderFromLight(a), renderFromLight(b)) - expected) > 1e-4f ||
+                std::abs(Dot(renderFromLight.ApplyInverse(a), renderFromLight.ApplyInverse(b)) -
+                         expected) > 1e-4f)
+                preservesLengths = false;
+        }
     // Keep the R, G, B channels only
     if (im.ChannelIndex("R") < 0 || im.ChannelIndex("G") < 0 || im.ChannelIndex("B") < 0)
         throw std::invalid_argument(filename +
@@ -128,17 +139,28 @@ std::optional<LightLiSample> ImageInfiniteLight::SampleLi(const LightSampleConte
     Vector3f wLight = DirectionFromST(st);
     Float dOmega = SolidAnglePerUnitST(wLight);
     if (dOmega == 0) return {};
-    Vector3f wi = Normalize(renderFromLight(wLight));
+    // pbrt-v4 hands the integrator renderFromLight(wLight) unnormalised, so that under a
+    // transform that does not preserve lengths (a scale, or a projective ConcatTransform whose
+    // upper 3x3 in render space is no rotation) its light samples weigh the BSDF's cosine by
+    // the vector's length; kiln renders such scenes as pbrt-v4 does by scaling L by it.
+    Vector3f wRender = renderFromLight(wLight);
+    Float length = Length(wRender);
+    if (!(length > 0) || !std::isfinite(length)) return {};
+    Vector3f wi = wRender / length;
     Float pdf = mapPDF / dOmega;
 
     Point3f pOutside = ctx.p + wi * (2 * sceneRadius);
-    return LightLiSample{ImageLe(st, lambda), wi, pdf,
-                         Interaction(pOutside, Normal3f(), Point2f())};
+    LightLiSample ls{ImageLe(st, lambda), wi, pdf, Interaction(pOutside, Normal3f(), Point2f())};
+    ls.wiLength = length;
+    return ls;
 }
 
 Float ImageInfiniteLight::PDF_Li(const LightSampleContext&, Vector3f w,
                                  bool allowIncompletePDF) const {
-    Vector3f wLight = Normalize(renderFromLight.ApplyInverse(w));
+    // pbrt-v4 maps the transformed direction to its equal-area square without normalising it
+    // (the same direction where the transform preserves lengths); kiln does the same
+    Vector3f wLight = renderFromLight.ApplyInverse(w);
+    if (mapping != EnvironmentMapping::EqualAreaOctahedral) wLight = Normalize(wLight);
     Float dOmega = SolidAnglePerUnitST(wLight);
     if (dOmega == 0) return 0;
     Point2f st = STFromDirection(wLight);

@@ -42,6 +42,10 @@ class ImageInfiniteLight {
     static constexpr LightType kType = LightType::Infinite;
     LightType Type() const { return kType; }
     EnvironmentMapping Mapping() const { return mapping; }
+    // Whether renderFromLight maps unit directions to unit directions (its upper 3x3 a
+    // rotation, within 1e-4). Otherwise SampleLi reports the length pbrt-v4's unnormalised
+    // direction would have (LightLiSample::wiLength) and PDF_Li looks the map up as pbrt-v4.
+    bool PreservesLengths() const { return preservesLengths; }
 
     SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const;
     std::optional<LightLiSample> SampleLi(const LightSampleContext& ctx, Point2f u,
@@ -67,6 +71,7 @@ class ImageInfiniteLight {
     Float scale;
     EnvironmentMapping mapping;
     WrapMode wrapMode;
+    bool preservesLengths;
     PiecewiseConstant2D distribution, compensatedDistribution;
     mutable Point3f sceneCenter;
     mutable Float sceneRadius = 0;

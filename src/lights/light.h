@@ -59,6 +59,17 @@ class Light
     LightType Type() const {
         return Dispatch([](auto l) { return l->Type(); });
     }
+    // Whether SampleLi may return samples with wiLength != 1 (pbrt-v4 compatibility for image
+    // infinite lights under transforms that change lengths: LightLiSample::wiLength).
+    bool HasUnnormalizedSamples() const {
+        return Dispatch([](auto l) {
+            using T = std::remove_cv_t<std::remove_pointer_t<decltype(l)>>;
+            if constexpr (std::is_same_v<T, ImageInfiniteLight>)
+                return !l->PreservesLengths();
+            else
+                return false;
+        });
+    }
     // Emitted power, W nm^-1 at each wavelength. Infinite and distant lights need Preprocess.
     SampledSpectrum Phi(const SampledWavelengths& lambda) const {
         return Dispatch([&](auto l) { return l->Phi(lambda); });

@@ -45,6 +45,11 @@ struct LightLiSample {
     Float pdf = 0;
     Interaction pLight;
     bool deferredL = false;
+    // pbrt-v4 compatibility: the length of the direction pbrt-v4 would hand its integrator
+    // unnormalised (1 but for image infinite lights under transforms that do not preserve
+    // lengths: ImageInfiniteLight::SampleLi). pbrt-v4 evaluates the cosine and the BSDF's pdf
+    // with that vector, so kiln's integrators scale both by it.
+    Float wiLength = 1;
 };
 
 // A light chosen by a light sampler, by its index in the scene's light list.

@@ -177,7 +177,9 @@ class PathIntegrator {
         std::optional<LightLiSample> ls = light.SampleLi(ctx, uPoint, lambda, true);
         if (!ls || ls->pdf == 0 || (!ls->deferredL && !ls->L)) return {};
 
-        Vector3f wo = intr.wo, wi = ls->wi;
+        // The BSDF and its cosine see the light's direction with pbrt-v4's length (1 but for
+        // environment maps under transforms that change lengths: LightLiSample::wiLength)
+        Vector3f wo = intr.wo, wi = ls->wi * ls->wiLength;
         Float cosTheta = AbsDot(wi, intr.shading.n);
         if (cosTheta == 0) return {};
         Throughput f = bsdf.f<Throughput>(wo, wi);

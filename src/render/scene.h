@@ -79,10 +79,12 @@ struct SceneFeatures {
     // else one IntersectP
     int sheets = 0;
     // Participating media: the integrator "volpath" runs VolPathIntegrator when the scene has
-    // media, PathIntegrator otherwise (media cost nothing when absent); --generic volpath
-    // runs VolPathIntegrator whatever the scene says
+    // media (or an environment map with unnormalised light samples), PathIntegrator otherwise
+    // (media cost nothing when absent); --generic volpath runs VolPathIntegrator whatever the scene
+    // says
     int media = 0, emissiveMedia = 0, thermalMedia = 0;
     bool volumetric = false, genericVolumes = false;
+    bool unnormalizedLightSamples = false;  // Light::HasUnnormalizedSamples (pbrt-v4 compatibility)
     // Polarised transport (radiance.h): when the film records Stokes layers, the camera
     // carries a polariser or a material is a polarising filter; otherwise the unpolarised
     // variant runs

@@ -492,7 +492,13 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
         f.thermalMedia += m.IsThermal();
     }
     f.genericVolumes = options.genericVolumes;
-    f.volumetric = options.genericVolumes || (scene.integrator.volumetric && f.media > 0);
+    // An environment map whose transform changes lengths makes pbrt-v4's light samples biased
+    // (LightLiSample::wiLength): their mean then depends on the MIS heuristic, so "volpath"
+    // keeps pbrt-v4's volpath heuristic even without media
+    for (const Light& light : scene.lights)
+        f.unnormalizedLightSamples |= light.HasUnnormalizedSamples();
+    f.volumetric = options.genericVolumes ||
+                   (scene.integrator.volumetric && (f.media > 0 || f.unnormalizedLightSamples));
     f.areaLights = !desc.areaLights.empty();
     f.environmentLight = !scene.infiniteLights.empty();
     auto dispersive = [](const ParameterDictionary& p) {

@@ -269,6 +269,8 @@ class VolPathIntegrator {
         Throughput f_hat;
         Float scatterPDF;
         if (bsdf) {
+            // With pbrt-v4's length (LightLiSample::wiLength; path_integrator.h)
+            wi = ls->wi * ls->wiLength;
             Float cosTheta = AbsDot(wi, surface->shading.n);
             if (cosTheta == 0) return {};
             f_hat = bsdf->f<Throughput>(wo, wi) * cosTheta;

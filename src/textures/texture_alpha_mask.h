@@ -11,10 +11,12 @@ class TextureParameterDictionary;
 
 class TextureAlphaMask : public AlphaMask {
   public:
-    explicit TextureAlphaMask(FloatTexture alpha) : alpha(alpha) {}
+    explicit TextureAlphaMask(FloatTexture alpha, bool constantZero = false)
+        : alpha(alpha), constantZero(constantZero) {}
     Float Alpha(const SurfaceInteraction& si) const override {
         return alpha.Evaluate(TextureEvalContext(si));
     }
+    bool IsConstantZero() const override { return constantZero; }
 
     // A shape's "float alpha" or "texture alpha" (SceneError for an undefined texture or a
     // non-finite value); nullptr when absent or a constant >= 1 (opaque, no test at all).
@@ -22,6 +24,7 @@ class TextureAlphaMask : public AlphaMask {
 
   private:
     FloatTexture alpha;
+    bool constantZero;  // a constant texture of value 0 (pbrt-v4's test: exactly 0)
 };
 
 }  // namespace kiln

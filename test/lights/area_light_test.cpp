@@ -184,3 +184,38 @@ TEST(DiffuseAreaLight, CreateRejectsUnknownTypeAndLWithFilename) {
     EXPECT_THROW(Light::CreateArea("diffuse", both, Transform(), disk, FileLoc(), s.arena, s.diag),
                  SceneError);
 }
+
+// pbrt-v4's invisible area lights: on a shape whose alpha is the constant 0 the light emits
+// over the whole shape and is sampled without MIS (type DeltaPosition); alpha textures that
+// merely evaluate to 0 cut the light out.
+TEST(DiffuseAreaLight, ConstantZeroAlphaMakesAnInvisibleLight) {
+    struct ConstantAlpha : AlphaMask {
+        Float a;
+        bool constant;
+        ConstantAlpha(Float a, bool constant) : a(a), constant(constant) {}
+        Float Alpha(const SurfaceInteraction&) const override { return a; }
+        bool IsConstantZero() const override { return constant && a == 0; }
+    };
+    Scene s;
+    Shape disk = s.MakeDisk(Translate(Vector3f(0, 0, 1)), 0.5f);
+    ParameterDictionary dict(ParsedParameterVector{}, nullptr);
+    ConstantAlpha invisible(0, true), cutOut(0, false);
+    Light lInvisible = Light::CreateArea("diffuse", dict, Transform(), disk, FileLoc(), s.arena,
+                                         s.diag, &invisible);
+    Light lCutOut =
+        Light::CreateArea("diffuse", dict, Transform(), disk, FileLoc(), s.arena, s.diag, &cutOut);
+    EXPECT_EQ(lInvisible.Type(), LightType::DeltaPosition);
+    EXPECT_EQ(lCutOut.Type(), LightType::Area);
+    // Above the disk, on the side its normal (+z) emits to
+    LightSampleContext ctx(Point3f(0, 0, 2), Normal3f(0, 0, -1), Normal3f(0, 0, -1));
+    SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.5f);
+    int lit = 0, cut = 0;
+    for (int i = 0; i < 64; ++i) {
+        Point2f u((i % 8 + 0.5f) / 8, (i / 8 + 0.5f) / 8);
+        auto a = lInvisible.SampleLi(ctx, u, lambda), b = lCutOut.SampleLi(ctx, u, lambda);
+        lit += a && a->L;
+        cut += b && b->L;
+    }
+    EXPECT_EQ(lit, 64);
+    EXPECT_EQ(cut, 0);
+}

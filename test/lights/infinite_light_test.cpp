@@ -158,3 +158,36 @@ TEST(ImageInfiniteLight, PhiOfConstantMapMatchesUniformLight) {
             EXPECT_NEAR(env.Phi(lambda)[i], uniform.Phi(lambda)[i], 1e-4 * uniform.Phi(lambda)[i]);
     }
 }
+
+// pbrt-v4 compatibility under transforms that change lengths (a scale, a projective matrix):
+// samples report the length of pbrt-v4's unnormalised direction and PDF_Li looks the map up
+// with the unnormalised light-space direction; rotations keep everything unit.
+TEST(ImageInfiniteLight, TransformsThatChangeLengthsAsPbrtV4) {
+    Image image = SyntheticImage(8, 8);
+    Bounds3f bounds(Point3f(-1, -1, -1), Point3f(1, 1, 1));
+    LightSampleContext ctx(Point3f(0.2f, 0, 0), Normal3f(), Normal3f());
+    SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.4f);
+    ImageInfiniteLight rotated(Rotate(30, Vector3f(1, 1, 0)), image, &RGBColorSpace::sRGB(), 1);
+    EXPECT_TRUE(rotated.PreservesLengths());
+    Transform scale = Scale(2, 2, 2);
+    ImageInfiniteLight scaled(scale, image, &RGBColorSpace::sRGB(), 1);
+    EXPECT_FALSE(scaled.PreservesLengths());
+    EXPECT_TRUE(Light(&scaled).HasUnnormalizedSamples());
+    EXPECT_FALSE(Light(&rotated).HasUnnormalizedSamples());
+    for (ImageInfiniteLight* env : {&rotated, &scaled}) {
+        env->Preprocess(bounds);
+        std::optional<LightLiSample> ls = env->SampleLi(ctx, Point2f(0.3f, 0.6f), lambda);
+        ASSERT_TRUE(ls);
+        EXPECT_NEAR(Length(ls->wi), 1, 1e-5f);
+        EXPECT_NEAR(ls->wiLength, env == &scaled ? 2 : 1, 1e-5f);
+    }
+    // PDF_Li of a direction straight up: the light-space vector (0, 0, 1/2) maps, unnormalised,
+    // to the square's point of height 1/2, not to its centre (the pole)
+    Vector3f up(0, 0, 1);
+    Float pdfScaled = scaled.PDF_Li(ctx, up), pdfRotated;
+    Point2f st = EqualAreaSphereToSquare(Vector3f(0, 0, 0.5f));
+    ImageInfiniteLight identity(Transform(), image, &RGBColorSpace::sRGB(), 1);
+    identity.Preprocess(bounds);
+    pdfRotated = identity.PDF_Li(ctx, EqualAreaSquareToSphere(st));
+    EXPECT_NEAR(pdfScaled, pdfRotated, 1e-4f * pdfRotated);
+}

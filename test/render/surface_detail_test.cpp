@@ -142,6 +142,7 @@ TEST(AlphaRender, AreaLightWithAlphaEmitsItsFraction) {
           << "LookAt 0 0 0.5  0 0 0  0 1 0\n"
           << "Camera \"orthographic\" \"float screenwindow\" [-0.5 0.5 -0.5 0.5]\n"
           << "WorldBegin\nMaterial \"diffuse\"\n"
+          << "Texture \"zero\" \"float\" \"checkerboard\" \"float tex1\" 0 \"float tex2\" 0\n"
           << "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] "
              "\"point3 P\" [-2 -2 0 2 -2 0 2 2 0 -2 2 0]\n"
           << "AttributeBegin AreaLightSource \"diffuse\" \"rgb L\" [1 1 1] "
@@ -155,7 +156,12 @@ TEST(AlphaRender, AreaLightWithAlphaEmitsItsFraction) {
     double tol = 4 * std::hypot(se / opaque, 0.4 * seOpaque / opaque);
     EXPECT_LT(tol, 0.03);
     EXPECT_NEAR(m / opaque, 0.4, tol);
-    EXPECT_EQ(MeanAndError(scene("\"float alpha\" 0")).first, 0);
+    // pbrt-v4's invisible light: a constant alpha of 0 lights the floor as the opaque light
+    // does (light sampling alone finds it); an alpha texture that is 0 but not a constant
+    // cuts the light out
+    auto [invisible, seInvisible] = MeanAndError(scene("\"float alpha\" 0"));
+    EXPECT_NEAR(invisible / opaque, 1, 4 * std::hypot(seInvisible / opaque, seOpaque / opaque));
+    EXPECT_EQ(MeanAndError(scene("\"texture alpha\" \"zero\"")).first, 0);
 }
 
 TEST(PlyDisplacement, MeshIsWhereTheTextureMovesIt) {

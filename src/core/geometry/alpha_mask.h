@@ -27,6 +27,9 @@ class AlphaMask {
         if (!(a < 1)) return false;
         return a <= 0 || u > a;
     }
+    // Whether alpha is the constant 0 ("float alpha" 0): pbrt-v4 makes an area light on such a
+    // shape an invisible light that still emits (DiffuseAreaLight).
+    virtual bool IsConstantZero() const { return false; }
 };
 
 // A uniform number in [0, 1) from a 64-bit hash (the top 24 bits).

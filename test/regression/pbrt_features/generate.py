@@ -2,11 +2,14 @@
 """Writes the binary and compressed inputs of the pbrt-v4 feature scenes in this folder:
 gzip-geometry.pbrt (a gzip-compressed include, named without .gz: detected by content),
 gzip-mesh.ply.gz (a gzip-compressed binary PLY icosphere), displacement-grid.ply (an ASCII
-PLY grid with uv) and normalmap.pfm (a tangent-space normal map of ripples). Deterministic:
-re-running it rewrites the same bytes."""
+PLY grid with uv), normalmap.pfm (a tangent-space normal map of ripples), checker.tga (an 8-bit
+uncompressed TGA, rows bottom to top as TGA files usually store them), alpha.png (an 8-bit RGBA
+PNG whose colours are not premultiplied) and sky.pfm (a 16x16 equal-area environment map).
+Deterministic: re-running it rewrites the same bytes."""
 import gzip
 import math
 import struct
+import zlib
 
 
 def icosphere():
@@ -71,6 +74,41 @@ def main():
             l = math.sqrt(nx * nx + ny * ny + nz * nz)
             data += [0.5 + 0.5 * nx / l, 0.5 + 0.5 * ny / l, 0.5 + 0.5 * nz / l]
     with open("normalmap.pfm", "wb") as out:
+        out.write(b"PF\n%d %d\n-1.0\n" % (w, h))
+        out.write(struct.pack("<%df" % len(data), *data))
+
+    # An 8 x 8 checker of two colours with a gradient, 24-bit BGR, bottom-left origin
+    w = h = 8
+    tga = bytearray(struct.pack("<BBBHHBHHHHBB", 0, 0, 2, 0, 0, 0, 0, 0, w, h, 24, 0))
+    for y in range(h):
+        for x in range(w):
+            r, g, b = (200, 90 + 12 * x, 40) if (x // 2 + y // 2) % 2 else (60, 140, 180 + 8 * y)
+            tga += bytes((b, g, r))
+    open("checker.tga", "wb").write(bytes(tga))
+
+    # RGBA: colour (230, 150, 60) everywhere, alpha 255 in the left half and 64 in the right
+    rows = b""
+    for y in range(4):
+        rows += b"\0" + b"".join(bytes((230, 150, 60, 255 if x < 2 else 64)) for x in range(4))
+
+    def chunk(kind, data):
+        return (struct.pack(">I", len(data)) + kind + data +
+                struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff))
+    png = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 4, 4, 8, 6, 0, 0, 0)) +
+           chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
+    open("alpha.png", "wb").write(png)
+
+    # Sky: bright and warm towards +z of the map, blue towards -z, a brighter +x half
+    w = h = 16
+    data = []
+    for y in range(h):
+        for x in range(w):
+            u, v2 = (x + 0.5) / w, (y + 0.5) / h
+            dx, dy = 2 * u - 1, 2 * v2 - 1
+            z = 1 - (abs(dx) + abs(dy))  # the octahedral map's height (sign of z)
+            data += [0.3 + 0.9 * max(z, 0) + 0.3 * (dx > 0), 0.4 + 0.5 * max(z, 0),
+                     0.8 + 0.2 * max(-z, 0)]
+    with open("sky.pfm", "wb") as out:
         out.write(b"PF\n%d %d\n-1.0\n" % (w, h))
         out.write(struct.pack("<%df" % len(data), *data))
 
