@@ -26,6 +26,7 @@
 #include "lights/light_bounds.h"
 #include "lights/light_sample.h"
 #include "lights/point_light.h"
+#include "lights/portal_infinite_light.h"
 #include "lights/spot_light.h"
 #include "lights/thermal_area_light.h"
 #include "lights/uniform_infinite_light.h"
@@ -52,7 +53,7 @@ struct FileLoc;
 class Light
     : public ClosedSet<const PointLight*, const SpotLight*, const DistantLight*,
                        const DiffuseAreaLight*, KILN_THERMAL_LIGHT_KIND const UniformInfiniteLight*,
-                       const ImageInfiniteLight*> {
+                       const ImageInfiniteLight*, const PortalInfiniteLight*> {
   public:
     using ClosedSet::ClosedSet;
 
@@ -145,11 +146,13 @@ class Light
 
     // Light "name" (pbrt-v4): "point" (I, scale, power, from), "spot" (I, scale, power, from,
     // to, coneangle, conedeltaangle), "distant" (L, scale, from, to, illuminance), "infinite"
-    // (L or filename, scale, illuminance; portal is warned about and ignored). "goniometric"
-    // and "projection" are warned about and give nullopt; other names throw SceneError.
+    // (L or filename, scale, illuminance, portal: four corners in world space, which
+    // renderFromWorld takes to render space). "goniometric" and "projection" are warned about
+    // and give nullopt; other names throw SceneError.
     static std::optional<Light> Create(const std::string& name, const ParameterDictionary& params,
                                        const Transform& renderFromLight, const FileLoc& loc,
-                                       ObjectArena& arena, Diagnostics& diag);
+                                       ObjectArena& arena, Diagnostics& diag,
+                                       const Transform& renderFromWorld = Transform());
     // AreaLightSource "diffuse" (L, scale, power, twosided, filename) on `shape`; other names
     // throw SceneError. (Thermal lights are made by scene creation: render/scene_lights.h.)
     // alpha: the shape's cut-outs (nullptr: none), skipped by light sampling.

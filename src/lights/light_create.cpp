@@ -1,7 +1,9 @@
 // Light creation from scene parameters (pbrt-v4's Light::Create and Light::CreateArea), with
 // pbrt-v4's parameter names, defaults and photometric normalisation (see light.h).
+#include <array>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "core/geometry/shape.h"
 #include "core/image/image.h"
@@ -131,23 +133,51 @@ Light CreateDistant(const ParameterDictionary& params, const Transform& renderFr
     return arena.New<DistantLight>(t, std::move(L), sc);
 }
 
+// "portal": four corners in world space (as pbrt-v4, not in the light's space), in render
+// space; a SceneError unless there are four of them, a warning unless they form a rectangle.
+std::optional<std::array<Point3f, 4>> ReadPortal(const ParameterDictionary& params,
+                                                 const Transform& renderFromWorld,
+                                                 Diagnostics& diag) {
+    std::vector<Point3f> p = params.GetPoint3fArray("portal");
+    if (p.empty()) return std::nullopt;
+    if (p.size() != 4)
+        throw SceneError(
+            params.Loc("portal"),
+            "an infinite light's \"portal\" needs 4 corners, not " + std::to_string(p.size()),
+            "portal");
+    std::array<Point3f, 4> portal;
+    for (int i = 0; i < 4; ++i) portal[size_t(i)] = renderFromWorld(p[size_t(i)]);
+    auto dir = [&](int a, int b) {
+        Vector3f d = portal[size_t(b)] - portal[size_t(a)];
+        Float l = Length(d);
+        return l > 0 ? d / l : Vector3f(0, 0, 0);
+    };
+    Vector3f p01 = dir(0, 1), p12 = dir(1, 2), p32 = dir(3, 2), p03 = dir(0, 3);
+    if (std::abs(Dot(p01, p32) - 1) > .001f || std::abs(Dot(p12, p03) - 1) > .001f ||
+        std::abs(Dot(p01, p12)) > .001f || std::abs(Dot(p12, p32)) > .001f ||
+        std::abs(Dot(p32, p03)) > .001f || std::abs(Dot(p03, p01)) > .001f)
+        diag.Warn(params.Loc("portal"),
+                  "the infinite light's portal is not a planar rectangle (pbrt-v4 reports an "
+                  "error and renders on)");
+    return portal;
+}
+
 Light CreateInfinite(const ParameterDictionary& params, const Transform& renderFromLight,
-                     const FileLoc& loc, ObjectArena& arena, Diagnostics& diag) {
+                     const Transform& renderFromWorld, const FileLoc& loc, ObjectArena& arena,
+                     Diagnostics& diag) {
     const RGBColorSpace& cs = ColorSpaceOf(params);
     std::optional<Spectrum> L = params.GetOneSpectrum("L", std::nullopt, SpectrumType::Illuminant);
     Float scale = params.GetOneFloat("scale", 1);
     std::string filename = params.GetOneFilename("filename", "");
     Float E_v = params.GetOneFloat("illuminance", -1);
-    if (!params.GetPoint3fArray("portal").empty())
-        diag.Warn(params.Loc("portal"),
-                  "\"portal\" for infinite lights is not supported by kiln; ignored");
+    std::optional<std::array<Point3f, 4>> portal = ReadPortal(params, renderFromWorld, diag);
     if (L && !filename.empty())
         throw SceneError(loc,
                          "can't specify both emission \"L\" and \"filename\" for an "
                          "infinite light",
                          "infinite");
 
-    if (filename.empty()) {
+    if (filename.empty() && !portal) {
         // Uniform: the given spectrum or the colour space's illuminant, luminance 1 * scale;
         // a uniform radiance L_v gives illuminance pi L_v on any surface
         Spectrum Le = L ? *L : Spectrum(cs.Illuminant());
@@ -156,9 +186,22 @@ Light CreateInfinite(const ParameterDictionary& params, const Transform& renderF
         return arena.New<UniformInfiniteLight>(renderFromLight, std::move(Le), scale);
     }
 
-    // Environment map, in the colour space its file names
-    const RGBColorSpace* imageCSp = nullptr;
-    Image image = ReadEmissionImage(filename, loc, &imageCSp, arena.Budget());
+    // Environment map, in the colour space its file names; a uniform one behind a portal is a
+    // one-pixel map of L's sRGB (as pbrt-v4, which warns for spectra other than RGB)
+    const RGBColorSpace* imageCSp = &RGBColorSpace::sRGB();
+    Image image;
+    if (!filename.empty()) {
+        image = ReadEmissionImage(filename, loc, &imageCSp, arena.Budget());
+    } else {
+        Spectrum Le = L ? *L : Spectrum(cs.Illuminant());
+        if (L && params.TypeOf("L") != "rgb")
+            diag.Warn(params.Loc("L"),
+                      "a portal light's \"L\" is converted to sRGB (as pbrt-v4 does): its "
+                      "spectrum is approximated");
+        RGB rgb = RGBColorSpace::sRGB().ToRGB(SpectrumToXYZ(Le));
+        image = Image(PixelFormat::Float, {1, 1}, {"R", "G", "B"});
+        for (int c = 0; c < 3; ++c) image.SetChannel({0, 0}, c, std::max<Float>(0, rgb[c]));
+    }
     const RGBColorSpace& imageCS = *imageCSp;
     scale = PhotometricScale(scale, Spectrum(imageCS.Illuminant()));
     if (E_v > 0) {
@@ -182,6 +225,8 @@ Light CreateInfinite(const ParameterDictionary& params, const Transform& renderF
         if (k_e > 0) scale *= Float(E_v / k_e);
     }
     try {
+        if (portal)
+            return arena.New<PortalInfiniteLight>(renderFromLight, image, &imageCS, scale, *portal);
         return arena.New<ImageInfiniteLight>(renderFromLight, image, &imageCS, scale, filename);
     } catch (const std::invalid_argument& e) {
         throw SceneError(loc, e.what(), filename);
@@ -193,7 +238,8 @@ Light CreateInfinite(const ParameterDictionary& params, const Transform& renderF
 // Light::Create
 std::optional<Light> Light::Create(const std::string& name, const ParameterDictionary& params,
                                    const Transform& renderFromLight, const FileLoc& loc,
-                                   ObjectArena& arena, Diagnostics& diag) {
+                                   ObjectArena& arena, Diagnostics& diag,
+                                   const Transform& renderFromWorld) {
     std::optional<Light> light;
     if (name == "point")
         light = CreatePoint(params, renderFromLight, arena);
@@ -202,7 +248,7 @@ std::optional<Light> Light::Create(const std::string& name, const ParameterDicti
     else if (name == "distant")
         light = CreateDistant(params, renderFromLight, arena);
     else if (name == "infinite")
-        light = CreateInfinite(params, renderFromLight, loc, arena, diag);
+        light = CreateInfinite(params, renderFromLight, renderFromWorld, loc, arena, diag);
     else if (name == "goniometric" || name == "projection") {
         diag.Warn(loc, "\"" + name + "\" lights are not supported by kiln; light ignored");
         return std::nullopt;

@@ -348,7 +348,8 @@ std::vector<std::vector<int>> CreateLights(Scene& scene, SceneDescription& desc,
     ObjectArena& arena = scene.arena;
     for (TransformedSceneEntity& e : desc.lights) {
         std::optional<Light> light =
-            Light::Create(e.name, e.parameters, e.renderFromObject, e.loc, arena, diag);
+            Light::Create(e.name, e.parameters, e.renderFromObject, e.loc, arena, diag,
+                          desc.camera.cameraTransform.RenderFromWorld());
         if (light) scene.lights.push_back(*light);
     }
     std::vector<std::vector<int>> shapeLights(desc.shapes.size());
