@@ -46,6 +46,10 @@ inline uint64_t EncodeMorton2(uint32_t x, uint32_t y) {
     return (LeftShift2(y) << 1) | LeftShift2(x);
 }
 
+// v / 2^32 truncated to the 24 bits a float holds: exact, below 1, and never rounded up
+// across a dyadic interval boundary.
+inline Float FixedToFloat(uint32_t v) { return Float(v >> 8) * 0x1p-24f; }
+
 inline bool IsPowerOf2(int v) { return v > 0 && !(v & (v - 1)); }
 inline int Log2Int(uint64_t v) { return v ? 63 - __builtin_clzll(v) : -1; }
 inline int RoundUpPow2(int v) {
