@@ -231,6 +231,48 @@ TEST(PMJ02BNSampler, PixelSamplesAreNetsAndLaterDimensionsStratified) {
     }
 }
 
+TEST(PMJ02BNSampler, PixelOffsetsStratifiedOverPixelBlocks) {
+    // In every aligned 2^k x 2^k block the rotations of a dimension fall in distinct 4^-k
+    // intervals; dimensions and seeds get different offsets. With 1 spp, Get1D is the offset.
+    PMJ02BNSampler a(1, 5), b(1, 6);
+    for (int dim : {2, 3, 17}) {
+        for (int k : {1, 2, 3}) {
+            int side = 1 << k;
+            for (Point2i corner : {Point2i(0, 0), Point2i(8, 16), Point2i(256 + 40, 72)}) {
+                std::set<int> bins;
+                int differing = 0;
+                for (int y = 0; y < side; ++y)
+                    for (int x = 0; x < side; ++x) {
+                        Point2i p(corner.x + x, corner.y + y);
+                        a.StartPixelSample(p, 0, dim);
+                        Float offset = a.PixelOffset(dim);
+                        EXPECT_EQ(a.Get1D(), offset);
+                        bins.insert(int(offset * side * side));
+                        a.StartPixelSample(p, 0, dim);
+                        differing += offset != a.PixelOffset(dim + 1);
+                        b.StartPixelSample(p, 0, dim);
+                        differing += offset != b.PixelOffset(dim);
+                    }
+                EXPECT_EQ(bins.size(), size_t(side * side)) << dim << " " << k;
+                EXPECT_EQ(differing, 2 * side * side);
+            }
+        }
+    }
+}
+
+TEST(PMJ02BNSampler, OffsetCacheIsTransparent) {
+    // A sampler reused across samples and pixels (and beyond the cached dimensions) returns
+    // what a fresh one returns.
+    PMJ02BNSampler reused(16, 5);
+    for (Point2i p : {Point2i(3, 4), Point2i(3, 4), Point2i(300, 59), Point2i(3, 4)})
+        for (int i = 0; i < 16; i += 5) {
+            PMJ02BNSampler fresh(16, 5);
+            reused.StartPixelSample(p, i, 0);
+            fresh.StartPixelSample(p, i, 0);
+            for (int d = 0; d < 90; ++d) ASSERT_EQ(reused.Get1D(), fresh.Get1D()) << d;
+        }
+}
+
 std::vector<Sampler> NewSamplers(int spp, int seed = 7) {
     return {HaltonSampler(spp, Point2i(32, 32), RandomizeStrategy::PermuteDigits, seed),
             HaltonSampler(spp, Point2i(32, 32), RandomizeStrategy::Owen, seed),

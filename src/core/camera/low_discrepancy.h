@@ -62,6 +62,13 @@ inline int RoundUpPow2(int v) {
 // "Correlated Multi-Jittered Sampling"; cycle-walking hash).
 int PermutationElement(uint32_t i, uint32_t n, uint32_t seed);
 
+// All 24 permutations of the four base-4 digit values.
+inline constexpr uint8_t kBase4Permutations[24][4] = {
+    {0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 1, 3}, {0, 2, 3, 1}, {0, 3, 2, 1}, {0, 3, 1, 2},
+    {1, 0, 2, 3}, {1, 0, 3, 2}, {1, 2, 0, 3}, {1, 2, 3, 0}, {1, 3, 2, 0}, {1, 3, 0, 2},
+    {2, 1, 0, 3}, {2, 1, 3, 0}, {2, 0, 1, 3}, {2, 0, 3, 1}, {2, 3, 0, 1}, {2, 3, 1, 0},
+    {3, 1, 2, 0}, {3, 1, 0, 2}, {3, 2, 1, 0}, {3, 2, 0, 1}, {3, 0, 2, 1}, {3, 0, 1, 2}};
+
 // Randomizers of a 32-bit binary fraction
 enum class RandomizeStrategy { None, PermuteDigits, FastOwen, Owen };
 

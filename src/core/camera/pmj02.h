@@ -26,7 +26,10 @@ using FixedPoint2 = std::array<uint32_t, 2>;
 // sub-square a point takes a random position whose elementary intervals of the level being
 // completed are all still empty: a depth-first search over the bits of x, then of y, that
 // checks each interval as soon as its bits are known (random bit order, backtracking). No
-// blue-noise selection among the valid positions (the paper's pmj02bn variant).
+// blue-noise selection among the valid positions (the paper's pmj02bn variant): the net and
+// sub-square constraints leave a new point very few valid cells of side 2^-m (one, for each
+// point enumerated at level 2^11), so candidates differ mostly by their jitter inside it; a
+// best-of-8 selection measured +3 to +6 % mean nearest-neighbour distance for 16x the time.
 // log4Count <= 8. A level whose search fails for some point is placed again with new random
 // bits; `restarts` (if given) receives how many times that happened.
 std::vector<FixedPoint2> GeneratePMJ02(int log4Count, uint64_t seed, int* restarts = nullptr);

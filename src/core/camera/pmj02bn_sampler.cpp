@@ -32,16 +32,40 @@ PMJ02BNSampler::PMJ02BNSampler(int samplesPerPixel, int seed)
     pixelSamples = std::move(samples);
 }
 
+Float PMJ02BNSampler::PixelOffset(int d) const {
+    if (d >= kCachedDimensions) return ComputePixelOffset(d);
+    if (cacheGeneration[size_t(d)] != generation) {
+        cachedOffset[size_t(d)] = ComputePixelOffset(d);
+        cacheGeneration[size_t(d)] = generation;
+    }
+    return cachedOffset[size_t(d)];
+}
+
+Float PMJ02BNSampler::ComputePixelOffset(int d) const {
+    uint64_t key = Hash(d, seed, pixel.x >> 8, pixel.y >> 8);
+    uint32_t morton = uint32_t(EncodeMorton2(uint32_t(pixel.x) & 255, uint32_t(pixel.y) & 255));
+    uint32_t permuted = 0;
+    for (int i = 7; i >= 0; --i) {
+        uint32_t digit = (morton >> (2 * i)) & 3;
+        uint64_t higher = uint64_t(morton >> (2 * i + 2));
+        // Keyed by the block (the digits above) and the digit's level.
+        int p = int((MixBits(key ^ (higher << 8) ^ uint64_t(i)) >> 24) % 24);
+        permuted |= uint32_t(kBase4Permutations[p][digit]) << (2 * i);
+    }
+    // The 16 permuted bits reversed into the top half; the low half from the hash.
+    uint32_t v = ReverseBits32(permuted) | uint32_t(MixBits(key ^ (uint64_t(morton) << 32)) >> 48);
+    return FixedToFloat(v);
+}
+
 Point2f PMJ02BNSampler::Get2D() {
     int index = sampleIndex;
     int set = dimension / 2;
-    uint64_t hash = DimensionHash(dimension);
     if (set >= kPMJ02Sets)
-        index =
-            PermutationElement(uint32_t(sampleIndex), uint32_t(samplesPerPixel), uint32_t(hash));
+        index = PermutationElement(uint32_t(sampleIndex), uint32_t(samplesPerPixel),
+                                   uint32_t(DimensionHash(dimension)));
     Point2f u = PMJ02Sample(set, index);
-    u.x += Offset(hash);
-    u.y += Offset(DimensionHash(dimension + 1));
+    u.x += PixelOffset(dimension);
+    u.y += PixelOffset(dimension + 1);
     if (u.x >= 1) u.x -= 1;
     if (u.y >= 1) u.y -= 1;
     dimension += 2;
