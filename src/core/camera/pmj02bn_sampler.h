@@ -1,6 +1,7 @@
 // PMJ02BNSampler (pbrt-v4): pixel samples and 2D samples from tables of pmj02 sequences.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <vector>
@@ -54,7 +55,8 @@ class PMJ02BNSampler {
     }
     Point2f Get2D();
     Point2f GetPixel2D() const {
-        int px = pixel.x % tileSize, py = pixel.y % tileSize;
+        // The tile side is a power of two: the low bits are the position in the tile.
+        int px = pixel.x & (tileSize - 1), py = pixel.y & (tileSize - 1);
         return (*pixelSamples)[size_t((px + py * tileSize) * samplesPerPixel + sampleIndex)];
     }
     int TileSize() const { return tileSize; }

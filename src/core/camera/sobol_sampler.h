@@ -1,6 +1,7 @@
 // SobolSampler (pbrt-v4): one global Sobol' sequence over the whole image.
 #pragma once
 
+#include <algorithm>
 #include <array>
 
 #include "base/vecmath.h"
