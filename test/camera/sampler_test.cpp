@@ -36,7 +36,13 @@ std::vector<Sampler> AllSamplers(int spp = 16) {
             ZSobolSampler(spp, Point2i(64, 48), RandomizeStrategy::Owen, 3),
             ZSobolSampler(spp, Point2i(64, 48), RandomizeStrategy::PermuteDigits, 3),
             ZSobolSampler(spp, Point2i(64, 48), RandomizeStrategy::None, 3),
-            PaddedSobolSampler(spp, RandomizeStrategy::FastOwen, 3)};
+            PaddedSobolSampler(spp, RandomizeStrategy::FastOwen, 3),
+            HaltonSampler(spp, Point2i(64, 48), RandomizeStrategy::PermuteDigits, 3),
+            HaltonSampler(spp, Point2i(64, 48), RandomizeStrategy::Owen, 3),
+            HaltonSampler(spp, Point2i(64, 48), RandomizeStrategy::None, 3),
+            SobolSampler(spp, Point2i(64, 48), RandomizeStrategy::FastOwen, 3),
+            SobolSampler(spp, Point2i(64, 48), RandomizeStrategy::None, 3),
+            PMJ02BNSampler(spp, 3)};
 }
 
 // The values of one pixel sample: pixel 2D, then 1D, 2D, 1D, ... over 20 dimensions.
@@ -282,8 +288,23 @@ TEST(Sampler, Create) {
     EXPECT_EQ(z.SamplesPerPixel(), 16);
 
     Sampler h = Sampler::Create("halton", empty, res, FileLoc(), diag);
-    EXPECT_TRUE(h.Is<ZSobolSampler>());
+    EXPECT_TRUE(h.Is<HaltonSampler>());
+    EXPECT_EQ(h.SamplesPerPixel(), 16);
+    EXPECT_TRUE(Sampler::Create("sobol", empty, res, FileLoc(), diag).Is<SobolSampler>());
+    EXPECT_TRUE(Sampler::Create("pmj02bn", empty, res, FileLoc(), diag).Is<PMJ02BNSampler>());
+    EXPECT_EQ(diag.WarningCount(), 0);
+    // halton rejects "fastowen" (pbrt-v4); sobol warns about 12 spp and keeps it; pmj02bn warns
+    // about 8 (not a power of 4) and keeps it, and refuses more than 65536.
+    ParameterDictionary fastOwen({StringParam("randomization", "fastowen")}, nullptr);
+    EXPECT_THROW(Sampler::Create("halton", fastOwen, res, FileLoc(), diag), SceneError);
+    EXPECT_TRUE(Sampler::Create("sobol", fastOwen, res, FileLoc(), diag).Is<SobolSampler>());
+    EXPECT_EQ(Sampler::Create("sobol", empty, res, FileLoc(), diag, 12).SamplesPerPixel(), 12);
     EXPECT_EQ(diag.WarningCount(), 1);
+    EXPECT_EQ(Sampler::Create("pmj02bn", empty, res, FileLoc(), diag, 8).SamplesPerPixel(), 8);
+    EXPECT_EQ(diag.WarningCount(), 2);
+    EXPECT_EQ(Sampler::Create("pmj02bn", empty, res, FileLoc(), diag, 64).SamplesPerPixel(), 64);
+    EXPECT_EQ(diag.WarningCount(), 2);
+    EXPECT_THROW(Sampler::Create("pmj02bn", empty, res, FileLoc(), diag, 65537), SceneError);
 
     ParameterDictionary params({IntParam("pixelsamples", 64), IntParam("seed", 4)}, nullptr);
     Sampler i = Sampler::Create("independent", params, res, FileLoc(), diag);

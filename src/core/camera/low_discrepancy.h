@@ -46,6 +46,10 @@ inline uint64_t EncodeMorton2(uint32_t x, uint32_t y) {
     return (LeftShift2(y) << 1) | LeftShift2(x);
 }
 
+// v / 2^32 truncated to the 24 bits a float holds: exact, below 1, and never rounded up
+// across a dyadic interval boundary.
+inline Float FixedToFloat(uint32_t v) { return Float(v >> 8) * 0x1p-24f; }
+
 inline bool IsPowerOf2(int v) { return v > 0 && !(v & (v - 1)); }
 inline int Log2Int(uint64_t v) { return v ? 63 - __builtin_clzll(v) : -1; }
 inline int RoundUpPow2(int v) {
@@ -57,6 +61,13 @@ inline int RoundUpPow2(int v) {
 // Element i of a pseudo-random permutation of [0, n) selected by seed (Kensler 2013,
 // "Correlated Multi-Jittered Sampling"; cycle-walking hash).
 int PermutationElement(uint32_t i, uint32_t n, uint32_t seed);
+
+// All 24 permutations of the four base-4 digit values.
+inline constexpr uint8_t kBase4Permutations[24][4] = {
+    {0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 1, 3}, {0, 2, 3, 1}, {0, 3, 2, 1}, {0, 3, 1, 2},
+    {1, 0, 2, 3}, {1, 0, 3, 2}, {1, 2, 0, 3}, {1, 2, 3, 0}, {1, 3, 2, 0}, {1, 3, 0, 2},
+    {2, 1, 0, 3}, {2, 1, 3, 0}, {2, 0, 1, 3}, {2, 0, 3, 1}, {2, 3, 0, 1}, {2, 3, 1, 0},
+    {3, 1, 2, 0}, {3, 1, 0, 2}, {3, 2, 1, 0}, {3, 2, 0, 1}, {3, 0, 2, 1}, {3, 0, 1, 2}};
 
 // Randomizers of a 32-bit binary fraction
 enum class RandomizeStrategy { None, PermuteDigits, FastOwen, Owen };

@@ -10,8 +10,9 @@ namespace kiln {
 
 namespace {
 
-RandomizeStrategy GetRandomization(const ParameterDictionary& params) {
-    std::string s = params.GetOneString("randomization", "fastowen");
+RandomizeStrategy GetRandomization(const ParameterDictionary& params,
+                                   const std::string& def = "fastowen") {
+    std::string s = params.GetOneString("randomization", def);
     if (s == "none") return RandomizeStrategy::None;
     if (s == "permutedigits") return RandomizeStrategy::PermuteDigits;
     if (s == "fastowen") return RandomizeStrategy::FastOwen;
@@ -25,11 +26,7 @@ RandomizeStrategy GetRandomization(const ParameterDictionary& params) {
 Sampler Sampler::Create(const std::string& name, const ParameterDictionary& params,
                         Point2i fullResolution, const FileLoc& loc, Diagnostics& diag,
                         std::optional<int> sppOverride, std::optional<int> seedOverride) {
-    std::string type = name;
-    if (type == "halton" || type == "pmj02bn" || type == "sobol") {
-        diag.Warn(loc, "\"" + name + "\" sampler is not supported; using \"zsobol\"");
-        type = "zsobol";
-    }
+    const std::string& type = name;
     // Parameters the command line overrides are still read, so they are not reported unused.
     int seed = params.GetOneInt("seed", 0);
     if (seedOverride) seed = *seedOverride;
@@ -60,6 +57,32 @@ Sampler Sampler::Create(const std::string& name, const ParameterDictionary& para
             params.Has("pixelsamples") && !sppOverride ? params.Loc("pixelsamples") : loc,
             "\"pixelsamples\" must be positive");
     if (type == "independent") return IndependentSampler(spp, seed);
+    if (type == "halton") {
+        RandomizeStrategy randomize = GetRandomization(params, "permutedigits");
+        if (randomize == RandomizeStrategy::FastOwen)
+            throw SceneError(params.Loc("randomization"),
+                             "\"fastowen\" randomization is not supported by the halton sampler",
+                             "fastowen");
+        return HaltonSampler(spp, fullResolution, randomize, seed);
+    }
+    if (type == "sobol") {
+        RandomizeStrategy randomize = GetRandomization(params);
+        if (!IsPowerOf2(spp))
+            diag.Warn(loc, "the sobol sampler performs best with a power-of-two sample count (" +
+                               std::to_string(spp) + " given)");
+        return SobolSampler(spp, fullResolution, randomize, seed);
+    }
+    if (type == "pmj02bn") {
+        if (spp > kPMJ02Samples)
+            throw SceneError(
+                params.Has("pixelsamples") && !sppOverride ? params.Loc("pixelsamples") : loc,
+                "the pmj02bn sampler supports at most " + std::to_string(kPMJ02Samples) +
+                    " samples per pixel");
+        if (!IsPowerOf2(spp) || Log2Int(uint64_t(spp)) % 2 != 0)
+            diag.Warn(loc, "the pmj02bn sampler performs best with a power-of-4 sample count (" +
+                               std::to_string(spp) + " given)");
+        return PMJ02BNSampler(spp, seed);
+    }
     if (type == "zsobol" || type == "paddedsobol") {
         RandomizeStrategy randomize = GetRandomization(params);
         if (!IsPowerOf2(spp))

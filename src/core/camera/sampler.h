@@ -9,7 +9,10 @@
 
 #include "base/closed_set.h"
 #include "core/camera/camera_sample.h"
+#include "core/camera/halton_sampler.h"
+#include "core/camera/pmj02bn_sampler.h"
 #include "core/camera/samplers.h"
+#include "core/camera/sobol_sampler.h"
 #include "core/film/filter.h"
 #include "core/parser/diagnostics.h"
 #include "core/parser/file_loc.h"
@@ -18,8 +21,8 @@ namespace kiln {
 
 class ParameterDictionary;
 
-class Sampler
-    : public ClosedSet<IndependentSampler, StratifiedSampler, ZSobolSampler, PaddedSobolSampler> {
+class Sampler : public ClosedSet<IndependentSampler, StratifiedSampler, ZSobolSampler,
+                                 PaddedSobolSampler, HaltonSampler, SobolSampler, PMJ02BNSampler> {
   public:
     using ClosedSet::ClosedSet;
     Sampler() : ClosedSet(IndependentSampler(1)) {}
@@ -48,9 +51,12 @@ class Sampler
     Sampler Clone() const { return *this; }
 
     // pbrt-v4 names "independent", "stratified", "zsobol" (default in pbrt-v4),
-    // "paddedsobol"; "halton", "pmj02bn" and "sobol" warn and use zsobol. Parameters
-    // "pixelsamples" (16), "seed" (0), stratified "xsamples"/"ysamples" (4)/"jitter" (true),
-    // Sobol' "randomization" ("fastowen"; "none", "permutedigits", "owen"). sppOverride and
+    // "paddedsobol", "halton", "sobol", "pmj02bn". Parameters "pixelsamples" (16), "seed" (0),
+    // stratified "xsamples"/"ysamples" (4)/"jitter" (true), "randomization" ("none",
+    // "permutedigits", "fastowen", "owen"; default "fastowen", for halton "permutedigits",
+    // which rejects "fastowen" as pbrt-v4 does). zsobol and paddedsobol round the sample count
+    // up to a power of two, sobol and pmj02bn warn about counts that are not a power of 2 or 4
+    // and use them as given (pbrt-v4); pmj02bn takes at most 65536. sppOverride and
     // seedOverride (command line) win over the parameters. Unknown name: SceneError.
     static Sampler Create(const std::string& name, const ParameterDictionary& params,
                           Point2i fullResolution, const FileLoc& loc, Diagnostics& diag,

@@ -58,12 +58,6 @@ ZSobolSampler::ZSobolSampler(int samplesPerPixel, Point2i fullResolution,
 }
 
 uint64_t ZSobolSampler::PermutedDigits(int firstDigit, int lastDigit) const {
-    // All 24 permutations of four digits.
-    static constexpr uint8_t permutations[24][4] = {
-        {0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 1, 3}, {0, 2, 3, 1}, {0, 3, 2, 1}, {0, 3, 1, 2},
-        {1, 0, 2, 3}, {1, 0, 3, 2}, {1, 2, 0, 3}, {1, 2, 3, 0}, {1, 3, 2, 0}, {1, 3, 0, 2},
-        {2, 1, 0, 3}, {2, 1, 3, 0}, {2, 0, 1, 3}, {2, 0, 3, 1}, {2, 3, 0, 1}, {2, 3, 1, 0},
-        {3, 1, 2, 0}, {3, 1, 0, 2}, {3, 2, 1, 0}, {3, 2, 0, 1}, {3, 0, 2, 1}, {3, 0, 1, 2}};
     // Permute each full base-4 digit by a permutation chosen from the digits above it, so the
     // permutation is consistent within every subtree of the Morton hierarchy.
     bool pow2Samples = log2SamplesPerPixel & 1;
@@ -74,7 +68,7 @@ uint64_t ZSobolSampler::PermutedDigits(int firstDigit, int lastDigit) const {
         int digit = int((mortonIndex >> digitShift) & 3);
         uint64_t higherDigits = mortonIndex >> (digitShift + 2);
         int p = int((MixBits(higherDigits ^ dimensionBits) >> 24) % 24);
-        digit = permutations[p][digit];
+        digit = kBase4Permutations[p][digit];
         sampleIndex |= uint64_t(digit) << digitShift;
     }
     return sampleIndex;
