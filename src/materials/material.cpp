@@ -213,7 +213,18 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
             Radians(angle), Radians(retardance)));
     }
     if (type == "hair") return make(HairMaterial::Create(params, arena, diag));
-    if (type == "measured" || type == "subsurface" || type == "diffusetransmission") {
+    if (type == "diffusetransmission") {
+        Float scale = params.GetOneFloat("scale", 1);
+        if (!std::isfinite(scale) || scale < 0)
+            throw SceneError(params.Loc("scale"), "\"scale\" must be finite and not negative",
+                             "scale");
+        return make(arena.New<DiffuseTransmissionMaterial>(
+            params.GetSpectrumTexture("reflectance", Constant(0.25f), SpectrumType::Albedo, arena),
+            params.GetSpectrumTexture("transmittance", Constant(0.25f), SpectrumType::Albedo,
+                                      arena),
+            scale));
+    }
+    if (type == "measured" || type == "subsurface") {
         diag.Warn(loc, "\"" + type + "\" material is not supported; using diffuse 0.5");
         return make(arena.New<DiffuseMaterial>(arena.New<SpectrumConstantTexture>(Constant(0.5f))));
     }

@@ -18,6 +18,7 @@
 namespace kiln {
 
 class DiffuseMaterial;
+class DiffuseTransmissionMaterial;
 class ConductorMaterial;
 class DielectricMaterial;
 class ThinDielectricMaterial;
@@ -35,7 +36,8 @@ class Material
     : public ClosedSet<const DiffuseMaterial*, const ConductorMaterial*, const DielectricMaterial*,
                        const ThinDielectricMaterial*, const CoatedDiffuseMaterial*,
                        const CoatedConductorMaterial*, const MixMaterial*, const InterfaceMaterial*,
-                       const PolarizingFilterMaterial*, const HairMaterial*> {
+                       const PolarizingFilterMaterial*, const HairMaterial*,
+                       const DiffuseTransmissionMaterial*> {
   public:
     using ClosedSet::ClosedSet;
 
@@ -71,13 +73,13 @@ class Material
     bool IsMix() const { return Is<MixMaterial>(); }
 
     // Creates a material of pbrt-v4 type `type` ("diffuse", "conductor", "dielectric",
-    // "thindielectric", "coateddiffuse", "coatedconductor", "mix", "interface"; "" and "none"
-    // give interface), and kiln's polarising filters "polarizer" ("float angle", degrees) and
-    // "retarder" ("float angle", "float retardance" in degrees, default 90: a quarter-wave
-    // plate), see bxdfs/polarizing_filter_bxdf.h.
-    // Other pbrt-v4 types are replaced by diffuse with a warning at loc; unknown types throw
-    // SceneError. namedMaterials resolves the components of "mix".
-    // layeredMIS: the MIS weights of the coated materials' layered walk (LayeredMIS)
+    // "thindielectric", "coateddiffuse", "coatedconductor", "mix", "interface", "hair",
+    // "diffusetransmission"; "" and "none" give interface), and kiln's polarising filters
+    // "polarizer" ("float angle", degrees) and "retarder" ("float angle", "float retardance" in
+    // degrees, default 90: a quarter-wave plate), see bxdfs/polarizing_filter_bxdf.h. Other pbrt-v4
+    // types are replaced by diffuse with a warning at loc; unknown types throw SceneError.
+    // namedMaterials resolves the components of "mix". layeredMIS: the MIS weights of the coated
+    // materials' layered walk (LayeredMIS)
     static Material Create(const std::string& type, const TextureParameterDictionary& params,
                            const std::map<std::string, Material>& namedMaterials,
                            const FileLoc& loc, ObjectArena& arena, Diagnostics& diag,

@@ -74,6 +74,14 @@ DiffuseBxDF DiffuseMaterial::GetBxDF(const MaterialEvalContext& ctx,
     return DiffuseBxDF(Clamp(reflectance.Evaluate(ctx, lambda), Float(0), Float(1)));
 }
 
+// DiffuseTransmissionMaterial Method Definitions
+DiffuseTransmissionBxDF DiffuseTransmissionMaterial::GetBxDF(
+    const MaterialEvalContext& ctx, const SampledWavelengths& lambda) const {
+    return DiffuseTransmissionBxDF(
+        Clamp(scale * reflectance.Evaluate(ctx, lambda), Float(0), Float(1)),
+        Clamp(scale * transmittance.Evaluate(ctx, lambda), Float(0), Float(1)));
+}
+
 // ConductorMaterial Method Definitions
 ConductorBxDF ConductorMaterial::GetBxDF(const MaterialEvalContext& ctx,
                                          const SampledWavelengths& lambda) const {

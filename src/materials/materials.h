@@ -49,6 +49,24 @@ class DiffuseMaterial : public MaterialBase {
     SpectrumTexture reflectance;
 };
 
+// DiffuseTransmissionMaterial Definition
+// Lambertian reflection and transmission (pbrt-v4's "diffusetransmission"): reflectance and
+// transmittance times scale, each clamped to [0, 1].
+class DiffuseTransmissionMaterial : public MaterialBase {
+  public:
+    DiffuseTransmissionMaterial(SpectrumTexture reflectance, SpectrumTexture transmittance,
+                                Float scale)
+        : reflectance(reflectance), transmittance(transmittance), scale(scale) {}
+    DiffuseTransmissionBxDF GetBxDF(const MaterialEvalContext& ctx,
+                                    const SampledWavelengths& lambda) const;
+    const SpectrumTexture& Reflectance() const { return reflectance; }
+    const SpectrumTexture& Transmittance() const { return transmittance; }
+
+  private:
+    SpectrumTexture reflectance, transmittance;
+    Float scale;
+};
+
 // ConductorMaterial Definition
 // Either eta and k (complex IOR relative to the outside) or, pbrt-v4's alternative, an albedo
 // "reflectance" r giving eta = 1, k = 2 sqrt(r) / sqrt(1 - r).
@@ -224,6 +242,8 @@ void ForEachTexture(const Material& material, F&& f) {
     };
     if (const auto* m = material.GetIf<DiffuseMaterial>()) {
         f(m->Reflectance());
+    } else if (const auto* m = material.GetIf<DiffuseTransmissionMaterial>()) {
+        f(m->Reflectance()), f(m->Transmittance());
     } else if (const auto* m = material.GetIf<ConductorMaterial>()) {
         opt(m->Eta()), opt(m->K()), opt(m->Reflectance());
         f(m->URoughness()), f(m->VRoughness());

@@ -23,7 +23,8 @@ const MaterialAlbedo* MaterialAlbedo::Create(const Material& material, Emissivit
         }
         return arena.New<MaterialAlbedo>(std::move(m));
     }
-    if (material.Is<DiffuseMaterial>()) return arena.New<MaterialAlbedo>(Diffuse{});
+    if (material.Is<DiffuseMaterial>() || material.Is<DiffuseTransmissionMaterial>())
+        return arena.New<MaterialAlbedo>(Diffuse{});
     if (const ConductorMaterial* c = material.GetIf<ConductorMaterial>())
         return arena.New<MaterialAlbedo>(ConductorEmissivity(*c, tables));
     if (const CoatedDiffuseMaterial* c = material.GetIf<CoatedDiffuseMaterial>())
@@ -55,8 +56,11 @@ SampledSpectrum MaterialAlbedo::EvaluateLocal(const Material* material, const BS
     return kind.Dispatch([&](const auto& k) -> SampledSpectrum {
         using K = std::decay_t<decltype(k)>;
         if constexpr (std::is_same_v<K, Diffuse>) {
-            const DiffuseBxDF* d = bxdf.GetIf<DiffuseBxDF>();
-            return d ? d->Reflectance() : SampledSpectrum(1.f);
+            if (const DiffuseBxDF* d = bxdf.GetIf<DiffuseBxDF>()) return d->Reflectance();
+            // A diffusing sheet: what it reflects and what it lets through, from either side
+            if (const DiffuseTransmissionBxDF* d = bxdf.GetIf<DiffuseTransmissionBxDF>())
+                return d->Reflectance() + d->Transmittance();
+            return SampledSpectrum(1.f);
         } else if constexpr (std::is_same_v<K, NonAbsorbing>) {
             return SampledSpectrum(1.f);
         } else if constexpr (std::is_same_v<K, ConductorEmissivity>) {

@@ -85,6 +85,26 @@ TEST(SamplingChi2, Diffuse) {
     EXPECT_TRUE(r2.passed) << r2.message;
 }
 
+TEST(SamplingChi2, DiffuseTransmission) {
+    SampledSpectrum R(0.2f), T(0.6f);
+    R[1] = 0.7f;  // reflection picked by R's largest value, not its first
+    BxDF bxdf = DiffuseTransmissionBxDF(R, T);
+    for (Float cosTheta : {0.6f, -0.3f}) {
+        auto r = TestBxDF(bxdf, Wo(cosTheta), 3);
+        EXPECT_TRUE(r.passed) << r.message;
+    }
+    // Directional albedo R + T from either side
+    std::vector<Float> uc(4096);
+    std::vector<Point2f> u2(4096);
+    for (size_t i = 0; i < uc.size(); ++i)
+        uc[i] = (i + 0.5f) / uc.size(),
+        u2[i] = Point2f(((i * 37) % 64 + 0.5f) / 64, ((i * 11) % 64 + 0.5f) / 64);
+    for (Float cosTheta : {0.8f, -0.5f}) {
+        SampledSpectrum rho = bxdf.rho(Wo(cosTheta), uc, u2);
+        for (int i = 0; i < NSpectrumSamples; ++i) EXPECT_NEAR(rho[i], R[i] + T[i], 2e-3f);
+    }
+}
+
 TEST(SamplingChi2, RoughConductorIsotropic) {
     int seed = 10;
     for (Float alpha : {0.1f, 0.3f, 0.8f})

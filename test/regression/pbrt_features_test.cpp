@@ -66,7 +66,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Feature{"displacement", 0}, Feature{"coated", 0},
                       // references rendered by pbrt-v4 (README)
                       Feature{"tga", 0, 4096}, Feature{"projective_light", 0, 4096},
-                      Feature{"invisible_light", 0, 4096}),
+                      Feature{"invisible_light", 0, 4096}, Feature{"portal", 1, 4096},
+                      Feature{"portal_map", 0, 4096}, Feature{"diffusetransmission", 0, 4096}),
     [](const ::testing::TestParamInfo<Feature>& info) { return std::string(info.param.scene); });
 
 }  // namespace

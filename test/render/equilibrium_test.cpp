@@ -101,6 +101,10 @@ const Case kCases[] = {
     {"thin glass sheet", "\"thindielectric\" \"float eta\" 1.5"},
     {"mix thin glass/gold",
      "\"mix\" \"string materials\" [\"thin\" \"gold\"] \"float amount\" 0.5"},
+    // A diffusing sheet emits 1 - R - T from each side
+    {"diffusetransmission, textured",
+     "\"diffusetransmission\" \"texture reflectance\" \"checks\" \"rgb transmittance\" "
+     "[0.05 0.1 0.3]"},
 };
 
 // Polarised transport: the cavity must also be unpolarised. Reflection from metals polarises

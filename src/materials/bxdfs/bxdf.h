@@ -26,6 +26,7 @@
 #include "materials/bxdfs/conductor_bxdf.h"
 #include "materials/bxdfs/dielectric_bxdf.h"
 #include "materials/bxdfs/diffuse_bxdf.h"
+#include "materials/bxdfs/diffuse_transmission_bxdf.h"
 #include "materials/bxdfs/hair_bxdf.h"
 #include "materials/bxdfs/layered_bxdf.h"
 #include "materials/bxdfs/polarizing_filter_bxdf.h"
@@ -52,8 +53,9 @@ concept PolarizationDefinedBxDF = PolarizingBxDF<B>
 != DepolarizingBxDF<B>;
 
 // The BxDFs, held by value
-using BxDFSet = ClosedSet<DiffuseBxDF, ConductorBxDF, DielectricBxDF, ThinDielectricBxDF,
-                          CoatedDiffuseBxDF, CoatedConductorBxDF, PolarizingFilterBxDF, HairBxDF>;
+using BxDFSet =
+    ClosedSet<DiffuseBxDF, ConductorBxDF, DielectricBxDF, ThinDielectricBxDF, CoatedDiffuseBxDF,
+              CoatedConductorBxDF, PolarizingFilterBxDF, HairBxDF, DiffuseTransmissionBxDF>;
 
 class BxDF : public BxDFSet {
   public:
