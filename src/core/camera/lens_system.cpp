@@ -87,6 +87,10 @@ Float LensSystem::FrontZ() const {
 }
 
 Float LensSystem::TraceFromFilm(const Ray& rCamera, Ray* rOut) const {
+    return Trace(rCamera, rOut, false);
+}
+
+Float LensSystem::Trace(const Ray& rCamera, Ray* rOut, bool maskSupport) const {
     Float elementZ = 0, weight = 1;
     Ray r = Mirrored(rCamera);
     for (int i = int(interfaces.size()) - 1; i >= 0; --i) {
@@ -102,7 +106,13 @@ Float LensSystem::TraceFromFilm(const Ray& rCamera, Ray* rOut) const {
                                               &t, &n))
             return 0;
         Point3f pHit = r(t);
-        if (isStop && aperture) {
+        if (isStop && aperture && maskSupport) {
+            // The disk around the mask's square, half a texel wider (bilinear filtering)
+            Float reach =
+                e.apertureRadius * std::sqrt(2.f) *
+                (1 + 1 / Float(std::min(aperture.Resolution().x, aperture.Resolution().y)));
+            if (Sqr(pHit.x) + Sqr(pHit.y) > Sqr(reach)) return 0;
+        } else if (isStop && aperture) {
             Point2f uv((pHit.x / e.apertureRadius + 1) / 2, (pHit.y / e.apertureRadius + 1) / 2);
             weight = aperture.BilerpChannel(uv, 0, WrapMode::Black);
             if (!(weight > 0)) return 0;
@@ -190,7 +200,7 @@ PupilBounds LensSystem::BoundExitPupil(Float x0, Float x1, int nSamples) const {
         Point3f pRear(lo.x + side * RadicalInverse2(uint32_t(i)),
                       lo.y + side * RadicalInverse3(uint32_t(i)), RearZ());
         Point2f p(pRear.x, pRear.y);
-        if (!pupil.Inside(p) && TraceFromFilm(Ray(pFilm, pRear - pFilm), nullptr) > 0) pupil.Add(p);
+        if (!pupil.Inside(p) && Trace(Ray(pFilm, pRear - pFilm), nullptr, true) > 0) pupil.Add(p);
     }
     if (pupil.IsDegenerate()) return pupil;
     Float expand = 2 * std::sqrt(2.f) * side / std::sqrt(Float(nSamples));
