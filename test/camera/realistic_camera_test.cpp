@@ -383,6 +383,50 @@ TEST(RealisticCamera, CreationErrorsAndWarnings) {
     std::remove(file.c_str());
 }
 
+// An aperture image file (resolved like other file parameters): its RGB mean is the mask. A
+// mask open only in its left half (image x < w/2) passes the rays through the stop's -x half,
+// and the camera's mean weight equals the circular stop's (the mask is normalised to it).
+TEST(RealisticCamera, ApertureImageFile) {
+    std::string lensFile = WriteTempFile("s2.dat", kSinglet);
+    std::string imageFile = WriteTempFile("half.exr", "");
+    Image half(PixelFormat::Float, Point2i(16, 16), {"R", "G", "B"});
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 8; ++x)
+            for (int c = 0; c < 3; ++c) half.SetChannel({x, y}, c, 1);
+    half.Write(imageFile);
+    SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.5f);
+    double mean[2];
+    for (int masked = 0; masked < 2; ++masked) {
+        ObjectArena arena;
+        Diagnostics diag(nullptr);
+        ParsedParameterVector params = {Param("string", "lensfile", {}, {lensFile}),
+                                        Param("float", "aperturediameter", {6})};
+        if (masked) params.push_back(Param("string", "aperture", {}, {imageFile}));
+        Camera cam = MakeRealistic(arena, diag, params);
+        const LensSystem& lens = cam.GetIf<RealisticCamera>()->Lens();
+        double sum = 0;
+        const int n = 128;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                CameraSample s;
+                s.pFilm = Point2f(12, 8);
+                s.pLens = Point2f((i + 0.5f) / n, (j + 0.5f) / n);
+                std::optional<CameraRay> r = cam.GenerateRay(s, lambda);
+                if (!r) continue;
+                sum += r->weight[0];
+                // The singlet's stop is its front interface, where the ray leaves the lens:
+                // on the mask's open side, or within half a texel of it (bilinear filtering:
+                // 3 mm / 16); the stop reaches to +3 mm
+                if (masked) EXPECT_LT(r->ray.o.x, 0.0002f);
+            }
+        mean[masked] = sum / (n * n);
+        EXPECT_GT(lens.FrontZ(), 0);
+    }
+    EXPECT_NEAR(mean[1], mean[0], 0.02 * mean[0]);
+    std::remove(lensFile.c_str());
+    std::remove(imageFile.c_str());
+}
+
 // Each built-in stop shape passes as much light as the circular stop it replaces (pbrt-v4's
 // normalisation), and the shapes differ where they should.
 TEST(ApertureMask, BuiltinShapesAreNormalisedToTheCircle) {
