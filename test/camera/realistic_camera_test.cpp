@@ -78,6 +78,10 @@ TEST(LensFile, ParsesRowsInMetresAndSetsTheStop) {
     EXPECT_NE(error.find("line 2"), std::string::npos) << error;
     EXPECT_FALSE(ParseLensFile("# nothing\n", "c.dat", 1, nullptr, &error));
     EXPECT_FALSE(ParseLensFile("10 1 1.5 -3", "d.dat", 1, nullptr, &error));
+    std::string many;
+    for (size_t i = 0; i <= kMaxLensInterfaces; ++i) many += "0 1 1 10\n";
+    EXPECT_FALSE(ParseLensFile(many, "e.dat", 1, nullptr, &error));
+    EXPECT_NE(error.find("more than"), std::string::npos) << error;
 }
 
 TEST(LensSystem, SingletMatchesTheLensmakersEquation) {

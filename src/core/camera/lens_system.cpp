@@ -242,6 +242,10 @@ std::optional<std::vector<LensInterface>> ParseLensFile(const std::string& text,
             "lens file needs four values per interface (radius, thickness, eta, "
             "aperture diameter); read " +
             std::to_string(v.size()));
+    // Every camera ray and exit pupil sample is traced through every interface
+    if (v.size() / 4 > kMaxLensInterfaces)
+        return fail("more than " + std::to_string(kMaxLensInterfaces) +
+                    " interfaces (a real lens has a few dozen)");
     if (clamped) *clamped = false;
     std::vector<LensInterface> interfaces;
     for (size_t i = 0; i < v.size(); i += 4) {

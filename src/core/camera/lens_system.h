@@ -11,7 +11,11 @@
 // film), 0 meaning air (1); apertureRadius bounds it radially.
 #pragma once
 
+#include <algorithm>
+#include <array>
+#include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "base/vecmath.h"
@@ -107,12 +111,15 @@ class LensSystem {
     Image aperture;  // one channel, rows along y (lens space), empty for a circular stop
 };
 
+// The most interfaces a lens file may list (pbrt-v4 sets no limit).
+constexpr size_t kMaxLensInterfaces = 1024;
+
 // Reads a pbrt-v4 lens file: numbers separated by white space (commas allowed), '#' comments
 // to the end of the line, four per interface (curvature radius, thickness, eta, aperture
-// diameter; lengths in mm), front to rear. Returns interfaces in metres with the aperture
-// *radius*; the stop's diameter is set to stopDiameterMm (mm) unless that exceeds the file's
-// (then *clamped is set and the file's is kept, as pbrt-v4). On failure returns nullopt with
-// a message (line number for a bad token) in *error.
+// diameter; lengths in mm), front to rear, at most kMaxLensInterfaces. Returns interfaces in metres
+// with the aperture *radius*; the stop's diameter is set to stopDiameterMm (mm) unless that exceeds
+// the file's (then *clamped is set and the file's is kept, as pbrt-v4). On failure returns nullopt
+// with a message (line number for a bad token) in *error.
 std::optional<std::vector<LensInterface>> ReadLensFile(const std::string& filename,
                                                        Float stopDiameterMm, bool* clamped,
                                                        std::string* error);
