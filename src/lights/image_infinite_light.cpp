@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "lights/sphere_mappings.h"
+#include "base/sphere_mappings.h"
 #include "spectral/color.h"
 
 namespace kiln {

@@ -5,13 +5,13 @@
 #include <stdexcept>
 #include <vector>
 
+#include "base/sphere_mappings.h"
 #include "core/geometry/shape.h"
 #include "core/image/image.h"
 #include "core/parser/diagnostics.h"
 #include "core/parser/parameter_dictionary.h"
 #include "core/parser/suggestions.h"
 #include "lights/light.h"
-#include "lights/sphere_mappings.h"
 #include "spectral/color.h"
 
 namespace kiln {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "lights/sphere_mappings.h"
+#include "base/sphere_mappings.h"
 #include "spectral/color.h"
 
 namespace kiln {

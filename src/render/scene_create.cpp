@@ -116,9 +116,9 @@ void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const RenderOptio
         desc.filmColorSpace, options.stokes, options.genericFootprints};
     scene.job = std::make_unique<RenderJob>(arena.Budget());
     CreateJobFilm(scene, *scene.job, options, diag);
-    scene.camera =
-        Camera::Create(desc.camera.name, desc.camera.parameters, desc.camera.cameraTransform,
-                       scene.job->film->FullResolution(), desc.camera.loc, arena, diag);
+    scene.camera = Camera::Create(desc.camera.name, desc.camera.parameters,
+                                  desc.camera.cameraTransform, scene.job->film->FullResolution(),
+                                  scene.job->film->Diagonal(), desc.camera.loc, arena, diag);
     if (desc.camera.parameters.Has("polarizer")) {
         Float degrees = desc.camera.parameters.GetOneFloat("polarizer", 0);
         if (!std::isfinite(degrees))

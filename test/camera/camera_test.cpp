@@ -32,8 +32,8 @@ struct Fixture {
     Camera Make(const std::string& name, ParsedParameterVector params, Point2i res,
                 const Transform& worldFromCamera = Transform()) {
         ParameterDictionary dict(std::move(params), nullptr);
-        return Camera::Create(name, dict, CameraTransform(worldFromCamera), res, FileLoc(), arena,
-                              diag);
+        return Camera::Create(name, dict, CameraTransform(worldFromCamera), res, 0.035f, FileLoc(),
+                              arena, diag);
     }
     Ray RayAt(const Camera& c, Point2f pFilm, Point2f pLens = Point2f(0.5f, 0.5f)) {
         CameraSample s;
@@ -216,14 +216,14 @@ TEST(Camera, Create) {
     EXPECT_EQ(p.ShutterOpen(), 0);
     EXPECT_EQ(p.ShutterClose(), 1);
     Camera s = fx.Make("spherical", {}, Point2i(8, 8));
-    EXPECT_TRUE(s.Is<PerspectiveCamera>());
-    EXPECT_EQ(fx.diag.WarningCount(), 1);
+    EXPECT_TRUE(s.Is<SphericalCamera>());
+    EXPECT_EQ(fx.diag.WarningCount(), 0);
     Camera sw = fx.Make("perspective",
                         {FloatParam("shutteropen", {0.8f}), FloatParam("shutterclose", {0.2f})},
                         Point2i(8, 8));
     EXPECT_FLOAT_EQ(sw.ShutterOpen(), 0.2f);
     EXPECT_FLOAT_EQ(sw.ShutterClose(), 0.8f);
-    EXPECT_EQ(fx.diag.WarningCount(), 2);
+    EXPECT_EQ(fx.diag.WarningCount(), 1);
     EXPECT_FLOAT_EQ(fx.RayAt(sw, Point2f(4, 4)).time, 0.5f);
     EXPECT_THROW(fx.Make("fisheye", {}, Point2i(8, 8)), SceneError);
     EXPECT_THROW(fx.Make("perspective", {FloatParam("fov", {180})}, Point2i(8, 8)), SceneError);

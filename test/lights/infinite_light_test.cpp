@@ -1,4 +1,4 @@
-// Sphere mappings and infinite lights: equal-area and equirectangular mappings, uniform
+// Infinite lights: uniform
 // environment radiance, and chi-square tests of the image light's direction sampling for both
 // mappings (full and compensated distributions).
 #include <gtest/gtest.h>
@@ -7,8 +7,8 @@
 #include "base/sampling.h"
 #include "core/parser/diagnostics.h"
 #include "light_test_util.h"
+#include "base/sphere_mappings.h"
 #include "lights/light.h"
-#include "lights/sphere_mappings.h"
 #include "spectral/color.h"
 
 using namespace kiln;
@@ -49,36 +49,6 @@ void CheckImageSampling(const Image& image, bool compensated) {
 }
 
 }  // namespace
-
-TEST(SphereMappings, EqualAreaRoundTripAndArea) {
-    RNG rng(3);
-    for (int i = 0; i < 10000; ++i) {
-        Point2f p(rng.UniformFloat(), rng.UniformFloat());
-        Vector3f w = EqualAreaSquareToSphere(p);
-        EXPECT_NEAR(Length(w), 1, 1e-5);
-        Point2f q = EqualAreaSphereToSquare(w);
-        EXPECT_NEAR(p.x, q.x, 1e-4);
-        EXPECT_NEAR(p.y, q.y, 1e-4);
-    }
-    // Equal area: the inner diamond (half the square) is the upper hemisphere
-    int upper = 0;
-    for (int i = 0; i < 10000; ++i)
-        upper += EqualAreaSquareToSphere(Point2f(rng.UniformFloat(), rng.UniformFloat())).z > 0;
-    EXPECT_NEAR(upper, 5000, 4 * 50);
-}
-
-TEST(SphereMappings, EquirectRoundTripAndPole) {
-    RNG rng(5);
-    for (int i = 0; i < 10000; ++i) {
-        Point2f p(rng.UniformFloat(), 0.01f + 0.98f * rng.UniformFloat());
-        Point2f q = EquirectSphereToSquare(EquirectSquareToSphere(p));
-        EXPECT_NEAR(p.x, q.x, 1e-4);
-        EXPECT_NEAR(p.y, q.y, 1e-4);
-    }
-    EXPECT_NEAR(EquirectSquareToSphere(Point2f(0.3f, 0)).z, 1, 1e-6);  // top row: +z
-    Vector3f y = EquirectSquareToSphere(Point2f(0.25f, 0.5f));         // phi = pi/2: +y
-    EXPECT_NEAR(y.y, 1, 1e-6);
-}
 
 TEST(UniformInfiniteLight, LeIsLAndSampling) {
     UniformInfiniteLight light(Transform(), Spectrum(ConstantSpectrum(3)), 2);

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/camera/aperture_mask.h"
 #include "core/parser/parameter_dictionary.h"
 #include "core/parser/suggestions.h"
 
@@ -44,17 +45,125 @@ Bounds2f ScreenWindow(const ParameterDictionary& params, Point2i fullResolution)
     return screen;
 }
 
+// "spherical": the mapping; the projective parameters pbrt-v4 reads and ignores
+Camera CreateSpherical(const ParameterDictionary& params, const CameraTransform& cameraTransform,
+                       Float shutterOpen, Float shutterClose, Point2i fullResolution,
+                       const FileLoc& loc, ObjectArena& arena, Diagnostics& diag) {
+    for (const char* ignored : {"lensradius", "focaldistance", "frameaspectratio"})
+        (void)params.GetOneFloat(ignored, 0);
+    (void)params.GetFloatArray("screenwindow");
+    std::string m = params.GetOneString("mapping", "equalarea");
+    SphericalCamera::Mapping mapping;
+    if (m == "equalarea")
+        mapping = SphericalCamera::Mapping::EqualArea;
+    else if (m == "equirectangular")
+        mapping = SphericalCamera::Mapping::Equirectangular;
+    else
+        throw SceneError(
+            params.Loc("mapping"),
+            "unknown spherical camera mapping \"" + m +
+                "\" (expected \"equalarea\" or \"equirectangular\")" +
+                DidYouMean(m,
+                           std::initializer_list<std::string_view>{"equalarea", "equirectangular"}),
+            m);
+    if (mapping == SphericalCamera::Mapping::EqualArea && fullResolution.x != fullResolution.y)
+        diag.Warn(loc, "the \"equalarea\" mapping on a non-square film (" +
+                           std::to_string(fullResolution.x) + "x" +
+                           std::to_string(fullResolution.y) +
+                           ") is stretched to the film: pixels no longer span equal solid angles "
+                           "(as pbrt-v4)");
+    return arena.New<SphericalCamera>(cameraTransform, shutterOpen, shutterClose, fullResolution,
+                                      mapping);
+}
+
+// The realistic camera's stop mask: a built-in shape or an image file; empty if none
+Image CreateApertureMask(const ParameterDictionary& params) {
+    std::string name = params.GetOneString("aperture", "");
+    if (name.empty()) return Image();
+    std::optional<Image> mask = BuiltinApertureMask(name);
+    if (!mask) {
+        std::string filename = params.GetOneFilename("aperture", ""), error;
+        Image image;
+        try {
+            image = Image::Read(filename);
+        } catch (const std::exception& e) {
+            throw SceneError(params.Loc("aperture"),
+                             std::string(e.what()) +
+                                 " (\"aperture\" names \"gaussian\", \"square\", "
+                                 "\"pentagon\", \"star\" or an image file)",
+                             name);
+        }
+        mask = ApertureMaskFromImage(image, &error);
+        if (!mask) throw SceneError(params.Loc("aperture"), error, name);
+    }
+    if (!NormalizeApertureMask(&*mask))
+        throw SceneError(params.Loc("aperture"), "aperture image must have a positive, finite mean",
+                         name);
+    return *mask;
+}
+
+// "realistic": the lens file, stop diameter, focus and aperture mask
+Camera CreateRealistic(const ParameterDictionary& params, const CameraTransform& cameraTransform,
+                       Float shutterOpen, Float shutterClose, Point2i fullResolution,
+                       Float filmDiagonal, const FileLoc& loc, ObjectArena& arena,
+                       Diagnostics& diag) {
+    std::string lensFile = params.GetOneFilename("lensfile", "");
+    Float apertureDiameter = params.GetOneFloat("aperturediameter", 1);
+    Float focusDistance = params.GetOneFloat("focusdistance", 10);
+    if (lensFile.empty())
+        throw SceneError(loc, "the realistic camera needs a \"lensfile\"", "realistic");
+    if (!(apertureDiameter > 0 && std::isfinite(apertureDiameter)))
+        throw SceneError(params.Loc("aperturediameter"),
+                         "\"aperturediameter\" must be positive and finite (mm)",
+                         "aperturediameter");
+    if (!(focusDistance > 0 && std::isfinite(focusDistance)))
+        throw SceneError(params.Loc("focusdistance"),
+                         "\"focusdistance\" must be positive and finite", "focusdistance");
+    if (!(filmDiagonal > 0 && std::isfinite(filmDiagonal)))
+        throw SceneError(loc, "the realistic camera needs a positive film \"diagonal\"",
+                         "realistic");
+    bool clamped = false;
+    std::string error;
+    std::optional<std::vector<LensInterface>> interfaces =
+        ReadLensFile(lensFile, apertureDiameter, &clamped, &error);
+    if (!interfaces) throw SceneError(params.Loc("lensfile"), error, lensFile);
+    if (clamped)
+        diag.Warn(params.Loc("aperturediameter"),
+                  "\"aperturediameter\" " + std::to_string(apertureDiameter) +
+                      " mm is larger than the lens's stop; using the stop's diameter");
+    LensSystem lens(std::move(*interfaces), CreateApertureMask(params));
+    if (!(lens.FrontZ() < kMaxRenderCoordinate / 2))
+        throw SceneError(params.Loc("lensfile"),
+                         "the lens would start rays beyond +-1e17 (render space), the range "
+                         "kiln traces rays in",
+                         lensFile);
+    // Focus as pbrt-v4: paraxial rays at a thousandth of the film diagonal
+    Float paraxialHeight = 0.001f * filmDiagonal;
+    if (!lens.ThickLensApproximation(paraxialHeight))
+        throw SceneError(params.Loc("lensfile"),
+                         "a paraxial ray does not pass the lens system (is the stop extremely "
+                         "small?)",
+                         lensFile);
+    std::optional<Float> rear = lens.FocusedRearThickness(focusDistance, paraxialHeight);
+    if (!rear)
+        throw SceneError(params.Has("focusdistance") ? params.Loc("focusdistance") : loc,
+                         "\"focusdistance\" " + std::to_string(focusDistance) +
+                             " is too short for this lens to focus",
+                         "focusdistance");
+    lens.SetRearThickness(*rear);
+    return arena.New<RealisticCamera>(cameraTransform, shutterOpen, shutterClose, fullResolution,
+                                      filmDiagonal, std::move(lens));
+}
+
 }  // namespace
 
 Camera Camera::Create(const std::string& name, const ParameterDictionary& params,
                       const CameraTransform& cameraTransform, Point2i fullResolution,
-                      const FileLoc& loc, ObjectArena& arena, Diagnostics& diag) {
-    std::string type = name;
-    if (type == "realistic" || type == "spherical") {
-        diag.Warn(loc, "\"" + name + "\" camera is not supported; using \"perspective\"");
-        type = "perspective";
-    }
-    if (type != "perspective" && type != "orthographic")
+                      Float filmDiagonal, const FileLoc& loc, ObjectArena& arena,
+                      Diagnostics& diag) {
+    const std::string& type = name;
+    if (type != "perspective" && type != "orthographic" && type != "realistic" &&
+        type != "spherical")
         throw SceneError(
             loc,
             "unknown camera type \"" + name + "\"" +
@@ -73,6 +182,13 @@ Camera Camera::Create(const std::string& name, const ParameterDictionary& params
                            std::to_string(shutterOpen) + ". Swapping them.");
         std::swap(shutterOpen, shutterClose);
     }
+    if (type == "spherical")
+        return CreateSpherical(params, cameraTransform, shutterOpen, shutterClose, fullResolution,
+                               loc, arena, diag);
+    if (type == "realistic")
+        return CreateRealistic(params, cameraTransform, shutterOpen, shutterClose, fullResolution,
+                               filmDiagonal, loc, arena, diag);
+
     Float lensRadius = params.GetOneFloat("lensradius", 0.f);
     Float focalDistance = params.GetOneFloat("focaldistance", 1e6f);
     if (!(lensRadius >= 0 && std::isfinite(lensRadius)))

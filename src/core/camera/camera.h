@@ -10,6 +10,8 @@
 #include "core/camera/camera_sample.h"
 #include "core/camera/camera_transform.h"
 #include "core/camera/projective_cameras.h"
+#include "core/camera/realistic_camera.h"
+#include "core/camera/spherical_camera.h"
 #include "core/parser/diagnostics.h"
 #include "core/parser/file_loc.h"
 
@@ -17,7 +19,8 @@ namespace kiln {
 
 class ParameterDictionary;
 
-class Camera : public ClosedSet<const PerspectiveCamera*, const OrthographicCamera*> {
+class Camera : public ClosedSet<const PerspectiveCamera*, const OrthographicCamera*,
+                                const SphericalCamera*, const RealisticCamera*> {
   public:
     using ClosedSet::ClosedSet;
     // A render-space ray with unit direction for the film position, lens sample and time of
@@ -43,14 +46,19 @@ class Camera : public ClosedSet<const PerspectiveCamera*, const OrthographicCame
         Dispatch([&](auto c) { c->Approximate_dp_dxy(p, n, time, samplesPerPixel, dpdx, dpdy); });
     }
 
-    // "perspective" (fov 90, lensradius 0, focaldistance 1e6, frameaspectratio, screenwindow)
-    // or "orthographic" (lensradius, focaldistance, frameaspectratio, screenwindow); common
-    // "shutteropen" 0 and "shutterclose" 1. "realistic" and "spherical" are unsupported: a
-    // warning, then a perspective camera. Other names: SceneError. fullResolution is the
-    // film's full (uncropped) resolution in pixels.
+    // "perspective" (fov 90, lensradius 0, focaldistance 1e6, frameaspectratio, screenwindow),
+    // "orthographic" (lensradius, focaldistance, frameaspectratio, screenwindow), "spherical"
+    // (mapping "equalarea" or "equirectangular"; lensradius, focaldistance, frameaspectratio
+    // and screenwindow are read and ignored, as pbrt-v4) or "realistic" (lensfile, resolved
+    // against the scene file's directory; aperturediameter 1 mm; focusdistance 10 m;
+    // aperture: "gaussian", "square", "pentagon", "star" or an image file); common
+    // "shutteropen" 0 and "shutterclose" 1. Other names and bad values: SceneError.
+    // fullResolution is the film's full (uncropped) resolution in pixels, filmDiagonal the
+    // film's "diagonal" in metres (the realistic camera's film size).
     static Camera Create(const std::string& name, const ParameterDictionary& params,
                          const CameraTransform& cameraTransform, Point2i fullResolution,
-                         const FileLoc& loc, ObjectArena& arena, Diagnostics& diag);
+                         Float filmDiagonal, const FileLoc& loc, ObjectArena& arena,
+                         Diagnostics& diag);
 };
 
 }  // namespace kiln

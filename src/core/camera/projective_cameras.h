@@ -33,12 +33,68 @@ class CameraBase {
     CameraBase(const CameraTransform& cameraTransform, Float shutterOpen, Float shutterClose)
         : cameraTransform(cameraTransform), shutterOpen(shutterOpen), shutterClose(shutterClose) {}
 
+    // pbrt-v4's FindMinimumDifferentials for cameras whose differentials have no closed form:
+    // at 512 film points along the diagonal (lens sample at the centre, time 1/2), finite
+    // differences of camera.GenerateRay over a twentieth of a pixel in x and in y (the other
+    // direction when that ray fails), per pixel; the shortest camera-space origin and
+    // direction differentials found (directions as offsets in the frame of each ray).
+    template <typename C>
+    void FindMinimumDifferentials(const C& camera, Point2i fullResolution);
+
     CameraTransform cameraTransform;
     Float shutterOpen = 0, shutterClose = 1;
     // Camera-space minimum position and direction differentials (per pixel).
     Vector3f minPosDifferentialX, minPosDifferentialY;
     Vector3f minDirDifferentialX, minDirDifferentialY;
 };
+
+template <typename C>
+void CameraBase::FindMinimumDifferentials(const C& camera, Point2i fullResolution) {
+    const Vector3f inf(Infinity, Infinity, Infinity);
+    minPosDifferentialX = minPosDifferentialY = minDirDifferentialX = minDirDifferentialY = inf;
+    SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.5f);
+    const Transform& cameraFromRender = cameraTransform.CameraFromRender();
+    const int n = 512;
+    for (int i = 0; i < n; ++i) {
+        CameraSample s;
+        s.pFilm =
+            Point2f(Float(i) / (n - 1) * fullResolution.x, Float(i) / (n - 1) * fullResolution.y);
+        s.pLens = Point2f(0.5f, 0.5f);
+        s.time = 0.5f;
+        std::optional<CameraRay> cr = camera.GenerateRay(s, lambda);
+        if (!cr) continue;
+        const Ray& r = cr->ray;
+        // Per-pixel origin and direction differentials along axis `axis` of the film
+        auto shifted = [&](int axis, Vector3f* dO, Vector3f* dD) {
+            for (Float eps : {0.05f, -0.05f}) {
+                CameraSample sh = s;
+                (axis == 0 ? sh.pFilm.x : sh.pFilm.y) += eps;
+                if (std::optional<CameraRay> c = camera.GenerateRay(sh, lambda)) {
+                    *dO = (c->ray.o - r.o) / eps;
+                    *dD = (c->ray.d - r.d) / eps;
+                    return true;
+                }
+            }
+            return false;
+        };
+        Vector3f dOx, dDx, dOy, dDy;
+        if (!shifted(0, &dOx, &dDx) || !shifted(1, &dOy, &dDy)) continue;
+        Vector3f dox = cameraFromRender(dOx), doy = cameraFromRender(dOy);
+        if (Length(dox) < Length(minPosDifferentialX)) minPosDifferentialX = dox;
+        if (Length(doy) < Length(minPosDifferentialY)) minPosDifferentialY = doy;
+        Vector3f d = Normalize(r.d);
+        Frame f = Frame::FromZ(d);
+        Vector3f df = f.ToLocal(d);
+        Vector3f dxf = Normalize(f.ToLocal(Normalize(r.d + dDx)));
+        Vector3f dyf = Normalize(f.ToLocal(Normalize(r.d + dDy)));
+        if (Length(dxf - df) < Length(minDirDifferentialX)) minDirDifferentialX = dxf - df;
+        if (Length(dyf - df) < Length(minDirDifferentialY)) minDirDifferentialY = dyf - df;
+    }
+    // No ray at all: no footprint (Approximate_dp_dxy then gives zero derivatives)
+    for (Vector3f* v :
+         {&minPosDifferentialX, &minPosDifferentialY, &minDirDifferentialX, &minDirDifferentialY})
+        if (*v == inf) *v = Vector3f(0, 0, 0);
+}
 
 // ProjectiveCamera: raster <-> screen <-> camera transformations and thin-lens parameters.
 class ProjectiveCamera : public CameraBase {

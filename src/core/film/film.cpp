@@ -135,6 +135,9 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
     o.savefp16 = params.GetOneBool("savefp16", true);
     o.maxComponentValue = params.GetOneFloat("maxcomponentvalue", Infinity);
     o.diagonal = params.GetOneFloat("diagonal", 35) * 0.001f;
+    if (!(o.diagonal > 0 && std::isfinite(o.diagonal)))
+        throw SceneError(params.Loc("diagonal"),
+                         "film \"diagonal\" must be positive and finite (mm)", "diagonal");
     o.exposureEV = params.GetOneFloat("exposure", 0);
     if (!(std::abs(o.exposureEV) <= kMaxExposureEV))
         throw SceneError(

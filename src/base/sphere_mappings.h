@@ -1,5 +1,6 @@
 // Maps between the unit square and the unit sphere of directions, used to store environment
-// maps in images.
+// maps in images (infinite lights) and to lay the sphere of directions on the film (spherical
+// camera).
 //
 // Equal-area octahedral mapping (Clarberg, "Fast Equal-Area Mapping of the (Hemi)Sphere using
 // SIMD", JGT 2008), pbrt-v4's EqualAreaSquareToSphere / EqualAreaSphereToSquare: the upper
@@ -19,6 +20,12 @@ namespace kiln {
 Vector3f EqualAreaSquareToSphere(Point2f p);
 // Unit vector -> [0,1]^2.
 Point2f EqualAreaSphereToSquare(Vector3f d);
+// Folds a point outside [0,1]^2 (at most one square beyond it) back into the square so that
+// EqualAreaSquareToSphere stays continuous across the square's edges (pbrt-v4's
+// WrapEqualAreaSquare): beyond u = 0 or u = 1 the point is mirrored across that edge and across
+// v = 1/2, beyond v = 0 or v = 1 across that edge and across u = 1/2. Points inside are
+// returned unchanged.
+Point2f WrapEqualAreaSquare(Point2f p);
 
 // [0,1]^2 -> unit vector (u = phi / 2 pi, v = theta / pi).
 Vector3f EquirectSquareToSphere(Point2f p);

@@ -1,4 +1,4 @@
-#include "lights/sphere_mappings.h"
+#include "base/sphere_mappings.h"
 
 namespace kiln {
 
@@ -46,6 +46,26 @@ Point2f EqualAreaSphereToSquare(Vector3f d) {
     uq = std::copysign(uq, d.x);
     vq = std::copysign(vq, d.y);
     return {Clamp(0.5f * (uq + 1), 0, 1), Clamp(0.5f * (vq + 1), 0, 1)};
+}
+
+Point2f WrapEqualAreaSquare(Point2f p) {
+    // The octahedral layout's edges: the edge u = 0 (or 1) meets itself mirrored about v = 1/2,
+    // and likewise for v
+    if (p.x < 0) {
+        p.x = -p.x;
+        p.y = 1 - p.y;
+    } else if (p.x > 1) {
+        p.x = 2 - p.x;
+        p.y = 1 - p.y;
+    }
+    if (p.y < 0) {
+        p.x = 1 - p.x;
+        p.y = -p.y;
+    } else if (p.y > 1) {
+        p.x = 1 - p.x;
+        p.y = 2 - p.y;
+    }
+    return p;
 }
 
 // Equirectangular mapping
