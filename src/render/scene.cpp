@@ -30,7 +30,10 @@ std::string SceneFeatures::ToString() const {
                                                     : "area",
         onOff(areaLights), onOff(environmentLight), onOff(dispersion), sheets,
         sheets == 1 ? "" : "s", polarized ? "on (Stokes vectors, Mueller matrices)" : "off", media,
-        emissiveMedia, thermalMedia, volumetric ? "volpath" : "path",
+        emissiveMedia, thermalMedia,
+        bidirectional ? "bdpt"
+        : volumetric  ? "volpath"
+                      : "path",
         genericVolumes ? "; generic volpath (--generic)" : "",
         genericFootprints ? "; generic footprints (--generic)" : "",
         genericAOVs ? "; generic AOVs (--generic)" : "");

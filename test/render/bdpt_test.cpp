@@ -1,0 +1,137 @@
+// Bidirectional path tracing (Integrator "bdpt"): Kirchhoff equilibrium (a closed isothermal
+// cavity renders B(T): thermal emitters start light subpaths with their own emission, camera
+// paths find it through SurfaceLe, and every strategy's MIS weights must sum to one), agreement
+// with the path tracer on a diffuse box lit by an area light and a point light (statistical,
+// pixel blocks against their pooled standard errors), and the choices scene creation makes
+// (mlt and sppm render with bdpt; media, polarisation and orthographic cameras fall back to
+// volpath with a warning).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "base/statistics.h"
+#include "render_test_util.h"
+
+namespace kiln {
+namespace {
+
+// A closed cavity at temperature T: dark textured diffuse walls (albedo <= 0.3, so that
+// maxdepth 10 leaves out less than 1e-4 of the radiance) around an object of `material`
+std::string Cavity(const std::string& material, double T, int spp) {
+    std::ostringstream s;
+    s << "Film \"rgb\" \"integer xresolution\" 16 \"integer yresolution\" 16\n"
+      << "Sampler \"zsobol\" \"integer pixelsamples\" " << spp << "\n"
+      << "Integrator \"bdpt\" \"integer maxdepth\" 10\n"
+      << "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
+      << "WorldBegin\n"
+      << "Attribute \"shape\" \"float temperature\" " << T << "\n"
+      << "Texture \"checks\" \"spectrum\" \"checkerboard\" \"float uscale\" 8 \"float vscale\" 8"
+         " \"rgb tex1\" [0.3 0.2 0.25] \"rgb tex2\" [0.05 0.1 0.02]\n"
+      << "Material \"diffuse\" \"texture reflectance\" \"checks\"\n"
+      << "Shape \"sphere\" \"float radius\" 6\n"
+      << "Material " << material << "\n"
+      << "AttributeBegin Translate 0 0 0.3 Shape \"sphere\" \"float radius\" 1.2 AttributeEnd\n";
+    return s.str();
+}
+
+TEST(BDPT, CavityRendersTheBlackbody) {
+    const char* materials[] = {
+        "\"diffuse\" \"rgb reflectance\" [0.4 0.3 0.2]",
+        "\"conductor\" \"spectrum eta\" \"metal-Pt-eta\" \"spectrum k\" \"metal-Pt-k\" "
+        "\"float roughness\" 0.3",
+        "\"coateddiffuse\" \"rgb reflectance\" [0.2 0.3 0.2] \"float roughness\" 0.1",
+    };
+    for (const char* m : materials)
+        for (double T : {1500.0}) {
+            SCOPED_TRACE(m);
+            testing::RenderedScene r = testing::RenderText(Cavity(m, T, 64));
+            ASSERT_TRUE(r.scene->features.bidirectional);
+            testing::ExpectBlackbodyImage(r, T, std::string("bdpt ") + m);
+        }
+}
+
+// A box of diffuse walls lit by an area light on the ceiling and a point light
+std::string Box(const char* integrator, int spp) {
+    std::ostringstream s;
+    s << "Film \"rgb\" \"integer xresolution\" 16 \"integer yresolution\" 16\n"
+      << "Sampler \"zsobol\" \"integer pixelsamples\" " << spp << "\n"
+      << "Integrator \"" << integrator << "\" \"integer maxdepth\" 4\n"
+      << "LookAt 0 1 3.5  0 1 0  0 1 0\nCamera \"perspective\" \"float fov\" 45\n"
+      << "WorldBegin\n"
+      << "LightSource \"point\" \"point3 from\" [0.5 1.5 0.5] \"rgb I\" [0.5 0.5 0.5]\n"
+      << "Material \"diffuse\" \"rgb reflectance\" [0.6 0.6 0.6]\n"
+      << "Shape \"bilinearmesh\" \"point3 P\" [-1 0 -1 1 0 -1 -1 0 1 1 0 1]\n"
+      << "Shape \"bilinearmesh\" \"point3 P\" [-1 2 -1 -1 2 1 1 2 -1 1 2 1]\n"
+      << "Shape \"bilinearmesh\" \"point3 P\" [-1 0 -1 -1 2 -1 1 0 -1 1 2 -1]\n"
+      << "Material \"diffuse\" \"rgb reflectance\" [0.6 0.2 0.2]\n"
+      << "Shape \"bilinearmesh\" \"point3 P\" [-1 0 -1 -1 0 1 -1 2 -1 -1 2 1]\n"
+      << "Material \"diffuse\" \"rgb reflectance\" [0.2 0.6 0.2]\n"
+      << "Shape \"bilinearmesh\" \"point3 P\" [1 0 -1 1 2 -1 1 0 1 1 2 1]\n"
+      << "AttributeBegin\n"
+      << "  AreaLightSource \"diffuse\" \"rgb L\" [4 4 4]\n"
+      << "  Shape \"bilinearmesh\" \"point3 P\" [-0.3 1.99 -0.3 -0.3 1.99 0.3 0.3 1.99 -0.3 "
+         "0.3 1.99 0.3]\n"
+      << "AttributeEnd\n";
+    return s.str();
+}
+
+// Mean luminance of 4 x 4 pixel blocks, with the standard error over independent seeds
+struct Blocks {
+    std::vector<RunningStats> stats = std::vector<RunningStats>(16);
+    void Add(const Scene& scene) {
+        std::vector<double> sums(16, 0);
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 16; ++x)
+                sums[(y / 4) * 4 + x / 4] += testing::PixelY(scene, {x, y});
+        for (int b = 0; b < 16; ++b) stats[b].Add(sums[b] / 16);
+    }
+};
+
+TEST(BDPT, AgreesWithPathTracing) {
+    Blocks bdpt, path;
+    const int seeds = 6;
+    for (int k = 0; k < seeds; ++k) {
+        RenderOptions o;
+        o.seed = k + 1;
+        bdpt.Add(*testing::RenderText(Box("bdpt", 64), 0, o).scene);
+        path.Add(*testing::RenderText(Box("path", 64), 0, o).scene);
+    }
+    double chi2 = 0;
+    for (int b = 0; b < 16; ++b) {
+        double d = bdpt.stats[b].Mean() - path.stats[b].Mean();
+        double se2 = Sqr(bdpt.stats[b].StandardError()) + Sqr(path.stats[b].StandardError());
+        ASSERT_GT(path.stats[b].Mean(), 0);
+        chi2 += d * d / se2;
+        EXPECT_LT(std::abs(d), 5 * std::sqrt(se2) + 1e-3 * path.stats[b].Mean())
+            << "block " << b << ": bdpt " << bdpt.stats[b].Mean() << " path "
+            << path.stats[b].Mean();
+    }
+    // 16 blocks: the sum of squared z-scores is chi-square with ~16 degrees of freedom (from
+    // 6 seeds each, heavier tailed); 60 is far beyond its 0.999 quantile
+    EXPECT_LT(chi2, 60);
+    std::printf("bdpt vs path, 16 blocks: chi2 %.1f\n", chi2);
+}
+
+TEST(BDPT, IntegratorChoices) {
+    auto load = [](const std::string& integrator, const std::string& extra,
+                   const std::string& camera = "perspective") {
+        Diagnostics diag(nullptr);
+        std::string text =
+            "Film \"rgb\" \"integer xresolution\" 4 \"integer yresolution\" 4\n"
+            "Integrator \"" +
+            integrator + "\"\nCamera \"" + camera + "\"\n" + extra +
+            "WorldBegin\nLightSource \"point\"\nShape \"sphere\"\n";
+        std::unique_ptr<Scene> scene = testing::BuildScene(text, diag);
+        return std::make_pair(scene->features.bidirectional, diag.WarningCount());
+    };
+    EXPECT_EQ(load("bdpt", ""), std::make_pair(true, 0));
+    EXPECT_EQ(load("mlt", ""), std::make_pair(true, 1));
+    EXPECT_EQ(load("sppm", ""), std::make_pair(true, 1));
+    EXPECT_EQ(load("volpath", ""), std::make_pair(false, 0));
+    EXPECT_EQ(load("bdpt", "", "orthographic"), std::make_pair(false, 1));
+    EXPECT_EQ(load("bdpt", "Film \"rgb\" \"bool stokes\" true\n").first, false);
+}
+
+}  // namespace
+}  // namespace kiln
