@@ -381,7 +381,13 @@ Float BDPTIntegrator::MISWeight(BDPTVertex* lightVertices, BDPTVertex* cameraVer
             i > 0 ? lightVertices[i - 1].delta : lightVertices[0].IsDeltaLight();
         if (!lightVertices[i].delta && !deltaLightVertex) sumRi += ri;
     }
-    if (t == 1) sumRi /= splatScale;
+    // Light tracing from a crop window has splatScale times fewer samples per pixel than the
+    // strategies of the pixel's own camera paths (its contribution is scaled up by as much,
+    // Connect): the balance heuristic weighs its density by 1 / splatScale. pbrt-v4 (issue 347)
+    // divides the other strategies' ratios by splatScale for t = 1 too, which brightens crops
+    // (measured: a test box's central crop +47 %, test/render/bdpt_test.cpp); they are
+    // multiplied here.
+    if (t == 1) sumRi *= splatScale;
 
     if (pt) {
         pt->delta = saved.ptDelta;

@@ -9,8 +9,10 @@
 // point sampled on the lens, splatted to the film where it lands) and the general
 // connections. Each is weighted by pbrt-v4's MISWeight: the balance heuristic over all
 // strategies that could have produced the path, in the rescaled form 1 / (1 + sum r_i), with
-// pbrt-v4's correction for cropped films (its issue 347: light tracing from a crop still splats
-// over the whole image's pixels' share).
+// the correction for cropped films of pbrt-v4's issue 347 (light tracing from a crop has fewer
+// paths per pixel: its splats are scaled by the full image's area over the crop's and its
+// density in the heuristic by the inverse; pbrt-v4 gets the latter wrong for t = 1, see
+// MISWeight).
 //
 // kiln specifics: emission found by the camera path is the scene's SurfaceLe (thermal emission
 // from the hit's own BSDF, as PathIntegrator); hot shapes are lights (ThermalAreaLight) whose

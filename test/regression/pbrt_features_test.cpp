@@ -1,6 +1,7 @@
 // pbrt-v4 features end to end: one small pbrt-v4-syntax scene per feature of issue 12 (gzip
 // input, singular transforms, loopsubdiv, curves and hair, alpha, bump and normal maps, displaced
-// PLY meshes, coated materials) in test/regression/pbrt_features, each rendered 16 times at
+// PLY meshes, coated materials; and bdpt's caustics, whose reference pbrt-v4 itself rendered)
+// in test/regression/pbrt_features, each rendered 16 times at
 // 32 spp with independent seeds and compared within the Monte Carlo noise with its stored
 // reference (noise_comparison.h; how the references were made: pbrt_features/README.md). The
 // comparison must also reject the renders scaled by 1.1. Each scene's warnings are the expected
@@ -66,7 +67,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Feature{"displacement", 0}, Feature{"coated", 0},
                       // references rendered by pbrt-v4 (README)
                       Feature{"tga", 0, 4096}, Feature{"projective_light", 0, 4096},
-                      Feature{"invisible_light", 0, 4096}),
+                      Feature{"invisible_light", 0, 4096}, Feature{"caustic", 0, 16384}),
     [](const ::testing::TestParamInfo<Feature>& info) { return std::string(info.param.scene); });
 
 }  // namespace

@@ -113,6 +113,33 @@ TEST(BDPT, AgreesWithPathTracing) {
     std::printf("bdpt vs path, 16 blocks: chi2 %.1f\n", chi2);
 }
 
+TEST(BDPT, CropWindowMatchesTheFullImage) {
+    // Light tracing from a crop window splats only inside it, with pbrt-v4's scale for the
+    // share of the image it covers: the crop's pixels must agree with the full image's
+    RunningStats full, crop;
+    for (int k = 0; k < 6; ++k) {
+        RenderOptions o;
+        o.seed = k + 1;
+        testing::RenderedScene f = testing::RenderText(Box("bdpt", 32), 0, o);
+        o.cropWindow = Bounds2f{{0.25f, 0.25f}, {0.75f, 0.75f}};
+        testing::RenderedScene c = testing::RenderText(Box("bdpt", 32), 0, o);
+        ASSERT_EQ(c.scene->job->film->PixelBounds().Area(), 64);
+        double sf = 0, sc = 0;
+        for (int y = 4; y < 12; ++y)
+            for (int x = 4; x < 12; ++x) {
+                sf += testing::PixelY(*f.scene, {x, y});
+                sc += testing::PixelY(*c.scene, {x, y});
+            }
+        full.Add(sf / 64);
+        crop.Add(sc / 64);
+    }
+    double se = std::sqrt(Sqr(full.StandardError()) + Sqr(crop.StandardError()));
+    EXPECT_NEAR(crop.Mean(), full.Mean(), 5 * se) << "standard error " << se;
+    std::printf("crop %.5f, full image %.5f (standard error %.5f)\n", crop.Mean(), full.Mean(), se);
+    // Without the scale the crop would be 4 times too dark in its light-traced part
+    EXPECT_LT(5 * se, 0.05 * full.Mean());
+}
+
 TEST(BDPT, IntegratorChoices) {
     auto load = [](const std::string& integrator, const std::string& extra,
                    const std::string& camera = "perspective") {
