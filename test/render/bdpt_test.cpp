@@ -140,6 +140,35 @@ TEST(BDPT, CropWindowMatchesTheFullImage) {
     EXPECT_LT(5 * se, 0.05 * full.Mean());
 }
 
+TEST(BDPT, ResumedRenderEqualsTheUninterruptedOne) {
+    // A render resumed from the film state after 8 of 16 samples per pixel (as kiln's
+    // checkpoints do) traces the same paths: the splats kept in the state and the splat scale
+    // of the finished render give the uninterrupted image, up to the order of atomic sums
+    Diagnostics diag(nullptr);
+    std::unique_ptr<Scene> a = testing::BuildScene(Box("bdpt", 16), diag);
+    std::string state;
+    RenderSettings settings;
+    settings.maxWaveSize = 1;
+    settings.afterWave = [&](int completed) {
+        if (completed == 8) state = a->job->film->SaveState();
+    };
+    Render(*a, settings);
+    ASSERT_FALSE(state.empty());
+    std::unique_ptr<Scene> b = testing::BuildScene(Box("bdpt", 16), diag);
+    ASSERT_TRUE(b->job->film->LoadState(state));
+    RenderSettings resume;
+    resume.startSample = 8;
+    Render(*b, resume);
+    double maxRel = 0;
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            double ya = testing::PixelY(*a, {x, y}), yb = testing::PixelY(*b, {x, y});
+            ASSERT_GT(ya, 0);
+            maxRel = std::max(maxRel, std::abs(ya - yb) / ya);
+        }
+    EXPECT_LT(maxRel, 1e-4);
+}
+
 TEST(BDPT, IntegratorChoices) {
     auto load = [](const std::string& integrator, const std::string& extra,
                    const std::string& camera = "perspective") {
