@@ -213,11 +213,14 @@ int BDPTIntegrator::RandomWalk(SampledWavelengths& lambda, Ray ray, Sampler& sam
 // Strategies
 SampledSpectrum BDPTIntegrator::Li(Ray ray, SampledWavelengths& lambda, Sampler& sampler,
                                    VisibleSurface* visibleSurface) const {
-    // Small fixed-size arrays: maxdepth is bounded at scene creation
-    std::vector<BDPTVertex> cameraVertices(size_t(settings.maxDepth) + 2),
-        lightVertices(size_t(settings.maxDepth) + 1);
-    int nCamera = CameraSubpath(ray, lambda, sampler, cameraVertices.data(), visibleSurface);
-    int nLight = LightSubpath(lambda, sampler, lightVertices.data());
+    // The two subpaths' vertices, in a buffer each thread keeps (no allocation per sample)
+    thread_local std::vector<BDPTVertex> vertices;
+    size_t nMax = 2 * size_t(settings.maxDepth) + 3;
+    if (vertices.size() < nMax) vertices.resize(nMax);
+    BDPTVertex* cameraVertices = vertices.data();
+    BDPTVertex* lightVertices = vertices.data() + settings.maxDepth + 2;
+    int nCamera = CameraSubpath(ray, lambda, sampler, cameraVertices, visibleSurface);
+    int nLight = LightSubpath(lambda, sampler, lightVertices);
 
     SampledSpectrum L(0);
     for (int t = 1; t <= nCamera; ++t)
@@ -225,8 +228,8 @@ SampledSpectrum BDPTIntegrator::Li(Ray ray, SampledWavelengths& lambda, Sampler&
             int depth = t + s - 2;
             if ((s == 1 && t == 1) || depth < 0 || depth > settings.maxDepth) continue;
             Point2f pRaster;
-            SampledSpectrum Lpath = Connect(lambda, lightVertices.data(), cameraVertices.data(), s,
-                                            t, sampler, &pRaster);
+            SampledSpectrum Lpath =
+                Connect(lambda, lightVertices, cameraVertices, s, t, sampler, &pRaster);
             if (t != 1)
                 L += Lpath;
             else if (Lpath)
