@@ -51,8 +51,10 @@ TEST(BDPT, CavityRendersTheBlackbody) {
         }
 }
 
-// A box of diffuse walls lit by an area light on the ceiling and a point light
-std::string Box(const char* integrator, int spp) {
+// A box of diffuse walls lit by an area light on the ceiling and a point light, or (thermal)
+// by a glowing sphere whose temperature rises from 900 K to 1400 K across it (its light
+// subpaths start by power over its surface)
+std::string Box(const char* integrator, int spp, bool thermal = false) {
     std::ostringstream s;
     s << "Film \"rgb\" \"integer xresolution\" 16 \"integer yresolution\" 16\n"
       << "Sampler \"zsobol\" \"integer pixelsamples\" " << spp << "\n"
@@ -68,11 +70,18 @@ std::string Box(const char* integrator, int spp) {
       << "Shape \"bilinearmesh\" \"point3 P\" [-1 0 -1 -1 0 1 -1 2 -1 -1 2 1]\n"
       << "Material \"diffuse\" \"rgb reflectance\" [0.2 0.6 0.2]\n"
       << "Shape \"bilinearmesh\" \"point3 P\" [1 0 -1 1 2 -1 1 0 1 1 2 1]\n"
-      << "AttributeBegin\n"
-      << "  AreaLightSource \"diffuse\" \"rgb L\" [4 4 4]\n"
-      << "  Shape \"bilinearmesh\" \"point3 P\" [-0.3 1.99 -0.3 -0.3 1.99 0.3 0.3 1.99 -0.3 "
-         "0.3 1.99 0.3]\n"
-      << "AttributeEnd\n";
+      << "AttributeBegin\n";
+    if (thermal)
+        s << "  Texture \"heat\" \"float\" \"gradient\" \"point3 p0\" [-0.3 0 0] \"point3 p1\" "
+             "[0.3 0 0] \"float t0\" 900 \"float t1\" 1400 \"string space\" \"world\"\n"
+          << "  Material \"diffuse\" \"rgb reflectance\" [0.3 0.3 0.3] \"texture temperature\" "
+             "\"heat\"\n"
+          << "  Translate 0 1.5 0 Shape \"sphere\" \"float radius\" 0.3\n";
+    else
+        s << "  AreaLightSource \"diffuse\" \"rgb L\" [4 4 4]\n"
+          << "  Shape \"bilinearmesh\" \"point3 P\" [-0.3 1.99 -0.3 -0.3 1.99 0.3 0.3 1.99 -0.3 "
+             "0.3 1.99 0.3]\n";
+    s << "AttributeEnd\n";
     return s.str();
 }
 
@@ -89,28 +98,32 @@ struct Blocks {
 };
 
 TEST(BDPT, AgreesWithPathTracing) {
-    Blocks bdpt, path;
-    const int seeds = 6;
-    for (int k = 0; k < seeds; ++k) {
-        RenderOptions o;
-        o.seed = k + 1;
-        bdpt.Add(*testing::RenderText(Box("bdpt", 64), 0, o).scene);
-        path.Add(*testing::RenderText(Box("path", 64), 0, o).scene);
+    for (bool thermal : {false, true}) {
+        SCOPED_TRACE(thermal ? "hot sphere" : "area and point lights");
+        Blocks bdpt, path;
+        const int seeds = 6;
+        for (int k = 0; k < seeds; ++k) {
+            RenderOptions o;
+            o.seed = k + 1;
+            bdpt.Add(*testing::RenderText(Box("bdpt", 64, thermal), 0, o).scene);
+            path.Add(*testing::RenderText(Box("path", 64, thermal), 0, o).scene);
+        }
+        double chi2 = 0;
+        for (int b = 0; b < 16; ++b) {
+            double d = bdpt.stats[b].Mean() - path.stats[b].Mean();
+            double se2 = Sqr(bdpt.stats[b].StandardError()) + Sqr(path.stats[b].StandardError());
+            ASSERT_GT(path.stats[b].Mean(), 0);
+            chi2 += d * d / se2;
+            EXPECT_LT(std::abs(d), 5 * std::sqrt(se2) + 1e-3 * path.stats[b].Mean())
+                << "block " << b << ": bdpt " << bdpt.stats[b].Mean() << " path "
+                << path.stats[b].Mean();
+        }
+        // 16 blocks: the sum of squared z-scores is chi-square with ~16 degrees of freedom
+        // (from 6 seeds each, heavier tailed); 60 is far beyond its 0.999 quantile
+        EXPECT_LT(chi2, 60);
+        std::printf("bdpt vs path (%s), 16 blocks: chi2 %.1f\n", thermal ? "hot sphere" : "lights",
+                    chi2);
     }
-    double chi2 = 0;
-    for (int b = 0; b < 16; ++b) {
-        double d = bdpt.stats[b].Mean() - path.stats[b].Mean();
-        double se2 = Sqr(bdpt.stats[b].StandardError()) + Sqr(path.stats[b].StandardError());
-        ASSERT_GT(path.stats[b].Mean(), 0);
-        chi2 += d * d / se2;
-        EXPECT_LT(std::abs(d), 5 * std::sqrt(se2) + 1e-3 * path.stats[b].Mean())
-            << "block " << b << ": bdpt " << bdpt.stats[b].Mean() << " path "
-            << path.stats[b].Mean();
-    }
-    // 16 blocks: the sum of squared z-scores is chi-square with ~16 degrees of freedom (from
-    // 6 seeds each, heavier tailed); 60 is far beyond its 0.999 quantile
-    EXPECT_LT(chi2, 60);
-    std::printf("bdpt vs path, 16 blocks: chi2 %.1f\n", chi2);
 }
 
 TEST(BDPT, CropWindowMatchesTheFullImage) {
