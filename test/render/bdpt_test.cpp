@@ -200,6 +200,16 @@ TEST(BDPT, IntegratorChoices) {
     EXPECT_EQ(load("volpath", ""), std::make_pair(false, 0));
     EXPECT_EQ(load("bdpt", "", "orthographic"), std::make_pair(false, 1));
     EXPECT_EQ(load("bdpt", "Film \"rgb\" \"bool stokes\" true\n").first, false);
+    // Media: volpath, which renders them
+    Diagnostics diag(nullptr);
+    std::unique_ptr<Scene> fog = testing::BuildScene(
+        "Integrator \"bdpt\"\nWorldBegin\nLightSource \"point\"\n"
+        "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+        "MediumInterface \"fog\" \"\"\nMaterial \"interface\"\nShape \"sphere\"\n",
+        diag);
+    EXPECT_FALSE(fog->features.bidirectional);
+    EXPECT_TRUE(fog->features.volumetric);
+    EXPECT_EQ(diag.WarningCount(), 1);
 }
 
 }  // namespace
