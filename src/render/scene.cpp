@@ -24,7 +24,8 @@ std::string SceneFeatures::ToString() const {
         varyingTemperatures ? ", varying temperatures" : "", footprintMaterials, materials,
         onOff(aovs), singleWavelength ? 1 : NSpectrumSamples, singleWavelength ? "" : "s",
         fixedPixelCenter ? "fixed" : "jittered",
-        lightSelection == LightSelection::BVH       ? "bvh"
+        bidirectional                               ? "power (bdpt)"
+        : lightSelection == LightSelection::BVH     ? "bvh"
         : lightSelection == LightSelection::Power   ? "power"
         : lightSelection == LightSelection::Uniform ? "uniform"
                                                     : "area",
