@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "base/rng.h"
+#include "base/sampling.h"
 #include "core/geometry/alpha_mask.h"
 #include "core/geometry/shape.h"
 #include "lights/light_sample.h"
@@ -31,6 +32,30 @@ std::optional<LightLiSample> SampleAreaLi(const Shape& shape, const LightSampleC
 // AreaLight::AlphaMasked, the uniform number a hash of p).
 inline bool IsCutOut(const Shape& shape, const AlphaMask& alpha, Point3f p, Vector3f w) {
     return alpha.Masked(shape.InteractionAt(p, 0, w), HashToUniform(Hash(p)));
+}
+
+// A direction leaving a surface of normal n, cosine-distributed about n, or on a side chosen
+// by u[0] (each with probability 1/2) for a two-sided emitter (pbrt-v4's
+// DiffuseAreaLight::SampleLe); pdf per sr, 0 if none.
+inline Vector3f SampleEmissionDirection(Normal3f n, bool twoSided, Point2f u, Float* pdf) {
+    Vector3f w;
+    if (twoSided) {
+        bool back = u[0] >= 0.5f;
+        u[0] = std::min(back ? (u[0] - 0.5f) * 2 : u[0] * 2, OneMinusEpsilon);
+        w = SampleCosineHemisphere(u);
+        if (back) w.z = -w.z;
+        *pdf = CosineHemispherePDF(std::abs(w.z)) / 2;
+    } else {
+        w = SampleCosineHemisphere(u);
+        *pdf = CosineHemispherePDF(w.z);
+    }
+    return Frame::FromZ(Vector3f(n)).FromLocal(w);
+}
+
+// Its density per sr for direction w (unit).
+inline Float EmissionDirectionPDF(Normal3f n, bool twoSided, Vector3f w) {
+    return twoSided ? CosineHemispherePDF(AbsDot(n, w)) / 2
+                    : std::max<Float>(0, CosineHemispherePDF(Dot(n, w)));
 }
 
 // Solid-angle density of SampleAreaLi choosing direction wi (0 where it is not finite).

@@ -49,6 +49,23 @@ Float DiffuseAreaLight::PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool)
     return AreaPDF_Li(*shape, ctx, wi);
 }
 
+std::optional<LightLeSample> DiffuseAreaLight::SampleLe(Point2f u1, Point2f u2,
+                                                        const SampledWavelengths& lambda) const {
+    std::optional<ShapeSample> ss = shape->Sample(u1);
+    if (!ss || !(ss->pdf > 0)) return {};
+    Float pdfDir = 0;
+    Vector3f w = SampleEmissionDirection(ss->intr.n, twoSided, u2, &pdfDir);
+    if (!(pdfDir > 0)) return {};
+    if (alpha && IsCutOut(*shape, *alpha, ss->intr.p, w)) return {};
+    SampledSpectrum Le = L(ss->intr.p, ss->intr.n, ss->intr.uv, w, lambda);
+    if (!Le) return {};
+    return LightLeSample{Le, ss->intr.SpawnRay(w), ss->intr, ss->pdf, pdfDir};
+}
+
+LightLePDF DiffuseAreaLight::PDF_Le(const Interaction& intr, Vector3f w) const {
+    return {shape->PDF(intr), EmissionDirectionPDF(intr.n, twoSided, w)};
+}
+
 // Power
 SampledSpectrum DiffuseAreaLight::Phi(const SampledWavelengths& lambda) const {
     if (!(area > 0)) return SampledSpectrum(0);

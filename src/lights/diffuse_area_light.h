@@ -53,6 +53,14 @@ class DiffuseAreaLight {
                                           const SampledWavelengths& lambda,
                                           bool allowIncompletePDF = false) const;
     Float PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool allowIncompletePDF = false) const;
+    // A ray leaving a point uniform over the shape's area (u1; pdfPos per m^2) in a
+    // cosine-distributed direction (u2; both sides if two-sided); nullopt where the shape is
+    // cut out (pbrt-v4's DiffuseAreaLight::SampleLe).
+    std::optional<LightLeSample> SampleLe(Point2f u1, Point2f u2,
+                                          const SampledWavelengths& lambda) const;
+    // The densities of SampleLe leaving the point intr (on the shape, with its normal)
+    // towards w.
+    LightLePDF PDF_Le(const Interaction& intr, Vector3f w) const;
     // pi (2 if two-sided) A scale L (image: its mean), W nm^-1; 0 for a zero-area shape.
     SampledSpectrum Phi(const SampledWavelengths& lambda) const;
     void Preprocess(const Bounds3f&) const {}

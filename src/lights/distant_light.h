@@ -26,6 +26,12 @@ class DistantLight {
                                           const SampledWavelengths& lambda,
                                           bool allowIncompletePDF = false) const;
     Float PDF_Li(const LightSampleContext&, Vector3f, bool = false) const { return 0; }
+    // A ray entering the scene along -Direction() from a point uniform on the disk of the
+    // scene's bounding sphere facing the light, pdfPos 1 / (pi r^2), pdfDir 1 (delta;
+    // pbrt-v4's DistantLight::SampleLe; u2 unused).
+    std::optional<LightLeSample> SampleLe(Point2f u1, Point2f u2,
+                                          const SampledWavelengths& lambda) const;
+    LightLePDF PDF_Le(const Ray&) const { return {1 / (Pi * Sqr(sceneRadius)), 0}; }
     // Power through the disk the scene's bounding sphere presents: scale L pi r^2, W nm^-1.
     SampledSpectrum Phi(const SampledWavelengths& lambda) const;
     // Learns the scene's bounding sphere (needed by SampleLi and Phi).

@@ -168,6 +168,32 @@ Float ImageInfiniteLight::PDF_Li(const LightSampleContext&, Vector3f w,
     return pdf / dOmega;
 }
 
+std::optional<LightLeSample> ImageInfiniteLight::SampleLe(Point2f u1, Point2f u2,
+                                                          const SampledWavelengths& lambda) const {
+    if (!(sceneRadius > 0)) return {};
+    Float mapPDF = 0;
+    Point2f st = distribution.Sample(u1, &mapPDF);
+    if (mapPDF == 0) return {};
+    Vector3f wLight = DirectionFromST(st);
+    Float dOmega = SolidAnglePerUnitST(wLight);
+    if (dOmega == 0) return {};
+    Vector3f w = -Normalize(renderFromLight(wLight));
+    Frame frame = Frame::FromZ(-w);
+    Point2f cd = SampleUniformDiskConcentric(u2);
+    Point3f pDisk = sceneCenter + sceneRadius * frame.FromLocal(Vector3f(cd.x, cd.y, 0));
+    SampledSpectrum L = ImageLe(st, lambda);
+    if (!L) return {};
+    return LightLeSample{L, Ray(pDisk - sceneRadius * w, w), std::nullopt,
+                         1 / (Pi * Sqr(sceneRadius)), mapPDF / dOmega};
+}
+
+LightLePDF ImageInfiniteLight::PDF_Le(const Ray& ray) const {
+    Vector3f wLight = -Normalize(renderFromLight.ApplyInverse(ray.d));
+    Float dOmega = SolidAnglePerUnitST(wLight);
+    if (dOmega == 0) return {};
+    return {1 / (Pi * Sqr(sceneRadius)), distribution.PDF(STFromDirection(wLight)) / dOmega};
+}
+
 // Power: pi r^2 times the integral of L over the sphere (sum of L times each pixel's exact
 // solid angle)
 SampledSpectrum ImageInfiniteLight::Phi(const SampledWavelengths& lambda) const {

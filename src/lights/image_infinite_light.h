@@ -52,6 +52,13 @@ class ImageInfiniteLight {
                                           const SampledWavelengths& lambda,
                                           bool allowIncompletePDF = false) const;
     Float PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool allowIncompletePDF = false) const;
+    // A ray entering the scene: direction from the image distribution (u1; the ray travels
+    // along -DirectionFromST), origin uniform on the disk of the scene's bounding sphere
+    // perpendicular to it (u2); pdfPos 1 / (pi r^2), pdfDir per sr (pbrt-v4's
+    // ImageInfiniteLight::SampleLe).
+    std::optional<LightLeSample> SampleLe(Point2f u1, Point2f u2,
+                                          const SampledWavelengths& lambda) const;
+    LightLePDF PDF_Le(const Ray& ray) const;
     // pi r^2 times the integral of radiance over the sphere, W nm^-1.
     SampledSpectrum Phi(const SampledWavelengths& lambda) const;
     void Preprocess(const Bounds3f& sceneBounds) const;

@@ -133,6 +133,48 @@ class Light
                 return SampledSpectrum(0.f);
         });
     }
+    // A ray leaving the light (pbrt-v4's Light::SampleLe, for light tracing), from u1 and u2;
+    // lights whose radiance costs a surface evaluation (thermal emission) evaluate it with
+    // the BSDF that shader builds at the sampled point, as DeferredL.
+    template <typename Shader>
+    std::optional<LightLeSample> SampleLe(Point2f u1, Point2f u2, const SampledWavelengths& lambda,
+                                          const Shader& shader) const {
+        return Dispatch([&](auto l) -> std::optional<LightLeSample> {
+            using T = std::remove_cv_t<std::remove_pointer_t<decltype(l)>>;
+            constexpr bool withShader = [] {
+                if constexpr (T::kType == LightType::Area)
+                    return T::kDefersL;
+                else
+                    return false;
+            }();
+            if constexpr (withShader)
+                return l->SampleLe(u1, u2, lambda, shader);
+            else
+                return l->SampleLe(u1, u2, lambda);
+        });
+    }
+    // Densities of SampleLe producing `ray`, for lights without a surface (point, spot,
+    // distant, infinite); {0, 0} for area lights.
+    LightLePDF PDF_Le(const Ray& ray) const {
+        return Dispatch([&](auto l) -> LightLePDF {
+            using T = std::remove_cv_t<std::remove_pointer_t<decltype(l)>>;
+            if constexpr (T::kType == LightType::Area)
+                return {};
+            else
+                return l->PDF_Le(ray);
+        });
+    }
+    // Densities of SampleLe leaving intr (a point of an area light's shape, with its surface
+    // normal) towards w; {0, 0} for the other kinds.
+    LightLePDF PDF_Le(const Interaction& intr, Vector3f w) const {
+        return Dispatch([&](auto l) -> LightLePDF {
+            using T = std::remove_cv_t<std::remove_pointer_t<decltype(l)>>;
+            if constexpr (T::kType == LightType::Area)
+                return l->PDF_Le(intr, w);
+            else
+                return {};
+        });
+    }
     // The light's weight for light selection: its power over 360-830 nm, W (pbrt-v4: Phi /
     // pdf averaged over the four wavelengths SampleVisible(0.5) gives); 0 if not finite.
     Float Power() const;

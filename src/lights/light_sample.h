@@ -7,6 +7,8 @@
 // value that cancels against the delta distribution).
 #pragma once
 
+#include <optional>
+
 #include "base/interaction.h"
 #include "base/vecmath.h"
 #include "spectral/sampled_spectrum.h"
@@ -50,6 +52,25 @@ struct LightLiSample {
     // lengths: ImageInfiniteLight::SampleLi). pbrt-v4 evaluates the cosine and the BSDF's pdf
     // with that vector, so kiln's integrators scale both by it.
     Float wiLength = 1;
+};
+
+// A ray leaving a light (pbrt-v4's LightLeSample): radiance L carried along `ray` (unit
+// direction), drawn with density pdfPos per m^2 of its origin (per unit area of the disk
+// presented to the scene for lights at infinity and distant lights; 1 for point and spot
+// lights, a formal value cancelling the delta distribution) and pdfDir per sr of its direction
+// (1 for distant lights). intr: the point of an area light's surface the ray leaves.
+struct LightLeSample {
+    SampledSpectrum L;
+    Ray ray;
+    std::optional<Interaction> intr;
+    Float pdfPos = 0, pdfDir = 0;
+    // |cos| between w and the surface normal at the origin (1 for lights without a surface)
+    Float AbsCosTheta(Vector3f w) const { return intr ? AbsDot(w, intr->n) : 1; }
+};
+
+// The densities PDF_Le reports, as in LightLeSample.
+struct LightLePDF {
+    Float pos = 0, dir = 0;
 };
 
 // A light chosen by a light sampler, by its index in the scene's light list.

@@ -16,6 +16,14 @@ std::optional<LightLiSample> PointLight::SampleLi(const LightSampleContext& ctx,
     return LightLiSample{Li, wi, 1, Interaction(position, Normal3f(), Point2f())};
 }
 
+std::optional<LightLeSample> PointLight::SampleLe(Point2f u1, Point2f,
+                                                  const SampledWavelengths& lambda) const {
+    SampledSpectrum L = scale * I.Sample(lambda);
+    if (!L) return {};
+    return LightLeSample{L, Ray(position, SampleUniformSphere(u1)), std::nullopt, 1,
+                         UniformSpherePDF()};
+}
+
 SampledSpectrum PointLight::Phi(const SampledWavelengths& lambda) const {
     return 4 * Pi * scale * I.Sample(lambda);
 }

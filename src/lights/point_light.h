@@ -3,6 +3,7 @@
 
 #include <optional>
 
+#include "base/sampling.h"
 #include "base/transform.h"
 #include "lights/light_sample.h"
 #include "spectral/spectrum.h"
@@ -24,6 +25,11 @@ class PointLight {
                                           const SampledWavelengths& lambda,
                                           bool allowIncompletePDF = false) const;
     Float PDF_Li(const LightSampleContext&, Vector3f, bool = false) const { return 0; }
+    // A ray leaving the light uniformly over the sphere: L = scale I, pdfPos 1, pdfDir 1 / 4 pi
+    // (pbrt-v4's PointLight::SampleLe; u2 unused).
+    std::optional<LightLeSample> SampleLe(Point2f u1, Point2f u2,
+                                          const SampledWavelengths& lambda) const;
+    LightLePDF PDF_Le(const Ray&) const { return {0, UniformSpherePDF()}; }
     // Radiant power 4 pi scale I, W nm^-1.
     SampledSpectrum Phi(const SampledWavelengths& lambda) const;
     void Preprocess(const Bounds3f&) const {}

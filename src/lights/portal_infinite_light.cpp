@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "base/sampling.h"
 #include "base/sphere_mappings.h"
 #include "spectral/color.h"
 
@@ -55,8 +56,7 @@ PortalInfiniteLight::PortalInfiniteLight(const Transform& renderFromLight,
 }
 
 void PortalInfiniteLight::Preprocess(const Bounds3f& sceneBounds) const {
-    Point3f center;
-    sceneBounds.BoundingSphere(&center, &sceneRadius);
+    sceneBounds.BoundingSphere(&sceneCenter, &sceneRadius);
 }
 
 // The portal parameterisation
@@ -124,6 +124,34 @@ Float PortalInfiniteLight::PDF_Li(const LightSampleContext& ctx, Vector3f w, boo
     std::optional<Bounds2f> b = ImageBounds(ctx.p);
     if (!b) return 0;
     return distribution.PDF(*uv, *b) / dw_duv;
+}
+
+// Light tracing
+std::optional<LightLeSample> PortalInfiniteLight::SampleLe(Point2f u1, Point2f u2,
+                                                           const SampledWavelengths& lambda) const {
+    if (!(sceneRadius > 0)) return {};
+    Float mapPDF = 0;
+    std::optional<Point2f> uv =
+        distribution.Sample(u1, Bounds2f{Point2f(0, 0), Point2f(1, 1)}, &mapPDF);
+    if (!uv) return {};
+    Float dw_duv;
+    Vector3f w = -RenderFromImage(*uv, &dw_duv);
+    if (!(dw_duv > 0)) return {};
+    Frame frame = Frame::FromZ(-w);
+    Point2f cd = SampleUniformDiskConcentric(u2);
+    Point3f pDisk = sceneCenter + sceneRadius * frame.FromLocal(Vector3f(cd.x, cd.y, 0));
+    SampledSpectrum L = ImageLookup(*uv, lambda);
+    if (!L) return {};
+    return LightLeSample{L, Ray(pDisk - sceneRadius * w, w), std::nullopt,
+                         1 / (Pi * Sqr(sceneRadius)), mapPDF / dw_duv};
+}
+
+LightLePDF PortalInfiniteLight::PDF_Le(const Ray& ray) const {
+    Float dw_duv;
+    std::optional<Point2f> uv = ImageFromRender(-Normalize(ray.d), &dw_duv);
+    if (!uv || !(dw_duv > 0)) return {};
+    return {1 / (Pi * Sqr(sceneRadius)),
+            distribution.PDF(*uv, Bounds2f{Point2f(0, 0), Point2f(1, 1)}) / dw_duv};
 }
 
 // Power

@@ -41,6 +41,11 @@ class PortalInfiniteLight {
                                           const SampledWavelengths& lambda,
                                           bool allowIncompletePDF = false) const;
     Float PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool allowIncompletePDF = false) const;
+    // A ray entering the scene (light tracing, as pbrt-v4): a direction from the whole
+    // parameterisation, its origin on the disk of the scene's bounding sphere facing it.
+    std::optional<LightLeSample> SampleLe(Point2f u1, Point2f u2,
+                                          const SampledWavelengths& lambda) const;
+    LightLePDF PDF_Le(const Ray& ray) const;
     // The flux entering through the portal, W nm^-1: its area times the radiance integrated
     // over the projected solid angle of the directions through it (for the "power" light
     // sampler; pbrt-v4 divides by the Jacobian here where it should multiply).
@@ -64,6 +69,7 @@ class PortalInfiniteLight {
     const RGBColorSpace* colorSpace;
     Float scale;
     WindowedPiecewiseConstant2D distribution;
+    mutable Point3f sceneCenter;
     mutable Float sceneRadius = 0;
 };
 

@@ -28,6 +28,13 @@ class SpotLight {
                                           const SampledWavelengths& lambda,
                                           bool allowIncompletePDF = false) const;
     Float PDF_Li(const LightSampleContext&, Vector3f, bool = false) const { return 0; }
+    // A ray leaving the light: the full cone or the falloff ring chosen in proportion to their
+    // share of ConeSolidAngle (u2[0]), then uniform in the cone or smoothstep-distributed in cos
+    // theta in the ring (u1); pdfPos 1 (pbrt-v4's SpotLight::SampleLe).
+    std::optional<LightLeSample> SampleLe(Point2f u1, Point2f u2,
+                                          const SampledWavelengths& lambda) const;
+    // pdfPos 0 (delta), pdfDir the density of SampleLe's direction ray.d.
+    LightLePDF PDF_Le(const Ray& ray) const;
     // scale I 2 pi ((1 - cos start) + (cos start - cos end) / 2), W nm^-1.
     SampledSpectrum Phi(const SampledWavelengths& lambda) const;
     void Preprocess(const Bounds3f&) const {}

@@ -158,6 +158,31 @@ std::optional<LightLiSample> ThermalAreaLight::SampleLi(const LightSampleContext
     return ls;
 }
 
+std::optional<ShapeSample> ThermalAreaLight::SamplePosition(Point2f u) const {
+    std::optional<ShapeSample> ss;
+    if (distribution) {
+        Float pdfU = 0;
+        Point2f up = distribution->Sample(u, &pdfU);
+        ss = shape->SampleParametric(up);
+        if (ss) ss->pdf *= pdfU;
+    } else {
+        ss = shape->Sample(u);
+    }
+    if (!ss || !(ss->pdf > 0) || !std::isfinite(ss->pdf)) return {};
+    return ss;
+}
+
+LightLePDF ThermalAreaLight::PDF_Le(const Interaction& intr, Vector3f w) const {
+    Float pdfPos = 0;
+    if (distribution) {
+        std::optional<Float> p = ParametricPDF(intr.p);
+        pdfPos = p ? *p : 0;
+    } else {
+        pdfPos = shape->PDF(intr);
+    }
+    return {std::isfinite(pdfPos) ? pdfPos : 0, EmissionDirectionPDF(intr.n, TwoSided(), w)};
+}
+
 Float ThermalAreaLight::PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool) const {
     ShapeSampleContext shapeCtx(ctx.p, ctx.n, ctx.ns, 0);
     if (!distribution) {

@@ -19,6 +19,7 @@
 #include "base/rng.h"
 #include "base/sampling.h"
 #include "core/geometry/alpha_mask.h"
+#include "lights/area_light_sampling.h"
 #include "lights/light_sample.h"
 #include "thermal/thermal_emission.h"
 
@@ -91,6 +92,29 @@ class ThermalAreaLight {
         return emission->L<Radiance>(si, bsdf, w, lambda);
     }
     Float PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool allowIncompletePDF = false) const;
+    // A ray leaving the hot body (pbrt-v4's DiffuseAreaLight::SampleLe): a point by power over
+    // the parameterisation where SamplesByPower(), else uniform over the area (u1; pdfPos per
+    // m^2), a cosine-distributed direction on either side (u2); L the surface's own emission
+    // towards it, from the BSDF that shader builds there (as DeferredL). nullopt where the
+    // shape is cut out or nothing is emitted.
+    template <typename Shader>
+    std::optional<LightLeSample> SampleLe(Point2f u1, Point2f u2, const SampledWavelengths& lambda,
+                                          const Shader& shader) const {
+        std::optional<ShapeSample> ss = SamplePosition(u1);
+        if (!ss) return {};
+        Float pdfDir = 0;
+        Vector3f w = SampleEmissionDirection(ss->intr.n, TwoSided(), u2, &pdfDir);
+        if (!(pdfDir > 0)) return {};
+        SurfaceInteraction si = InteractionAt(ss->intr.p, 0, w);
+        if (alpha && alpha->Masked(si, HashToUniform(Hash(ss->intr.p)))) return {};
+        SampledWavelengths l = lambda;
+        BSDF bsdf = shader.GetBSDF(si, l);
+        SampledSpectrum Le = emission->L<SampledSpectrum>(si, bsdf, w, lambda);
+        if (!Le) return {};
+        return LightLeSample{Le, ss->intr.SpawnRay(w), ss->intr, ss->pdf, pdfDir};
+    }
+    // The densities of SampleLe leaving intr (a point of the shape, with its normal) towards w.
+    LightLePDF PDF_Le(const Interaction& intr, Vector3f w) const;
     // Emitted power over 360-830 nm, W (both sides), as estimated at creation (or by the last
     // EstimatePower).
     Float VisiblePower() const { return visiblePower; }
@@ -104,6 +128,8 @@ class ThermalAreaLight {
     // The full interaction at a point of the shape, with the shape's material and emission.
     SurfaceInteraction InteractionAt(Point3f p, Float time, Vector3f wo) const;
     std::optional<Float> ParametricPDF(Point3f p) const;
+    // A point of the shape with its density per m^2 (by power where SamplesByPower())
+    std::optional<ShapeSample> SamplePosition(Point2f u) const;
 
     const Shape* shape;
     const AlphaMask* alpha = nullptr;

@@ -27,6 +27,22 @@ Float UniformInfiniteLight::PDF_Li(const LightSampleContext&, Vector3f,
     return allowIncompletePDF ? 0 : UniformSpherePDF();
 }
 
+std::optional<LightLeSample> UniformInfiniteLight::SampleLe(
+    Point2f u1, Point2f u2, const SampledWavelengths& lambda) const {
+    SampledSpectrum L = scale * Lemit.Sample(lambda);
+    if (!L || !(sceneRadius > 0)) return {};
+    Vector3f w = SampleUniformSphere(u1);
+    Frame frame = Frame::FromZ(-w);
+    Point2f cd = SampleUniformDiskConcentric(u2);
+    Point3f pDisk = sceneCenter + sceneRadius * frame.FromLocal(Vector3f(cd.x, cd.y, 0));
+    return LightLeSample{L, Ray(pDisk - sceneRadius * w, w), std::nullopt,
+                         1 / (Pi * Sqr(sceneRadius)), UniformSpherePDF()};
+}
+
+LightLePDF UniformInfiniteLight::PDF_Le(const Ray&) const {
+    return {1 / (Pi * Sqr(sceneRadius)), UniformSpherePDF()};
+}
+
 SampledSpectrum UniformInfiniteLight::Phi(const SampledWavelengths& lambda) const {
     return 4 * Pi * Pi * Sqr(sceneRadius) * scale * Lemit.Sample(lambda);
 }

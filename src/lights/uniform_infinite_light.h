@@ -25,6 +25,12 @@ class UniformInfiniteLight {
                                           const SampledWavelengths& lambda,
                                           bool allowIncompletePDF = false) const;
     Float PDF_Li(const LightSampleContext& ctx, Vector3f wi, bool allowIncompletePDF = false) const;
+    // A ray entering the scene: direction uniform over the sphere (u1), origin uniform on the
+    // disk of the scene's bounding sphere perpendicular to it (u2), pdfPos 1 / (pi r^2),
+    // pdfDir 1 / 4 pi (pbrt-v4's UniformInfiniteLight::SampleLe).
+    std::optional<LightLeSample> SampleLe(Point2f u1, Point2f u2,
+                                          const SampledWavelengths& lambda) const;
+    LightLePDF PDF_Le(const Ray&) const;
     // 4 pi^2 r^2 scale L, W nm^-1 (r: the scene's bounding-sphere radius).
     SampledSpectrum Phi(const SampledWavelengths& lambda) const;
     void Preprocess(const Bounds3f& sceneBounds) const;

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/camera/camera_sample.h"
+#include "render/bdpt_integrator.h"
 #include "render/path_integrator.h"
 #include "render/volpath_integrator.h"
 
@@ -132,6 +133,9 @@ RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
     constexpr int tileSize = 16;
     int waveStart = std::clamp(settings.startSample, 0, spp), waveSize = 1;
     if (observer && waveStart > 0) observer->Advanced(int64_t(res.x) * res.y * waveStart);
+    // Splats (light tracing) are the sums of all samples so far: 1 / their count on output
+    RGBFilm& film = *scene.job->film;
+    if (waveStart > 0) film.SetSplatScale(1.0 / waveStart);
     stats.completedSamples = waveStart;
     auto lastCheckpoint = start;
     while (waveStart < spp) {
@@ -157,6 +161,7 @@ RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
             break;
         }
         stats.completedSamples = waveEnd;
+        film.SetSplatScale(1.0 / waveEnd);
         const auto now = std::chrono::steady_clock::now();
         if (settings.checkpoint && waveEnd < spp &&
             std::chrono::duration<double>(now - lastCheckpoint).count() >=
@@ -186,6 +191,7 @@ RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
 
 RenderStats Render(Scene& scene, const RenderSettings& settings) {
     // The radiance variant (radiance.h) and integrator the scene needs, chosen once
+    if (scene.features.bidirectional) return RenderVariant<BDPTIntegrator>(scene, settings);
     if (scene.features.volumetric) {
         if (scene.features.polarized)
             return RenderVariant<VolPathIntegrator<PolarizedRadiance>>(scene, settings);

@@ -24,13 +24,17 @@ std::string SceneFeatures::ToString() const {
         varyingTemperatures ? ", varying temperatures" : "", footprintMaterials, materials,
         onOff(aovs), singleWavelength ? 1 : NSpectrumSamples, singleWavelength ? "" : "s",
         fixedPixelCenter ? "fixed" : "jittered",
-        lightSelection == LightSelection::BVH       ? "bvh"
+        bidirectional                               ? "power (bdpt)"
+        : lightSelection == LightSelection::BVH     ? "bvh"
         : lightSelection == LightSelection::Power   ? "power"
         : lightSelection == LightSelection::Uniform ? "uniform"
                                                     : "area",
         onOff(areaLights), onOff(environmentLight), onOff(dispersion), sheets,
         sheets == 1 ? "" : "s", polarized ? "on (Stokes vectors, Mueller matrices)" : "off", media,
-        emissiveMedia, thermalMedia, volumetric ? "volpath" : "path",
+        emissiveMedia, thermalMedia,
+        bidirectional ? "bdpt"
+        : volumetric  ? "volpath"
+                      : "path",
         genericVolumes ? "; generic volpath (--generic)" : "",
         genericFootprints ? "; generic footprints (--generic)" : "",
         genericAOVs ? "; generic AOVs (--generic)" : "");

@@ -40,6 +40,9 @@ class ThermalAreaLight;
 struct PathIntegratorSettings {
     // pbrt-v4's "volpath" (default; participating media) rather than "path" (media ignored)
     bool volumetric = true;
+    // pbrt-v4's "bdpt" (also what "mlt" and "sppm" render with): BDPTIntegrator, unless scene
+    // creation falls back to volpath (SceneFeatures::bidirectional)
+    bool bidirectional = false;
     int maxDepth = 5;         // pbrt-v4 "maxdepth"
     bool regularize = false;  // pbrt-v4 "regularize"
     LightStrategy strategy = LightStrategy::MIS;
@@ -85,6 +88,10 @@ struct SceneFeatures {
     int media = 0, emissiveMedia = 0, thermalMedia = 0;
     bool volumetric = false, genericVolumes = false;
     bool unnormalizedLightSamples = false;  // Light::HasUnnormalizedSamples (pbrt-v4 compatibility)
+    // Bidirectional path tracing (BDPTIntegrator) for "bdpt", "mlt" and "sppm": unless the
+    // scene has media, renders polarised light or has a camera other than perspective (then
+    // volpath, with a warning); the film then takes splats
+    bool bidirectional = false;
     // Polarised transport (radiance.h): when the film records Stokes layers, the camera
     // carries a polariser or a material is a polarising filter; otherwise the unpolarised
     // variant runs

@@ -43,7 +43,12 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOpti
         throw SceneError(e.loc,
                          "unknown integrator \"" + e.name + "\"" + DidYouMean(e.name, kIntegrators),
                          e.name);
-    if (e.name != "path" && e.name != "volpath")
+    // mlt and sppm converge to the image bdpt renders: rendered with bdpt (which may still
+    // fall back to volpath: DecideFeatures)
+    s.bidirectional = e.name == "bdpt" || e.name == "mlt" || e.name == "sppm";
+    if (e.name == "mlt" || e.name == "sppm")
+        diag.Warn(e.loc, "integrator \"" + e.name + "\" is not supported; rendered with \"bdpt\"");
+    else if (e.name != "path" && e.name != "volpath" && e.name != "bdpt")
         diag.Warn(e.loc, "integrator \"" + e.name + "\" is not supported; using \"volpath\"");
     s.volumetric = e.name != "path";
     s.maxDepth = e.parameters.GetOneInt("maxdepth", 5);
@@ -511,6 +516,27 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
     return f;
 }
 
+// Bidirectional path tracing (bdpt, and mlt and sppm which render with it) covers surfaces,
+// unpolarised light and the perspective camera; otherwise volpath, with a warning. The film
+// takes splats under bdpt.
+void DecideBidirectional(Scene& scene, const SceneDescription& desc, Diagnostics& diag) {
+    SceneFeatures& f = scene.features;
+    if (!scene.integrator.bidirectional) return;
+    const char* why = f.genericVolumes ? "--generic volpath"
+                      : f.media > 0    ? "participating media"
+                      : f.polarized    ? "polarised light (Stokes layers, a camera polariser or a "
+                                         "polarising filter)"
+                      : !scene.camera->Is<PerspectiveCamera>()
+                          ? "cameras other than \"perspective\""
+                          : nullptr;
+    if (why)
+        diag.Warn(desc.integrator.loc, "integrator \"" + desc.integrator.name +
+                                           "\": kiln's bdpt does not support " + why +
+                                           "; using \"volpath\"");
+    f.bidirectional = !why;
+    if (f.bidirectional) scene.job->film->EnableSplats();
+}
+
 // Polarised transport (render/radiance.h) when the film records Stokes layers, the camera
 // carries a polariser or a material is a polarising filter.
 bool NeedsPolarization(const Scene& scene, const SceneMaterials& materials) {
@@ -551,6 +577,7 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
     CreateLightSampler(scene);
     scene.varyingThermalLights = emitters.VaryingLights();
     scene.features = DecideFeatures(scene, desc, shapes, materials, emitters, options);
+    DecideBidirectional(scene, desc, diag);
     if (!scene.integrator.volumetric && !scene.media.empty())
         diag.Warn(desc.integrator.loc,
                   "integrator \"path\" ignores participating media (as pbrt-v4); use "
@@ -565,6 +592,7 @@ void Scene::SetJob(const RenderOptions& options, Diagnostics& diag) {
     auto next = std::make_unique<RenderJob>(arena.Budget());
     CreateJobFilm(*this, *next, options, diag);
     CreateJobSamplerAndShader(*this, *next, options, diag);
+    if (features.bidirectional) next->film->EnableSplats();
     job = std::move(next);
 }
 

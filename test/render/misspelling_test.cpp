@@ -51,11 +51,12 @@ TEST(Misspellings, StopTheSceneWithTheNearestName) {
 
 TEST(Misspellings, PbrtV4NamesKilnLacksStayWarnings) {
     std::string warnings;
-    // bdpt renders as volpath; "diagonal" is a film parameter used in the wrong place here
-    EXPECT_EQ(
-        ErrorOf("Shape \"sphere\" \"float diagonal\" 35\n", &warnings, "Integrator \"bdpt\"\n"),
-        "");
-    EXPECT_NE(warnings.find("integrator \"bdpt\" is not supported"), std::string::npos) << warnings;
+    // lightpath renders as volpath; "diagonal" is a film parameter used in the wrong place here
+    EXPECT_EQ(ErrorOf("Shape \"sphere\" \"float diagonal\" 35\n", &warnings,
+                      "Integrator \"lightpath\"\n"),
+              "");
+    EXPECT_NE(warnings.find("integrator \"lightpath\" is not supported"), std::string::npos)
+        << warnings;
     EXPECT_NE(warnings.find("unused parameter 'float diagonal'"), std::string::npos) << warnings;
 }
 

@@ -1,4 +1,5 @@
-// Camera: the closed set of cameras (pbrt-v4's Camera interface, minus light tracing).
+// Camera: the closed set of cameras (pbrt-v4's Camera interface; light tracing (We, PDF_We,
+// SampleWi) only for PerspectiveCamera, as in pbrt-v4).
 #pragma once
 
 #include <optional>

@@ -24,4 +24,22 @@ struct CameraRay {
     SampledSpectrum weight = SampledSpectrum(1);
 };
 
+// Importance arriving at a reference point from a point sampled on the camera's lens (pbrt-v4's
+// CameraWiSample): Wi the importance We of the ray from pLens towards pRef, wi the unit
+// direction from pRef towards pLens, pdf per sr at pRef, pRaster the film position the ray
+// reaches.
+struct CameraWiSample {
+    SampledSpectrum Wi;
+    Vector3f wi;
+    Float pdf = 0;
+    Point2f pRaster;
+    Point3f pRef, pLens;
+    Normal3f nLens;  // the lens normal (the camera's viewing direction)
+};
+
+// Densities of a camera ray (pbrt-v4's Camera::PDF_We): pos per m^2 of lens, dir per sr.
+struct CameraPDF {
+    Float pos = 0, dir = 0;
+};
+
 }  // namespace kiln

@@ -93,6 +93,13 @@ PerspectiveCamera::PerspectiveCamera(const CameraTransform& cameraTransform, Flo
     dxCamera = cameraFromRaster(Point3f(1, 0, 0)) - cameraFromRaster(Point3f(0, 0, 0));
     dyCamera = cameraFromRaster(Point3f(0, 1, 0)) - cameraFromRaster(Point3f(0, 0, 0));
 
+    // Area of the full image on the plane z = 1
+    Point3f pMin = cameraFromRaster(Point3f(0, 0, 0));
+    Point3f pMax = cameraFromRaster(Point3f(fullResolution.x, fullResolution.y, 0));
+    pMin = Point3f(pMin.x / pMin.z, pMin.y / pMin.z, 1);
+    pMax = Point3f(pMax.x / pMax.z, pMax.y / pMax.z, 1);
+    imagePlaneArea = std::abs((pMax.x - pMin.x) * (pMax.y - pMin.y));
+
     // Minimum differentials along the film diagonal (pbrt-v4 FindMinimumDifferentials); all
     // rays through the lens centre start at the origin, so position differentials vanish.
     minPosDifferentialX = minPosDifferentialY = Vector3f(0, 0, 0);
@@ -119,6 +126,64 @@ std::optional<CameraRay> PerspectiveCamera::GenerateRay(const CameraSample& samp
     Ray ray(Point3f(0, 0, 0), Normalize(Vector3f(pCamera)), SampleTime(sample.time));
     ApplyThinLens(sample.pLens, &ray);
     return CameraRay{cameraTransform.RenderFromCamera()(ray)};
+}
+
+namespace {
+// Whether p lies in b, edges included (pbrt-v4's Inside)
+bool Inside(Point2f p, const Bounds2f& b) {
+    return p.x >= b.pMin.x && p.x <= b.pMax.x && p.y >= b.pMin.y && p.y <= b.pMax.y;
+}
+}  // namespace
+
+bool PerspectiveCamera::RasterPosition(const Ray& ray, Float* cosTheta, Point2f* pRaster) const {
+    Vector3f dCamera = cameraTransform.CameraFromRender()(ray.d);
+    Float len = Length(dCamera);
+    if (!(len > 0)) return false;
+    *cosTheta = dCamera.z / len;
+    if (!(*cosTheta > 0)) return false;
+    // The ray's point on the plane of focus (z = 1 for a pinhole): its film position
+    Point3f oCamera = cameraTransform.CameraFromRender()(ray.o);
+    Float zFocus = lensRadius > 0 ? focalDistance : 1;
+    Point3f pFocus = oCamera + dCamera * ((zFocus - oCamera.z) / dCamera.z);
+    Point3f pRaster3 = (rasterFromScreen * screenFromCamera)(pFocus);
+    *pRaster = Point2f(pRaster3.x, pRaster3.y);
+    return true;
+}
+
+SampledSpectrum PerspectiveCamera::We(const Ray& ray, Bounds2f sampleBounds,
+                                      Point2f* pRasterOut) const {
+    Float cosTheta;
+    Point2f pRaster;
+    if (!RasterPosition(ray, &cosTheta, &pRaster)) return SampledSpectrum(0);
+    if (pRasterOut) *pRasterOut = pRaster;
+    if (!Inside(pRaster, sampleBounds)) return SampledSpectrum(0);
+    return SampledSpectrum(1 / (imagePlaneArea * LensArea() * Sqr(Sqr(cosTheta))));
+}
+
+CameraPDF PerspectiveCamera::PDF_We(const Ray& ray, Bounds2f sampleBounds) const {
+    Float cosTheta;
+    Point2f pRaster;
+    if (!RasterPosition(ray, &cosTheta, &pRaster) || !Inside(pRaster, sampleBounds)) return {};
+    return {1 / LensArea(), 1 / (imagePlaneArea * cosTheta * cosTheta * cosTheta)};
+}
+
+std::optional<CameraWiSample> PerspectiveCamera::SampleWi(Point3f pRef, Point2f u,
+                                                          Bounds2f sampleBounds) const {
+    Point2f pLens = lensRadius * SampleUniformDiskConcentric(u);
+    const Transform& renderFromCamera = cameraTransform.RenderFromCamera();
+    Point3f pLensRender = renderFromCamera(Point3f(pLens.x, pLens.y, 0));
+    Normal3f nLens = Normalize(renderFromCamera(Normal3f(0, 0, 1)));
+    Vector3f wi = pLensRender - pRef;
+    Float dist = Length(wi);
+    if (!(dist > 0)) return {};
+    wi = wi / dist;
+    Float cosLens = AbsDot(nLens, wi);
+    if (cosLens == 0) return {};
+    Float pdf = dist * dist / (cosLens * LensArea());
+    Point2f pRaster;
+    SampledSpectrum Wi = We(Ray(pLensRender, -wi), sampleBounds, &pRaster);
+    if (!Wi) return {};
+    return CameraWiSample{Wi, wi, pdf, pRaster, pRef, pLensRender, nLens};
 }
 
 // OrthographicCamera

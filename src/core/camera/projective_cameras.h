@@ -126,8 +126,30 @@ class PerspectiveCamera : public ProjectiveCamera {
     std::optional<CameraRay> GenerateRay(const CameraSample& sample,
                                          SampledWavelengths& lambda) const;
 
+    // Light tracing (pbrt-v4's PerspectiveCamera::We, PDF_We, SampleWi). sampleBounds: the
+    // raster area the film takes samples from (RGBFilm::SampleBounds); rays reaching the film
+    // outside it carry no importance. Importance is normalised so that its integral over the
+    // image plane at distance 1 (area A, the full image) and the lens (area pi r^2, 1 for a
+    // pinhole) is 1: We = 1 / (A lensArea cos^4 theta), theta from the viewing direction.
+    // We of a render-space ray leaving the lens (unit direction); *pRaster gets the film
+    // position it reaches.
+    SampledSpectrum We(const Ray& ray, Bounds2f sampleBounds, Point2f* pRaster = nullptr) const;
+    // Densities with which GenerateRay (film position uniform over the image, lens uniform)
+    // produces ray: pos 1 / lensArea, dir 1 / (A cos^3 theta); zero outside sampleBounds.
+    CameraPDF PDF_We(const Ray& ray, Bounds2f sampleBounds) const;
+    // A point on the lens (uniform, from u) seen from pRef, with its importance towards pRef.
+    std::optional<CameraWiSample> SampleWi(Point3f pRef, Point2f u, Bounds2f sampleBounds) const;
+    // The image plane's area at distance 1 in camera space (A above).
+    Float ImagePlaneArea() const { return imagePlaneArea; }
+
   private:
+    // cos theta of a render-space direction and the raster position it reaches; false if it
+    // points away from the film's side
+    bool RasterPosition(const Ray& ray, Float* cosTheta, Point2f* pRaster) const;
+    Float LensArea() const { return lensRadius > 0 ? Pi * Sqr(lensRadius) : 1; }
+
     Vector3f dxCamera, dyCamera;  // camera-space film offsets of one pixel
+    Float imagePlaneArea = 0;
 };
 
 // OrthographicCamera: parallel rays along +z; the screen window is in scene units.

@@ -234,11 +234,51 @@ void RGBFilm::AddSample(Point2i pPixel, const SampledSpectrum& L, const Stokes* 
     }
 }
 
+void RGBFilm::EnableSplats() {
+    if (splats.empty()) splats = std::vector<std::atomic<double>>(3 * pixels.size());
+}
+
+void RGBFilm::AddSplat(Point2f pFilm, const SampledSpectrum& L, const SampledWavelengths& lambda) {
+    auto reject = [&] { nonFiniteCount.fetch_add(1, std::memory_order_relaxed); };
+    if (!L.IsFinite() || !std::isfinite(pFilm.x) || !std::isfinite(pFilm.y)) return reject();
+    RGB rgb = sensor.ToSensorRGB(L, lambda);
+    if (!std::isfinite(rgb.r) || !std::isfinite(rgb.g) || !std::isfinite(rgb.b)) return reject();
+    Float m = std::max({rgb.r, rgb.g, rgb.b});
+    if (m > opts.maxComponentValue) rgb = rgb * (opts.maxComponentValue / m);
+    // Pixels whose centres lie within the filter's radius of pFilm, inside the pixel bounds
+    Vector2f r = filter.Radius();
+    Point2f pd(pFilm.x + 0.5f, pFilm.y + 0.5f);
+    const Bounds2i& b = opts.pixelBounds;
+    int x0 = std::max(b.pMin.x, int(std::floor(pd.x - r.x)));
+    int x1 = std::min(b.pMax.x, int(std::floor(pd.x + r.x)) + 1);
+    int y0 = std::max(b.pMin.y, int(std::floor(pd.y - r.y)));
+    int y1 = std::min(b.pMax.y, int(std::floor(pd.y + r.y)) + 1);
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            Float wt = filter.Evaluate(Point2f(pFilm.x - x - 0.5f, pFilm.y - y - 0.5f));
+            if (wt == 0) continue;
+            size_t i = 3 * PixelIndex({x, y});
+            for (int c = 0; c < 3; ++c) {
+                std::atomic<double>& a = splats[i + size_t(c)];
+                double v = a.load(std::memory_order_relaxed);
+                while (
+                    !a.compare_exchange_weak(v, v + double(wt) * rgb[c], std::memory_order_relaxed))
+                    ;
+            }
+        }
+}
+
 RGB RGBFilm::GetPixelRGB(Point2i p) const {
     const Pixel& px = pixels[PixelIndex(p)];
-    if (px.weightSum == 0) return RGB(0, 0, 0);
-    RGB rgb(Float(px.rgbSum[0] / px.weightSum), Float(px.rgbSum[1] / px.weightSum),
-            Float(px.rgbSum[2] / px.weightSum));
+    RGB rgb(0, 0, 0);
+    if (px.weightSum != 0)
+        rgb = RGB(Float(px.rgbSum[0] / px.weightSum), Float(px.rgbSum[1] / px.weightSum),
+                  Float(px.rgbSum[2] / px.weightSum));
+    if (!splats.empty()) {
+        size_t i = 3 * PixelIndex(p);
+        double s = splatScale / double(filter.Integral());
+        for (int c = 0; c < 3; ++c) rgb[c] += Float(s * splats[i + size_t(c)].load());
+    }
     return Mul(outputRGBFromSensorRGB, rgb) * std::exp2(opts.exposureEV);
 }
 
@@ -338,7 +378,7 @@ void RGBFilm::WriteImage(const std::string& filename, ImageMetadata metadata,
 
 // Checkpoint state
 namespace {
-constexpr char kStateMagic[8] = {'k', 'f', 'i', 'l', 'm', 0, 0, 1};
+constexpr char kStateMagic[8] = {'k', 'f', 'i', 'l', 'm', 0, 0, 2};
 
 template <typename T>
 void AppendRaw(std::string& out, const T* data, size_t count) {
@@ -348,27 +388,30 @@ void AppendRaw(std::string& out, const T* data, size_t count) {
 
 std::string RGBFilm::SaveState() const {
     std::string out(kStateMagic, sizeof(kStateMagic));
-    const int64_t header[7] = {opts.pixelBounds.pMin.x,     opts.pixelBounds.pMin.y,
-                               opts.pixelBounds.pMax.x,     opts.pixelBounds.pMax.y,
-                               int64_t(pixels.size()),      int64_t(aovs.size()),
-                               int64_t(stokesPixels.size())};
-    AppendRaw(out, header, 7);
+    const int64_t header[8] = {opts.pixelBounds.pMin.x,      opts.pixelBounds.pMin.y,
+                               opts.pixelBounds.pMax.x,      opts.pixelBounds.pMax.y,
+                               int64_t(pixels.size()),       int64_t(aovs.size()),
+                               int64_t(stokesPixels.size()), int64_t(splats.size())};
+    AppendRaw(out, header, 8);
     AppendRaw(out, pixels.data(), pixels.size());
     AppendRaw(out, aovs.data(), aovs.size());
     AppendRaw(out, stokesPixels.data(), stokesPixels.size());
+    std::vector<double> splatValues(splats.size());
+    for (size_t i = 0; i < splats.size(); ++i) splatValues[i] = splats[i].load();
+    AppendRaw(out, splatValues.data(), splatValues.size());
     const int64_t counters[2] = {nonFiniteCount.load(), firstNonFinite.load()};
     AppendRaw(out, counters, 2);
     return out;
 }
 
 bool RGBFilm::LoadState(std::string_view state) {
-    const int64_t expect[7] = {opts.pixelBounds.pMin.x,     opts.pixelBounds.pMin.y,
-                               opts.pixelBounds.pMax.x,     opts.pixelBounds.pMax.y,
-                               int64_t(pixels.size()),      int64_t(aovs.size()),
-                               int64_t(stokesPixels.size())};
+    const int64_t expect[8] = {opts.pixelBounds.pMin.x,      opts.pixelBounds.pMin.y,
+                               opts.pixelBounds.pMax.x,      opts.pixelBounds.pMax.y,
+                               int64_t(pixels.size()),       int64_t(aovs.size()),
+                               int64_t(stokesPixels.size()), int64_t(splats.size())};
     size_t size = sizeof(kStateMagic) + sizeof(expect) + pixels.size() * sizeof(Pixel) +
                   aovs.size() * sizeof(AOVPixel) + stokesPixels.size() * sizeof(StokesPixel) +
-                  2 * sizeof(int64_t);
+                  splats.size() * sizeof(double) + 2 * sizeof(int64_t);
     if (state.size() != size || std::memcmp(state.data(), kStateMagic, sizeof(kStateMagic)) != 0 ||
         std::memcmp(state.data() + sizeof(kStateMagic), expect, sizeof(expect)) != 0)
         return false;
@@ -379,7 +422,8 @@ bool RGBFilm::LoadState(std::string_view state) {
                   sizeof(StokesPixel) % sizeof(double) == 0);
     size_t sums = (pixels.size() * sizeof(Pixel) + aovs.size() * sizeof(AOVPixel) +
                    stokesPixels.size() * sizeof(StokesPixel)) /
-                  sizeof(double);
+                      sizeof(double) +
+                  splats.size();
     for (size_t i = 0; i < sums; ++i) {
         double v;
         std::memcpy(&v, p + i * sizeof(double), sizeof(double));
@@ -396,6 +440,11 @@ bool RGBFilm::LoadState(std::string_view state) {
     take(pixels.data(), pixels.size() * sizeof(Pixel));
     take(aovs.data(), aovs.size() * sizeof(AOVPixel));
     take(stokesPixels.data(), stokesPixels.size() * sizeof(StokesPixel));
+    for (std::atomic<double>& s : splats) {
+        double v;
+        take(&v, sizeof(v));
+        s.store(v);
+    }
     int64_t counters[2];
     take(counters, sizeof(counters));
     nonFiniteCount = counters[0];
@@ -407,6 +456,7 @@ void RGBFilm::Clear() {
     std::fill(pixels.begin(), pixels.end(), Pixel());
     std::fill(aovs.begin(), aovs.end(), AOVPixel());
     std::fill(stokesPixels.begin(), stokesPixels.end(), StokesPixel());
+    for (std::atomic<double>& s : splats) s.store(0);
     nonFiniteCount = 0;
     firstNonFinite = -1;
 }

@@ -155,6 +155,17 @@ class RGBFilm {
         AddSample(pPixel, S[0], &S, lambda, visibleSurface, weight);
     }
 
+    // Splats (pbrt-v4's RGBFilm::AddSplat, for light tracing): radiance arriving at raster
+    // position pFilm, spread over the pixels within the filter's radius with the filter's
+    // value there (unnormalised; divided by the filter's integral on output) and scaled on
+    // output by SetSplatScale's factor (1 / samples per pixel). Thread-safe (atomic adds:
+    // the sums' rounding depends on the order threads add in). Needs EnableSplats first.
+    // Sensor response and maxComponentValue as AddSample; non-finite L is counted and dropped.
+    void EnableSplats();
+    bool HasSplats() const { return !splats.empty(); }
+    void AddSplat(Point2f pFilm, const SampledSpectrum& L, const SampledWavelengths& lambda);
+    void SetSplatScale(double scale) { splatScale = scale; }
+
     // Pixel value in the output colour space with exposure applied (black if no weight).
     RGB GetPixelRGB(Point2i p) const;
     // Stokes component k (0..3) of a pixel, like GetPixelRGB (k = 0 is GetPixelRGB; 1..3 are
@@ -216,6 +227,9 @@ class RGBFilm {
     std::vector<Pixel> pixels;
     std::vector<AOVPixel> aovs;             // empty unless writeAOVs
     std::vector<StokesPixel> stokesPixels;  // empty unless stokes
+    // Splatted sensor RGB, 3 per pixel (empty unless EnableSplats), and its output scale
+    std::vector<std::atomic<double>> splats;
+    double splatScale = 1;
     std::atomic<int64_t> nonFiniteCount{0};
     std::atomic<int64_t> firstNonFinite{-1};  // pixel index
 };
