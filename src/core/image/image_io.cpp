@@ -18,6 +18,7 @@
 #include "core/image/image_codec.h"
 #include "core/image/pfm_codec.h"
 #include "core/image/png_codec.h"
+#include "core/image/tga_codec.h"
 #include "spectral/color.h"
 
 namespace kiln {
@@ -141,7 +142,8 @@ Image Image::Read(const std::string& filename, ImageMetadata* metadata,
             charge(size.width, size.height, size.channels, size.bytes);
             charged = true;
             in = ExrCodec().Open(filename);
-        } else if (!(in = OpenPng(filename)) && !(in = OpenPfm(filename))) {
+        } else if (!(in = OpenPng(filename)) && !(in = OpenPfm(filename)) &&
+                   !(in = OpenTga(filename))) {
             in = OIIOCodec().Open(filename);
         }
     } catch (const MemoryLimitError&) {
