@@ -63,7 +63,7 @@ void PortalInfiniteLight::Preprocess(const Bounds3f& sceneBounds) const {
 std::optional<Point2f> PortalInfiniteLight::ImageFromRender(Vector3f wRender, Float* dw_duv) const {
     Vector3f w = portalFrame.ToLocal(wRender);
     if (!(w.z > 0)) return std::nullopt;
-    if (dw_duv) *dw_duv = Sqr(Pi) * (1 - Sqr(w.x)) * (1 - Sqr(w.y)) / w.z;
+    if (dw_duv) *dw_duv = Sqr(Pi) * (Sqr(w.y) + Sqr(w.z)) * (Sqr(w.x) + Sqr(w.z)) / w.z;
     Float alpha = std::atan2(w.x, w.z), beta = std::atan2(w.y, w.z);
     return Point2f(Clamp((alpha + Pi / 2) / Pi, 0, 1), Clamp((beta + Pi / 2) / Pi, 0, 1));
 }
@@ -71,7 +71,7 @@ std::optional<Point2f> PortalInfiniteLight::ImageFromRender(Vector3f wRender, Fl
 Vector3f PortalInfiniteLight::RenderFromImage(Point2f uv, Float* dw_duv) const {
     Float alpha = -Pi / 2 + uv.x * Pi, beta = -Pi / 2 + uv.y * Pi;
     Vector3f w = Normalize(Vector3f(std::tan(alpha), std::tan(beta), 1));
-    if (dw_duv) *dw_duv = Sqr(Pi) * (1 - Sqr(w.x)) * (1 - Sqr(w.y)) / w.z;
+    if (dw_duv) *dw_duv = Sqr(Pi) * (Sqr(w.y) + Sqr(w.z)) * (Sqr(w.x) + Sqr(w.z)) / w.z;
     return portalFrame.FromLocal(w);
 }
 
@@ -111,7 +111,10 @@ std::optional<LightLiSample> PortalInfiniteLight::SampleLi(const LightSampleCont
     if (!uv) return std::nullopt;
     Float dw_duv;
     Vector3f wi = RenderFromImage(*uv, &dw_duv);
-    if (!(dw_duv > 0)) return std::nullopt;
+    // Grazing directions whose Jacobian rounds to 0 on the way back are not sampled, as
+    // PDF_Li gives them density 0
+    Float dwBack = 0;
+    if (!(dw_duv > 0) || !ImageFromRender(wi, &dwBack) || !(dwBack > 0)) return std::nullopt;
     Point3f pOutside = ctx.p + wi * (2 * sceneRadius);
     return LightLiSample{ImageLookup(*uv, lambda), wi, mapPDF / dw_duv,
                          Interaction(pOutside, Normal3f(), Point2f())};
@@ -136,7 +139,8 @@ std::optional<LightLeSample> PortalInfiniteLight::SampleLe(Point2f u1, Point2f u
     if (!uv) return {};
     Float dw_duv;
     Vector3f w = -RenderFromImage(*uv, &dw_duv);
-    if (!(dw_duv > 0)) return {};
+    Float dwBack = 0;  // (as in SampleLi)
+    if (!(dw_duv > 0) || !ImageFromRender(-w, &dwBack) || !(dwBack > 0)) return {};
     Frame frame = Frame::FromZ(-w);
     Point2f cd = SampleUniformDiskConcentric(u2);
     Point3f pDisk = sceneCenter + sceneRadius * frame.FromLocal(Vector3f(cd.x, cd.y, 0));

@@ -54,7 +54,8 @@ class PortalInfiniteLight {
 
     // Portal parameterisation: uv of a render-space direction (nullopt behind the portal),
     // and the direction of uv; dw_duv is the Jacobian, steradians per unit uv area (pbrt-v4's
-    // "duv_dw": pi^2 (1 - x^2) (1 - y^2) / z for the local direction (x, y, z)).
+    // "duv_dw": pi^2 (1 - x^2) (1 - y^2) / z for the local unit direction (x, y, z), computed
+    // as pi^2 (y^2 + z^2) (x^2 + z^2) / z, which keeps grazing directions' Jacobian positive).
     std::optional<Point2f> ImageFromRender(Vector3f wRender, Float* dw_duv = nullptr) const;
     Vector3f RenderFromImage(Point2f uv, Float* dw_duv = nullptr) const;
     // The portal seen from p, as a rectangle of uv (nullopt when p is behind the portal).

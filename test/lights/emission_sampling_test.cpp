@@ -162,3 +162,15 @@ TEST(EmissionSampling, ImageInfiniteLight) {
     CheckDirections(light, Vector3f(0, 0, 1), -1, 300000);
     CheckPower(light, 200000);
 }
+
+// A portal light's rays enter through the portal's side: directions over the hemisphere
+// facing into the room (its outward normal is +y here)
+TEST(EmissionSampling, PortalInfiniteLight) {
+    std::array<Point3f, 4> portal = {Point3f(-0.8f, 2, 1), Point3f(0.8f, 2, 1), Point3f(0.8f, 2, 2),
+                                     Point3f(-0.8f, 2, 2)};
+    PortalInfiniteLight env(Rotate(30, Vector3f(1, 1, 0)), Environment(), &RGBColorSpace::sRGB(), 1,
+                            portal);
+    env.Preprocess(Bounds3f(Point3f(-2, -2, 0), Point3f(2, 2, 3)));
+    Light light(&env);
+    CheckDirections(light, Vector3f(0, -1, 0), 0, 200000);
+}
