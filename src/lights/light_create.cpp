@@ -48,7 +48,8 @@ Image ReadEmissionImage(const std::string& filename, const FileLoc& loc,
     Image image;
     ImageMetadata metadata;
     try {
-        image = Image::Read(filename, &metadata, std::nullopt, &budget);
+        // 8-bit and 16-bit data as sRGB whatever a PNG's gAMA chunk says, as pbrt-v4 reads them
+        image = Image::Read(filename, &metadata, ColorEncoding::SRGB(), &budget);
     } catch (const std::exception& e) {
         throw SceneError(loc, e.what(), filename);
     }

@@ -33,14 +33,16 @@ HairBxDF HairMaterial::GetBxDF(const MaterialEvalContext& ctx,
 
 HairMaterial* HairMaterial::Create(const TextureParameterDictionary& params, ObjectArena& arena,
                                    Diagnostics& diag) {
-    Params p{params.GetSpectrumTextureOrNull("sigma_a", SpectrumType::Unbounded, arena),
-             params.GetSpectrumTextureOrNull("reflectance", SpectrumType::Albedo, arena),
-             params.GetFloatTextureOrNull("eumelanin", arena),
-             params.GetFloatTextureOrNull("pheomelanin", arena),
-             params.GetFloatTexture("eta", 1.55f, arena),
-             params.GetFloatTexture("beta_m", 0.3f, arena),
-             params.GetFloatTexture("beta_n", 0.3f, arena),
-             params.GetFloatTexture("alpha", 2.f, arena)};
+    Params p{
+        params.GetSpectrumTextureOrNull("sigma_a", SpectrumType::Unbounded, arena),
+        // ("color" is pbrt-v4's older name for it, read when "reflectance" is absent)
+        params.Has("reflectance")
+            ? params.GetSpectrumTextureOrNull("reflectance", SpectrumType::Albedo, arena)
+            : params.GetSpectrumTextureOrNull("color", SpectrumType::Albedo, arena),
+        params.GetFloatTextureOrNull("eumelanin", arena),
+        params.GetFloatTextureOrNull("pheomelanin", arena),
+        params.GetFloatTexture("eta", 1.55f, arena), params.GetFloatTexture("beta_m", 0.3f, arena),
+        params.GetFloatTexture("beta_n", 0.3f, arena), params.GetFloatTexture("alpha", 2.f, arena)};
     auto melaninLoc = [&] { return params.Loc(p.eumelanin ? "eumelanin" : "pheomelanin"); };
     if (p.sigma_a) {
         if (p.reflectance)

@@ -290,6 +290,7 @@ struct SceneShapes {
     MediumInterface media;
     const AlphaMask* alpha = nullptr;  // cut-outs ("alpha"), nullptr: opaque
     const CurveSet* curves = nullptr;  // a "curve" directive (not a Shape)
+    bool interfaceMaterial = false;    // an interface marks a boundary: no area light on it
 };
 
 SceneShapes CreateShapes(ShapeSceneEntity& s, const NamedTextures& textures,
@@ -300,6 +301,7 @@ SceneShapes CreateShapes(ShapeSceneEntity& s, const NamedTextures& textures,
     TextureParameterDictionary params(&s.parameters, &textures);
     ThermalProperties own = ReadThermalProperties(params, s.name == "trianglemesh", arena);
     result.alpha = TextureAlphaMask::Read(params, arena);
+    result.interfaceMaterial = materials.Of(s)->IsInterface();
     const kiln::Transform* renderFromObject = arena.New<kiln::Transform>(s.renderFromObject);
     const kiln::Transform* objectFromRender =
         arena.New<kiln::Transform>(Inverse(s.renderFromObject));
@@ -360,7 +362,11 @@ std::vector<std::vector<int>> CreateLights(Scene& scene, SceneDescription& desc,
     std::vector<std::vector<int>> shapeLights(desc.shapes.size());
     for (size_t i = 0; i < desc.shapes.size(); ++i) {
         const ShapeSceneEntity& s = desc.shapes[i];
-        if (s.areaLightIndex >= 0) {
+        if (s.areaLightIndex >= 0 && shapes[i].interfaceMaterial) {
+            diag.Warn(s.loc,
+                      "an area light on a shape with an \"interface\" material is ignored (as in "
+                      "pbrt-v4): the surface only marks a boundary between media");
+        } else if (s.areaLightIndex >= 0) {
             TransformedSceneEntity& le = desc.areaLights[size_t(s.areaLightIndex)];
             if (le.name != "diffuse")
                 diag.Warn(le.loc,

@@ -321,9 +321,15 @@ TEST(Sampler, Create) {
     EXPECT_EQ(Sampler::Create("stratified", strat, res, FileLoc(), diag).SamplesPerPixel(), 15);
     EXPECT_EQ(Sampler::Create("stratified", strat, res, FileLoc(), diag, 12).SamplesPerPixel(), 12);
 
+    // pbrt-v4's counts: zsobol renders the largest power of two not above the count (12 -> 8),
+    // paddedsobol the count itself; independent defaults to 4 samples, the others to 16
     int warnings = diag.WarningCount();
-    EXPECT_EQ(Sampler::Create("zsobol", empty, res, FileLoc(), diag, 12).SamplesPerPixel(), 16);
+    EXPECT_EQ(Sampler::Create("zsobol", empty, res, FileLoc(), diag, 12).SamplesPerPixel(), 8);
     EXPECT_EQ(diag.WarningCount(), warnings + 1);
+    EXPECT_EQ(Sampler::Create("paddedsobol", empty, res, FileLoc(), diag, 12).SamplesPerPixel(),
+              12);
+    EXPECT_EQ(diag.WarningCount(), warnings + 2);
+    EXPECT_EQ(Sampler::Create("independent", empty, res, FileLoc(), diag).SamplesPerPixel(), 4);
 
     ParameterDictionary badRand({StringParam("randomization", "bogus")}, nullptr);
     EXPECT_THROW(Sampler::Create("zsobol", badRand, res, FileLoc(), diag), SceneError);

@@ -100,6 +100,28 @@ TEST(FilmOutput, HalfFloatExrFallsBackToFloatWhenValuesWouldOverflow) {
     EXPECT_EQ(dir.Files(), 1);
 }
 
+// PFM and HDR files name no primaries: a film in another colour space writes them in sRGB's,
+// as pbrt-v4 does; EXR keeps the film's colour space (and says so)
+TEST(FilmOutput, PfmAndHdrAreWrittenInSRGBPrimaries) {
+    TempDir dir;
+    FilmFixture f;
+    const RGBColorSpace& rec2020 = *RGBColorSpace::GetNamed("rec2020");
+    RGBFilm* film = f.Make(SmallRes(), "rgb", 1, &rec2020);
+    SampledSpectrum s(0.f);
+    for (int i = 0; i < NSpectrumSamples; ++i) s[i] = 0.2f + 0.3f * i;
+    for (int i = 0; i < 64; ++i)
+        film->AddSample({2, 1}, s, film->SampleWavelengths((i + 0.5f) / 64), nullptr, 1);
+    std::string exr = (dir.path / "a.exr").string(), pfm = (dir.path / "a.pfm").string();
+    film->WriteImage(exr, {}, "", nullptr);
+    film->WriteImage(pfm, {}, "", nullptr);
+    Image e = Image::Read(exr), p = Image::Read(pfm);
+    RGB inRec2020(e.GetChannel({2, 1}, 0), e.GetChannel({2, 1}, 1), e.GetChannel({2, 1}, 2));
+    RGB expected = Mul(rec2020.ConvertTo(RGBColorSpace::sRGB()), inRec2020);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(p.GetChannel({2, 1}, c), expected[c], 2e-3f * std::abs(expected[c]) + 1e-5f);
+    EXPECT_GT(std::abs(expected[0] - inRec2020[0]), 0.01f * std::abs(inRec2020[0]));
+}
+
 TEST(FilmOutput, NamesNearTheFileNameLimitAreWritten) {
     // The temporary name is longer than the final one unless it is shortened to fit
     TempDir dir;

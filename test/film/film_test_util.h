@@ -27,10 +27,11 @@ struct FilmFixture {
     Diagnostics diag{nullptr};
     BoxFilter box;
     Filter filter{&box};
-    RGBFilm* Make(ParsedParameterVector params, std::string type = "rgb", Float exposureTime = 1) {
+    RGBFilm* Make(ParsedParameterVector params, std::string type = "rgb", Float exposureTime = 1,
+                  const RGBColorSpace* colorSpace = &RGBColorSpace::sRGB()) {
         ParameterDictionary dict(std::move(params), nullptr);
-        return RGBFilm::Create(type, dict, exposureTime, filter, &RGBColorSpace::sRGB(), FileLoc(),
-                               arena, diag);
+        return RGBFilm::Create(type, dict, exposureTime, filter, colorSpace, FileLoc(), arena,
+                               diag);
     }
 };
 

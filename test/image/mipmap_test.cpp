@@ -79,6 +79,42 @@ TEST(MIPMap, EightBitLevelsStayEightBit) {
     EXPECT_GT(m32.MemoryBytes(), 3 * bytes);
 }
 
+// Float lookups of colour images as pbrt-v4's: between texels (bilinear, trilinear) the mean
+// of R, G and B, or alpha when it is not 1 everywhere; point lookups the first channel
+TEST(MIPMap, FloatLookupsOfColourImagesAsPbrtV4) {
+    for (bool withAlpha : {false, true})
+        for (Float alpha : {1.f, 0.25f}) {
+            Image im(PixelFormat::Float, {4, 4},
+                     withAlpha ? std::vector<std::string>{"R", "G", "B", "A"}
+                               : std::vector<std::string>{"R", "G", "B"});
+            for (int y = 0; y < 4; ++y)
+                for (int x = 0; x < 4; ++x) {
+                    im.SetChannel({x, y}, 0, 0.1f), im.SetChannel({x, y}, 1, 0.5f);
+                    im.SetChannel({x, y}, 2, 0.9f);
+                    if (withAlpha) im.SetChannel({x, y}, 3, alpha);
+                }
+            Float expected = withAlpha && alpha < 1 ? alpha : 0.5f;
+            for (FilterFunction f : {FilterFunction::Bilinear, FilterFunction::Trilinear}) {
+                MIPMap m(im, nullptr, WrapMode::Repeat, {f, 8});
+                EXPECT_NEAR(m.Filter<Float>({0.3f, 0.6f}, {0, 0}, {0, 0}), expected, 1e-6f);
+                // RGB lookups ignore alpha
+                EXPECT_NEAR(m.Filter<RGB>({0.3f, 0.6f}, {0, 0}, {0, 0}).b, 0.9f, 1e-6f);
+            }
+            MIPMap point(im, nullptr, WrapMode::Repeat, {FilterFunction::Point, 8});
+            EXPECT_NEAR(point.Filter<Float>({0.3f, 0.6f}, {0, 0}, {0, 0}), 0.1f, 1e-6f);
+        }
+}
+
+// Trilinear filtering reads level 0 alone for footprints under two texels (pbrt-v4)
+TEST(MIPMap, TrilinearBelowLevelOneIsLevelZero) {
+    Image im = Checker({16, 16});
+    MIPMap tri(im, nullptr, WrapMode::Repeat, {FilterFunction::Trilinear, 8});
+    MIPMap bi(im, nullptr, WrapMode::Repeat, {FilterFunction::Bilinear, 8});
+    Point2f st(0.53f, 0.21f);
+    Vector2f d(1.5f / 16 / 2, 0);  // a footprint 1.5 texels wide: level 0.58
+    EXPECT_EQ(tri.Filter<Float>(st, d, d), bi.Filter<Float>(st, {0, 0}, {0, 0}));
+}
+
 TEST(MIPMap, ConstantFiltersToConstant) {
     RGB v(0.25f, 0.5f, 2.f);
     for (FilterFunction f : {FilterFunction::Point, FilterFunction::Bilinear,
@@ -87,8 +123,14 @@ TEST(MIPMap, ConstantFiltersToConstant) {
         for (Float w : {0.f, 0.001f, 0.03f, 0.2f, 3.f}) {
             RGB r = m.Filter<RGB>({0.3f, 0.7f}, Vector2f(w, 0.1f * w), Vector2f(-0.3f * w, w));
             for (int c = 0; c < 3; ++c) EXPECT_NEAR(r[c], v[c], 1e-5f) << ToString(f) << " w=" << w;
-            EXPECT_NEAR(m.Filter<Float>({0.9f, 0.1f}, Vector2f(w, 0), Vector2f(0, w)), v.r, 1e-5f);
         }
+        // Float lookups of one channel
+        Image grey(PixelFormat::Float, {13, 7}, {"Y"});
+        for (int y = 0; y < 7; ++y)
+            for (int x = 0; x < 13; ++x) grey.SetChannel({x, y}, 0, v.r);
+        MIPMap g(grey, nullptr, WrapMode::Repeat, {f, 8});
+        for (Float w : {0.f, 0.001f, 0.03f, 0.2f, 3.f})
+            EXPECT_NEAR(g.Filter<Float>({0.9f, 0.1f}, Vector2f(w, 0), Vector2f(0, w)), v.r, 1e-5f);
     }
 }
 
@@ -103,7 +145,10 @@ TEST(MIPMap, BilinearAtTexelCentresReproducesTexels) {
             Point2f st((x + 0.5f) / 8, (y + 0.5f) / 4);
             RGB r = m.Bilerp(st);
             EXPECT_FLOAT_EQ(r.g, im.GetChannel({x, y}, 1));
-            EXPECT_FLOAT_EQ(m.BilerpFloat(st), im.GetChannel({x, y}, 0));
+            Float mean =
+                (im.GetChannel({x, y}, 0) + im.GetChannel({x, y}, 1) + im.GetChannel({x, y}, 2)) /
+                3;
+            EXPECT_FLOAT_EQ(m.BilerpFloat(st), mean);  // pbrt-v4: the mean of R, G, B
             RGB f = m.Filter<RGB>(st, Vector2f(0, 0), Vector2f(0, 0));
             EXPECT_FLOAT_EQ(f.b, im.GetChannel({x, y}, 2));
         }
@@ -146,7 +191,7 @@ TEST(MIPMap, CreateFromFile) {
         MIPMap::CreateFromFile(file.string(), {}, WrapMode::Clamp, ColorEncoding::SRGB(), arena);
     fs::remove(file);
     ASSERT_NE(m, nullptr);
-    EXPECT_EQ(m->GetLevel(0).NChannels(), 3);  // alpha dropped
+    EXPECT_EQ(m->GetLevel(0).NChannels(), 4);  // alpha kept: not 1 everywhere (pbrt-v4)
     EXPECT_EQ(m->Levels(), 3);
     EXPECT_NEAR(m->Bilerp({1.5f / 4, 2.5f / 4}).g, 0.5f, 0.003f);
     // The same bytes read as linear data.
@@ -156,6 +201,15 @@ TEST(MIPMap, CreateFromFile) {
         MIPMap::CreateFromFile(file.string(), {}, WrapMode::Clamp, ColorEncoding::Linear(), arena2);
     fs::remove(file);
     EXPECT_NEAR(lin->Bilerp({1.5f / 4, 2.5f / 4}).g, LinearToSRGB(0.5f), 0.003f);
+    // Opaque everywhere: alpha dropped
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) im.SetChannel({x, y}, 3, 1);
+    im.Write(file.string());
+    ObjectArena arena3;
+    MIPMap* opaque =
+        MIPMap::CreateFromFile(file.string(), {}, WrapMode::Clamp, ColorEncoding::SRGB(), arena3);
+    fs::remove(file);
+    EXPECT_EQ(opaque->GetLevel(0).NChannels(), 3);
     EXPECT_THROW(MIPMap::CreateFromFile("/nonexistent.png", {}, WrapMode::Clamp,
                                         ColorEncoding::SRGB(), arena),
                  std::runtime_error);

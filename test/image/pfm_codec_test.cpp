@@ -78,6 +78,11 @@ TEST_F(PfmCodec, BigEndianFilesRead) {
     Image im = Image::Read(File("big.pfm", data));
     EXPECT_EQ(im.GetChannel({0, 0}, 0), 1.5f);
     EXPECT_EQ(im.GetChannel({1, 0}, 0), -2.25f);
+    // The scale's magnitude multiplies the samples (as pbrt-v4 reads them)
+    data.replace(data.find("1.0"), 3, "4.0");
+    im = Image::Read(File("big4.pfm", data));
+    EXPECT_EQ(im.GetChannel({0, 0}, 0), 6.f);
+    EXPECT_EQ(im.GetChannel({1, 0}, 0), -9.f);
 }
 
 TEST_F(PfmCodec, DamagedFilesAreErrors) {

@@ -198,5 +198,53 @@ TEST(PlyDisplacement, MeshIsWhereTheTextureMovesIt) {
     }
 }
 
+// pbrt-v4 makes no area light on a shape whose material is an interface (a warning): it only
+// marks a boundary between media
+TEST(AreaLights, NoneOnInterfaceMaterials) {
+    for (const char* material : {"interface", "none", "diffuse"}) {
+        Diagnostics diag(nullptr);
+        std::unique_ptr<Scene> scene = testing::BuildScene(
+            std::string("Film \"rgb\" \"integer xresolution\" 4 \"integer yresolution\" 4\n"
+                        "Camera \"perspective\"\nWorldBegin\nMaterial \"") +
+                material +
+                "\"\nAttributeBegin AreaLightSource \"diffuse\" Shape \"sphere\" AttributeEnd\n",
+            diag);
+        bool boundary = std::string(material) != "diffuse";
+        EXPECT_EQ(scene->lights.size(), boundary ? 0u : 1u) << material;
+        int ignored = 0;
+        for (const auto& w : diag.Warnings())
+            ignored +=
+                w.message.find("area light on a shape with an \"interface\"") != std::string::npos;
+        EXPECT_EQ(ignored, boundary ? 1 : 0) << material;
+    }
+}
+
+// pbrt-v4 decodes an area light's 8-bit "filename" image as sRGB whatever the PNG's gAMA chunk
+// says: a file marked linear and one marked sRGB with the same bytes light alike
+TEST(AreaLights, EmissionImagesAreSRGBWhateverTheirGamma) {
+    std::string dir = ::testing::TempDir();
+    double mean[2];
+    for (int linear = 0; linear < 2; ++linear) {
+        Image im(PixelFormat::U256, {2, 2}, {"R", "G", "B"},
+                 linear ? ColorEncoding::Linear() : ColorEncoding::SRGB());
+        for (int c = 0; c < 3; ++c)
+            for (int p = 0; p < 4; ++p)
+                im.SetChannel({p % 2, p / 2}, c,
+                              linear ? 128 / 255.f : SRGBToLinear(128 / 255.f));  // byte 128
+        std::string file = dir + "/kiln_emission_" + std::to_string(linear) + ".png";
+        im.Write(file);
+        mean[linear] = MeanY(
+            "Film \"rgb\" \"integer xresolution\" 4 \"integer yresolution\" 4\n"
+            "Sampler \"independent\" \"integer pixelsamples\" 4\n"
+            "LookAt 0 0 1  0 0 0  0 1 0\n"
+            "Camera \"orthographic\" \"float screenwindow\" [-0.5 0.5 -0.5 0.5]\n"
+            "WorldBegin\nAreaLightSource \"diffuse\" \"string filename\" \"" +
+            file + "\"\nShape \"bilinearmesh\" \"point3 P\" [-1 -1 0 1 -1 0 -1 1 0 1 1 0]\n");
+        std::remove(file.c_str());
+    }
+    EXPECT_GT(mean[0], 0);
+    EXPECT_NEAR(mean[1] / mean[0], 1, 1e-3);
+}
+
 }  // namespace
 }  // namespace kiln

@@ -20,7 +20,9 @@ namespace {
 using namespace kiln::test;
 namespace fs = std::filesystem;
 
-// A 4x2 RGB float image: R = x + 10 y, G = 0.5, B = 0.25 (pixel (0, 0) at the top left).
+// A 4x2 RGB float image: R = x + 10 y, G = 0.5, B = 0.25 (pixel (0, 0) at the top left), and
+// its R channel alone (float textures of colour images filter the mean of R, G and B, as
+// pbrt-v4's: core/image/mipmap.cpp).
 constexpr int kW = 4, kH = 2;
 
 class ImageTextureTest : public ::testing::Test {
@@ -34,6 +36,10 @@ class ImageTextureTest : public ::testing::Test {
         for (int y = 0; y < kH; ++y)
             for (int x = 0; x < kW; ++x) px.insert(px.end(), {float(x + 10 * y), 0.5f, 0.25f});
         Write(exrPath, px, kW, kH, 3, OIIO::TypeDesc::FLOAT);
+        greyExrPath = (dir / "ramp-grey.exr").string();
+        std::vector<float> r;
+        for (size_t i = 0; i < px.size(); i += 3) r.push_back(px[i]);
+        Write(greyExrPath, r, kW, kH, 1, OIIO::TypeDesc::FLOAT);
         pngPath = (dir / "grey.png").string();
         std::vector<unsigned char> grey(2 * 2 * 3, 128);
         Write(pngPath, grey, 2, 2, 3, OIIO::TypeDesc::UINT8);
@@ -49,7 +55,7 @@ class ImageTextureTest : public ::testing::Test {
     FloatTexture MakeFloat(std::initializer_list<ParsedParameter> extra) {
         ParsedParameterVector v(extra);
         if (std::none_of(v.begin(), v.end(), [](auto& p) { return p.name == "filename"; }))
-            v.push_back(String1("filename", exrPath));
+            v.push_back(String1("filename", greyExrPath));
         dicts.push_back(std::make_unique<ParameterDictionary>(v, nullptr));
         TextureParameterDictionary params(dicts.back().get(), &named);
         return CreateFloatTexture("imagemap", Transform(), params, TestLoc(), arena, diag);
@@ -63,7 +69,7 @@ class ImageTextureTest : public ::testing::Test {
     }
 
     fs::path dir;
-    std::string exrPath, pngPath;
+    std::string exrPath, greyExrPath, pngPath;
     ObjectArena arena;
     Diagnostics diag{nullptr};
     NamedTextures named;

@@ -85,7 +85,7 @@ Image CreateApertureMask(const ParameterDictionary& params) {
         std::string filename = params.GetOneFilename("aperture", ""), error;
         Image image;
         try {
-            image = Image::Read(filename);
+            image = Image::Read(filename, nullptr, ColorEncoding::SRGB());  // as pbrt-v4
         } catch (const std::exception& e) {
             throw SceneError(params.Loc("aperture"),
                              std::string(e.what()) +

@@ -50,7 +50,8 @@ Sampler Sampler::Create(const std::string& name, const ParameterDictionary& para
         return StratifiedSampler(xSamples, ySamples, jitter, seed);
     }
 
-    int spp = params.GetOneInt("pixelsamples", 16);
+    // pbrt-v4's defaults: 4 for the independent sampler, 16 for the others
+    int spp = params.GetOneInt("pixelsamples", type == "independent" ? 4 : 16);
     if (sppOverride) spp = *sppOverride;
     if (spp <= 0)
         throw SceneError(
@@ -85,11 +86,18 @@ Sampler Sampler::Create(const std::string& name, const ParameterDictionary& para
     }
     if (type == "zsobol" || type == "paddedsobol") {
         RandomizeStrategy randomize = GetRandomization(params);
-        if (!IsPowerOf2(spp))
-            diag.Warn(loc, "Sobol' samplers need a power-of-two sample count; " +
-                               std::to_string(spp) + " is rounded up to " +
-                               std::to_string(RoundUpPow2(spp)));
-        spp = RoundUpPow2(spp);
+        // As pbrt-v4: zsobol renders the largest power of two not above the count, paddedsobol
+        // the count itself (its samples are then no longer a complete net)
+        if (!IsPowerOf2(spp)) {
+            int rounded = 1 << Log2Int(uint64_t(spp));
+            diag.Warn(loc, type == "zsobol"
+                               ? "the zsobol sampler needs a power-of-two sample count; " +
+                                     std::to_string(spp) + " is rounded down to " +
+                                     std::to_string(rounded) + " (as pbrt-v4)"
+                               : "Sobol' samplers work best with a power-of-two sample count (" +
+                                     std::to_string(spp) + " given)");
+            if (type == "zsobol") spp = rounded;
+        }
         if (type == "zsobol") return ZSobolSampler(spp, fullResolution, randomize, seed);
         return PaddedSobolSampler(spp, randomize, seed);
     }

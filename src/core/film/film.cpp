@@ -368,7 +368,22 @@ void RGBFilm::WriteImage(const std::string& filename, ImageMetadata metadata,
         }
         image.Write(filename, metadata);
     } else if (ext == "pfm" || ext == "hdr") {
-        image.SelectChannels({"R", "G", "B"}).Write(filename, metadata);
+        // These formats carry no primaries: RGB in sRGB's, as pbrt-v4 writes them
+        Image rgb = image.SelectChannels({"R", "G", "B"}).ConvertToFormat(PixelFormat::Float);
+        if (colorSpace != &RGBColorSpace::sRGB()) {
+            ColorMatrix m = colorSpace->ConvertTo(RGBColorSpace::sRGB());
+            for (int y = 0; y < rgb.Resolution().y; ++y)
+                for (int x = 0; x < rgb.Resolution().x; ++x) {
+                    RGB v = Mul(m, RGB(rgb.GetChannel({x, y}, 0), rgb.GetChannel({x, y}, 1),
+                                       rgb.GetChannel({x, y}, 2)));
+                    for (int c = 0; c < 3; ++c) rgb.SetChannel({x, y}, c, v[c]);
+                }
+            ImageMetadata sRGBMetadata = metadata;
+            sRGBMetadata.colorSpace = &RGBColorSpace::sRGB();
+            rgb.Write(filename, sRGBMetadata);
+        } else {
+            rgb.Write(filename, metadata);
+        }
     } else {
         DisplaySettings settings;
         settings.view = viewOverride.empty() ? opts.view : viewOverride;

@@ -39,20 +39,28 @@ MIPMap::MIPMap(Image image, const RGBColorSpace* colorSpace, WrapMode wrapMode,
       wrapMode(wrapMode),
       options(options) {
     if (!image) throw std::runtime_error("MIPMap: empty image");
-    // Keep only the channels lookups use: R, G, B; else Y; else the first one or three.
+    // Keep only the channels lookups use: R, G, B (and A unless it is 1 everywhere, as
+    // pbrt-v4: float lookups then return alpha); else Y; else the first one or three.
     std::vector<std::string> keep;
     const auto& names = image.ChannelNames();
     if (image.ChannelIndex("R") >= 0 && image.ChannelIndex("G") >= 0 &&
-        image.ChannelIndex("B") >= 0)
+        image.ChannelIndex("B") >= 0) {
         keep = {"R", "G", "B"};
-    else if (image.ChannelIndex("Y") >= 0)
+        if (int a = image.ChannelIndex("A"); a >= 0) {
+            Point2i res = image.Resolution();
+            bool opaque = true;
+            for (int y = 0; y < res.y && opaque; ++y)
+                for (int x = 0; x < res.x && opaque; ++x) opaque = image.GetChannel({x, y}, a) == 1;
+            if (!opaque) keep.push_back("A");
+        }
+    } else if (image.ChannelIndex("Y") >= 0)
         keep = {"Y"};
     else if (image.NChannels() >= 3)
         keep = {names[0], names[1], names[2]};
     else
         keep = {names[0]};
     if (keep != names) image = image.SelectChannels(keep);
-    if (image.NChannels() == 3) rgbChannels[1] = 1, rgbChannels[2] = 2;
+    if (image.NChannels() >= 3) rgbChannels[1] = 1, rgbChannels[2] = 2;
 
     // Build the pyramid: each level box-filters 2x2 texels of the previous one (odd sizes
     // round up; the missing texels come from the wrap mode). Levels are computed in floats and
@@ -86,6 +94,13 @@ MIPMap* MIPMap::CreateFromFile(const std::string& filename, MIPMapFilterOptions 
                                WrapMode wrap, ColorEncoding encoding, ObjectArena& arena) {
     ImageMetadata metadata;
     Image image = Image::Read(filename, &metadata, encoding, &arena.Budget());
+    // pbrt-v4 reads these formats with stb_image, whose alpha it drops
+    if (IsPbrtV4SrgbOnlyFormat(filename) && image.ChannelIndex("A") >= 0) {
+        std::vector<std::string> opaque;
+        for (const std::string& c : image.ChannelNames())
+            if (c != "A") opaque.push_back(c);
+        image = image.SelectChannels(opaque);
+    }
     if (image.Format() == PixelFormat::U256 && !(image.Encoding() == encoding))
         image = image.ConvertToFormat(PixelFormat::U256, encoding);
     // The pyramid's coarser levels: a third more, in the image's own pixel format
@@ -112,9 +127,21 @@ RGB MIPMap::Texel(int level, Point2i st) const {
                im.GetChannel(st, rgbChannels[2], wrapMode));
 }
 
+// Float lookups between texels (bilinear and trilinear filtering) as pbrt-v4's: the one channel,
+// the mean of R, G and B, or alpha (point and EWA lookups take the first channel, Texel)
 template <>
 Float MIPMap::Bilerp(int level, Point2f st) const {
-    return pyramid[level].BilerpChannel(st, 0, wrapMode);
+    const Image& im = pyramid[level];
+    switch (im.NChannels()) {
+        case 3:
+            return (im.BilerpChannel(st, 0, wrapMode) + im.BilerpChannel(st, 1, wrapMode) +
+                    im.BilerpChannel(st, 2, wrapMode)) /
+                   3;
+        case 4:
+            return im.BilerpChannel(st, 3, wrapMode);
+        default:
+            return im.BilerpChannel(st, 0, wrapMode);
+    }
 }
 
 template <>
@@ -161,8 +188,8 @@ T MIPMap::Filter(Point2f st, Vector2f dst0, Vector2f dst1) const {
             }
             case FilterFunction::Bilinear:
                 return Bilerp<T>(iLevel, st);
-            default:  // Trilinear
-                if (level <= 0) return Bilerp<T>(0, st);
+            default:                                       // Trilinear
+                if (iLevel == 0) return Bilerp<T>(0, st);  // (pbrt-v4: no blend below level 1)
                 return LerpT(level - iLevel, Bilerp<T>(iLevel, st), Bilerp<T>(iLevel + 1, st));
         }
     }

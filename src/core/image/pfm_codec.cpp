@@ -99,6 +99,9 @@ std::unique_ptr<ImageFileReader> OpenPfm(const std::string& filename) {
     bool fileLittle = scale < 0;
     if (fileLittle != (std::endian::native == std::endian::little))
         for (float& f : file) f = std::bit_cast<float>(ByteSwap(std::bit_cast<uint32_t>(f)));
+    // The scale's magnitude multiplies the samples (as pbrt-v4's ReadPFM applies it)
+    if (std::abs(scale) != 1)
+        for (float& f : file) f = float(f * std::abs(scale));
     // Rows bottom to top in the file, top to bottom in kiln
     std::vector<float> topDown(file.size());
     for (int y = 0; y < spec.height; ++y)

@@ -1,8 +1,8 @@
 // PFM (portable float map) files read and written by kiln itself: "PF" (three channels R, G, B)
 // or "Pf" (one channel Y), width and height, a scale whose sign gives the byte order (negative:
 // little-endian), then 32-bit floats, rows bottom to top (the format's definition, as Paul
-// Debevec's HDRShop and pbrt-v4's Image::ReadPFM / WritePFM use it). The scale's magnitude is
-// ignored on reading (pbrt-v4 does the same) and written as 1.
+// Debevec's HDRShop and pbrt-v4's Image::ReadPFM / WritePFM use it). The scale's magnitude
+// multiplies the samples on reading (as pbrt-v4) and is written as 1.
 #pragma once
 
 #include <memory>
