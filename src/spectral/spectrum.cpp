@@ -1,5 +1,6 @@
 // Spectrum kinds: evaluation, sampling, and the integrals over the CIE observer.
 #include "spectral/spectrum.h"
+#include "base/number_text.h"
 
 #include <algorithm>
 #include <cctype>
@@ -115,27 +116,11 @@ std::optional<PiecewiseLinearSpectrum> PiecewiseLinearSpectrum::Parse(const std:
         if (error) *error = filename + ": " + msg;
         return std::nullopt;
     };
-    std::istringstream in(contents);
-
-    // Tokenise: '#' comments to end of line, whitespace and commas separate numbers
-    std::vector<Float> vals;
-    std::string line;
-    int lineNo = 0;
-    while (std::getline(in, line)) {
-        ++lineNo;
-        if (auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
-        std::replace(line.begin(), line.end(), ',', ' ');
-        std::istringstream ls(line);
-        std::string tok;
-        while (ls >> tok) {
-            char* end = nullptr;
-            double d = std::strtod(tok.c_str(), &end);
-            if (end == tok.c_str() || *end != '\0' || !std::isfinite(Float(d)))
-                return fail("line " + std::to_string(lineNo) + ": not a finite number: '" +
-                            tok.substr(0, 40) + "'");
-            vals.push_back(Float(d));
-        }
-    }
+    // '#' comments to end of line, whitespace and commas separate numbers
+    std::string numberError;
+    std::optional<std::vector<Float>> numbers = ParseNumberText(contents, &numberError);
+    if (!numbers) return fail(numberError);
+    const std::vector<Float>& vals = *numbers;
     if (vals.empty()) return fail("no values in spectrum file");
     if (vals.size() % 2 != 0) return fail("odd number of values (need lambda value pairs)");
 

@@ -3,6 +3,7 @@
 // The tracing works in "lens space", camera space mirrored in z (z_lens = -z_camera), where the
 // film is at 0, the interfaces at negative z and a ray from the film travels towards -z.
 #include "core/camera/lens_system.h"
+#include "base/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -217,25 +218,10 @@ std::optional<std::vector<LensInterface>> ParseLensFile(const std::string& text,
         if (error) *error = filename + ": " + msg;
         return std::nullopt;
     };
-    std::istringstream in(text);
-    std::vector<Float> v;
-    std::string line;
-    int lineNo = 0;
-    while (std::getline(in, line)) {
-        ++lineNo;
-        if (auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
-        std::replace(line.begin(), line.end(), ',', ' ');
-        std::istringstream ls(line);
-        std::string tok;
-        while (ls >> tok) {
-            char* end = nullptr;
-            double d = std::strtod(tok.c_str(), &end);
-            if (end == tok.c_str() || *end != '\0' || !std::isfinite(Float(d)))
-                return fail("line " + std::to_string(lineNo) + ": not a finite number: '" +
-                            tok.substr(0, 40) + "'");
-            v.push_back(Float(d));
-        }
-    }
+    std::string numberError;
+    std::optional<std::vector<Float>> numbers = ParseNumberText(text, &numberError);
+    if (!numbers) return fail(numberError);
+    const std::vector<Float>& v = *numbers;
     if (v.empty()) return fail("no values in lens file");
     if (v.size() % 4 != 0)
         return fail(
