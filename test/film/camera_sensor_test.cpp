@@ -39,6 +39,14 @@ TEST(CameraSensor, CurvesAreNamedSpectra) {
         d.GetOneSpectrum("reflectance", std::nullopt, SpectrumType::Unbounded);
     ASSERT_TRUE(g.has_value());
     EXPECT_FLOAT_EQ((*g)(530), (*GetNamedSpectrum("canon_eos_5d_mkii_g"))(530));
+    // pbrt-v4's curves that kiln lacks: an error that says so.
+    ParameterDictionary n({Param("spectrum", "reflectance", {}, {}, {"nikon_d850_r"})}, nullptr);
+    try {
+        n.GetOneSpectrum("reflectance", std::nullopt, SpectrumType::Unbounded);
+        ADD_FAILURE() << "no error";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("not available"), std::string::npos) << e.what();
+    }
 }
 
 TEST(CameraSensor, XYZSensorFitsToIdentity) {
