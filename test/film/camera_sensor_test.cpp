@@ -125,6 +125,17 @@ TEST(CameraSensor, WhiteUnderTheWhiteBalanceIlluminantIsNeutral) {
     }
 }
 
+TEST(CameraSensor, Cie1931WhiteBalanceMakesItsIlluminantNeutral) {
+    // pbrt-v4's source white: its daylight spectrum of T, a blackbody below 4000 K.
+    for (Float T : {2700.f, 6500.f}) {
+        FilmFixture f;
+        ParsedParameterVector p = SmallRes();
+        p.push_back(Param("float", "whitebalance", {T}));
+        RGB w = WhiteUnder(f.Make(p), CIEDaylightSpectrum(T));
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(w[c] / w.Average(), 1, 2e-3) << T << " " << c;
+    }
+}
+
 TEST(CameraSensor, SensorsWithoutDataWarnAndUnknownNamesFail) {
     FilmFixture f;
     ParsedParameterVector p = SmallRes();

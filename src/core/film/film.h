@@ -36,8 +36,9 @@ class ParameterDictionary;
 // PixelSensor Definition
 // pbrt-v4's PixelSensor. "cie1931": the sensor responds with the CIE 1931 matching functions,
 // so its "RGB" is XYZ scaled by imagingRatio = exposureTime (s) * iso / 100; with
-// whitebalance T > 0 (K) a von Kries (Bradford) adaptation maps the CIE daylight illuminant of
-// temperature T to the output colour space's white. A named camera sensor (measured curves
+// whitebalance T > 0 (K) a von Kries (Bradford) adaptation maps the chromaticity of
+// CIEDaylightSpectrum(T) (pbrt-v4's daylight: a blackbody below 4000 K) to the output colour
+// space's white. A named camera sensor (measured curves
 // <name>_r, _g, _b among the named spectra) responds with its curves, imagingRatio *
 // integral(curve L) / CIE_Y_integral, and XYZFromSensorRGB is fitted over the ColorChecker
 // swatches lit by pbrt-v4's daylight of the white-balance temperature (6500 K by default):

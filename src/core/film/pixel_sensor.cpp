@@ -55,7 +55,9 @@ PixelSensor::PixelSensor(const RGBColorSpace* outputColorSpace, Float whiteBalan
     : XYZFromSensorRGB(Identity3()), imagingRatio(imagingRatio) {
     if (whiteBalanceTemp > 0) {
         const RGBColorSpace* cs = outputColorSpace ? outputColorSpace : &RGBColorSpace::sRGB();
-        XYZFromSensorRGB = WhiteBalance(DaylightChromaticity(whiteBalanceTemp), cs->w);
+        // pbrt-v4: the source white is the chromaticity of its daylight spectrum of T.
+        XYZFromSensorRGB =
+            WhiteBalance(SpectrumToXYZ(CIEDaylightSpectrum(whiteBalanceTemp)).xy(), cs->w);
     }
 }
 
