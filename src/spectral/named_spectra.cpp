@@ -18,7 +18,8 @@ struct NamedSpectra {
 const NamedSpectra& AllNamedSpectra() {
     static const NamedSpectra all = [] {
         NamedSpectra n;
-        for (auto tables : {PbrtNamedSpectrumTables(), MeasuredNamedSpectrumTables()})
+        for (auto tables : {PbrtNamedSpectrumTables(), CameraNamedSpectrumTables(),
+                            MeasuredNamedSpectrumTables()})
             for (const NamedSpectrumTable& t : tables) {
                 n.names.push_back(t.name);
                 n.spectra.emplace(
@@ -35,6 +36,16 @@ const Spectrum* GetNamedSpectrum(std::string_view name) {
     const auto& s = AllNamedSpectra().spectra;
     auto it = s.find(name);
     return it != s.end() ? &it->second : nullptr;
+}
+
+bool IsPbrtSensorWithoutData(std::string_view name) {
+    for (std::string_view n :
+         {"canon_eos_100d", "canon_eos_1dx_mkii", "canon_eos_200d", "canon_eos_200d_mkii",
+          "canon_eos_5d", "canon_eos_5d_mkiii", "canon_eos_5d_mkiv", "canon_eos_5ds", "canon_eos_m",
+          "hasselblad_l1d_20c", "nikon_d810", "nikon_d850", "sony_ilce_6400", "sony_ilce_7m3",
+          "sony_ilce_7rm3", "sony_ilce_9"})
+        if (name == n) return true;
+    return false;
 }
 
 std::vector<std::string_view> NamedSpectrumNames() { return AllNamedSpectra().names; }

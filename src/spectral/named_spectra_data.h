@@ -18,6 +18,9 @@ struct NamedSpectrumTable {
 
 // pbrt-v4's named spectra (named_spectra_pbrt_data.cpp).
 std::span<const NamedSpectrumTable> PbrtNamedSpectrumTables();
+// pbrt-v4's camera sensor curves <sensor>_r, _g, _b that kiln has from public measured data
+// (named_spectra_camera_data.cpp).
+std::span<const NamedSpectrumTable> CameraNamedSpectrumTables();
 // kiln's own named spectra of measured optical constants (named_spectra_measured_data.cpp).
 std::span<const NamedSpectrumTable> MeasuredNamedSpectrumTables();
 

@@ -34,24 +34,35 @@ namespace kiln {
 class ParameterDictionary;
 
 // PixelSensor Definition
-// pbrt-v4's "cie1931" sensor: the sensor responds with the CIE 1931 matching functions, so its
-// "RGB" is XYZ scaled by imagingRatio = exposureTime (s) * iso / 100. With whitebalance T > 0
-// (K) a von Kries (Bradford) adaptation maps the CIE daylight illuminant of temperature T to
-// the output colour space's white. Other pbrt-v4 sensors (measured camera curves) are not
-// available in kiln: Create warns and uses cie1931.
+// pbrt-v4's PixelSensor. "cie1931": the sensor responds with the CIE 1931 matching functions,
+// so its "RGB" is XYZ scaled by imagingRatio = exposureTime (s) * iso / 100; with
+// whitebalance T > 0 (K) a von Kries (Bradford) adaptation maps the chromaticity of
+// CIEDaylightSpectrum(T) (pbrt-v4's daylight: a blackbody below 4000 K) to the output colour
+// space's white. A named camera sensor (measured curves
+// <name>_r, _g, _b among the named spectra) responds with its curves, imagingRatio *
+// integral(curve L) / CIE_Y_integral, and XYZFromSensorRGB is fitted over the ColorChecker
+// swatches lit by pbrt-v4's daylight of the white-balance temperature (6500 K by default):
+// see sensor_fit.h. pbrt-v4's sensor names whose curves kiln lacks warn and use cie1931.
 class PixelSensor {
   public:
     PixelSensor() = default;
-    // whiteBalanceTemp: K, 0 = no white balance.
+    // cie1931; whiteBalanceTemp: K, 0 = no white balance.
     PixelSensor(const RGBColorSpace* outputColorSpace, Float whiteBalanceTemp, Float imagingRatio);
+    // Camera sensor with curves r, g, b (which must outlive the sensor), fitted under
+    // sensorIllum. Throws std::runtime_error if the fit is singular.
+    PixelSensor(const Spectrum* r, const Spectrum* g, const Spectrum* b,
+                const RGBColorSpace* outputColorSpace, const Spectrum& sensorIllum,
+                Float imagingRatio);
     static PixelSensor Create(const ParameterDictionary& params, const RGBColorSpace* colorSpace,
                               Float exposureTime, const FileLoc& loc, Diagnostics& diag);
 
     // Sensor response to the path's radiance samples (Monte Carlo estimate over lambda).
     RGB ToSensorRGB(const SampledSpectrum& L, const SampledWavelengths& lambda) const;
 
-    ColorMatrix XYZFromSensorRGB;  // identity unless white balancing
+    ColorMatrix XYZFromSensorRGB;  // cie1931: identity unless white balancing
     Float imagingRatio = 1;
+    // The camera's curves (named spectra); null for cie1931.
+    const Spectrum *r_bar = nullptr, *g_bar = nullptr, *b_bar = nullptr;
 };
 
 // Chromaticity (CIE 1931 xy) of CIE daylight at correlated colour temperature T in K,

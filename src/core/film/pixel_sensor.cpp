@@ -1,9 +1,16 @@
-// PixelSensor (pbrt-v4's "cie1931" sensor), daylight chromaticity and white balance.
+// PixelSensor (pbrt-v4's "cie1931" and named camera sensors), daylight chromaticity and white
+// balance.
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "core/film/film.h"
+#include "core/film/sensor_fit.h"
 #include "core/parser/parameter_dictionary.h"
+#include "spectral/cie.h"
+#include "spectral/color_checker.h"
+#include "spectral/named_spectra.h"
 
 namespace kiln {
 
@@ -48,8 +55,20 @@ PixelSensor::PixelSensor(const RGBColorSpace* outputColorSpace, Float whiteBalan
     : XYZFromSensorRGB(Identity3()), imagingRatio(imagingRatio) {
     if (whiteBalanceTemp > 0) {
         const RGBColorSpace* cs = outputColorSpace ? outputColorSpace : &RGBColorSpace::sRGB();
-        XYZFromSensorRGB = WhiteBalance(DaylightChromaticity(whiteBalanceTemp), cs->w);
+        // pbrt-v4: the source white is the chromaticity of its daylight spectrum of T.
+        XYZFromSensorRGB =
+            WhiteBalance(SpectrumToXYZ(CIEDaylightSpectrum(whiteBalanceTemp)).xy(), cs->w);
     }
+}
+
+PixelSensor::PixelSensor(const Spectrum* r, const Spectrum* g, const Spectrum* b,
+                         const RGBColorSpace* outputColorSpace, const Spectrum& sensorIllum,
+                         Float imagingRatio)
+    : imagingRatio(imagingRatio), r_bar(r), g_bar(g), b_bar(b) {
+    const RGBColorSpace& cs = outputColorSpace ? *outputColorSpace : RGBColorSpace::sRGB();
+    std::optional<ColorMatrix> m = FitXYZFromSensorRGB(*r, *g, *b, sensorIllum, cs);
+    if (!m) throw std::runtime_error("sensor XYZ-from-RGB matrix could not be solved");
+    XYZFromSensorRGB = *m;
 }
 
 PixelSensor PixelSensor::Create(const ParameterDictionary& params, const RGBColorSpace* colorSpace,
@@ -57,18 +76,43 @@ PixelSensor PixelSensor::Create(const ParameterDictionary& params, const RGBColo
     Float iso = params.GetOneFloat("iso", 100);
     Float whiteBalance = params.GetOneFloat("whitebalance", 0);
     std::string sensorName = params.GetOneString("sensor", "cie1931");
-    if (sensorName != "cie1931")
-        diag.Warn(loc, "sensor \"" + sensorName +
-                           "\" is not available in kiln (no measured camera curves); using "
-                           "\"cie1931\"");
     if (whiteBalance < 0) throw SceneError(loc, "whitebalance must be >= 0 K", "whitebalance");
+    // pbrt-v4: camera sensors white balance for 6500 K unless told otherwise.
+    if (sensorName != "cie1931" && whiteBalance == 0) whiteBalance = 6500;
     Float imagingRatio = exposureTime * iso / 100;
+    if (sensorName == "cie1931") return PixelSensor(colorSpace, whiteBalance, imagingRatio);
+
+    const Spectrum* r = GetNamedSpectrum(sensorName + "_r");
+    const Spectrum* g = GetNamedSpectrum(sensorName + "_g");
+    const Spectrum* b = GetNamedSpectrum(sensorName + "_b");
+    if (r && g && b) {
+        Spectrum illum = CIEDaylightSpectrum(whiteBalance);
+        try {
+            return PixelSensor(r, g, b, colorSpace, illum, imagingRatio);
+        } catch (const std::runtime_error& e) {
+            throw SceneError(loc, std::string("sensor \"") + sensorName + "\": " + e.what(),
+                             "sensor");
+        }
+    }
+    if (!IsPbrtSensorWithoutData(sensorName))
+        throw SceneError(loc, "\"" + sensorName + "\": unknown sensor type", "sensor");
+    diag.Warn(loc, "sensor \"" + sensorName +
+                       "\": pbrt-v4's measured curves for this camera are not available to kiln "
+                       "from any public source; using \"cie1931\" white balanced for " +
+                       std::to_string(int(whiteBalance)) + " K");
     return PixelSensor(colorSpace, whiteBalance, imagingRatio);
 }
 
 RGB PixelSensor::ToSensorRGB(const SampledSpectrum& L, const SampledWavelengths& lambda) const {
-    XYZ xyz = SpectrumToXYZ(L, lambda) * imagingRatio;
-    return RGB(xyz.X, xyz.Y, xyz.Z);
+    if (!r_bar) {
+        XYZ xyz = SpectrumToXYZ(L, lambda) * imagingRatio;
+        return RGB(xyz.X, xyz.Y, xyz.Z);
+    }
+    SampledSpectrum Lp = SafeDiv(L, lambda.PDF());
+    Float s = imagingRatio / CIE_Y_integral;
+    return RGB((r_bar->Sample(lambda) * Lp).Average() * s,
+               (g_bar->Sample(lambda) * Lp).Average() * s,
+               (b_bar->Sample(lambda) * Lp).Average() * s);
 }
 
 }  // namespace kiln

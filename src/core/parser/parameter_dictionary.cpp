@@ -181,6 +181,11 @@ std::vector<Spectrum> ParameterDictionary::ExtractSpectra(const ParsedParameter&
     // Named spectra or files, one spectrum per string.
     return ToArray<Spectrum>(p, p.strings, 1, [&](const std::string* s) -> Spectrum {
         if (const Spectrum* named = GetNamedSpectrum(*s)) return *named;
+        if (s->size() > 2 && s->compare(s->size() - 2, 1, "_") == 0 &&
+            IsPbrtSensorWithoutData(std::string_view(*s).substr(0, s->size() - 2)))
+            Fail(p, "'" + *s +
+                        "' is one of pbrt-v4's camera sensor curves, which are not available to "
+                        "kiln from any public source");
         std::string error;
         std::string filename = ResolveFilename(p.searchDirectory, *s);
         std::optional<PiecewiseLinearSpectrum> read =
