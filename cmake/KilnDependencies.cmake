@@ -28,6 +28,7 @@ find_package(OpenImageIO REQUIRED)
 kiln_drop_missing_includes(OpenImageIO::OpenImageIO)
 find_package(OpenEXR REQUIRED)
 find_package(PNG REQUIRED)
+find_package(JPEG REQUIRED)
 # Debian installs OpenColorIOConfig.cmake directly in /usr/share/cmake, off the default path.
 find_package(OpenColorIO REQUIRED HINTS /usr/share/cmake)
 kiln_drop_missing_includes(OpenColorIO::OpenColorIO)

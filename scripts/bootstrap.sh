@@ -9,7 +9,7 @@ build="${KILN_BUILD_DIR:-$root/build}"
 
 # What rendering needs (scripts/demo.sh: KILN_SETUP=render), and what the tests add
 packages=(build-essential cmake pkg-config libembree-dev libopenimageio-dev libopenexr-dev
-          libpng-dev libopencolorio-dev libtbb-dev zlib1g-dev libopenvdb-dev libboost-dev
+          libpng-dev libjpeg-dev libopencolorio-dev libtbb-dev zlib1g-dev libopenvdb-dev libboost-dev
           pybind11-dev python3-dev python3-numpy)  # the Python module
 if [ "${KILN_SETUP:-all}" != render ]; then
     packages+=(openimageio-tools libgtest-dev libbenchmark-dev libfmt-dev clang-format

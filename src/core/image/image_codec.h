@@ -1,8 +1,8 @@
 // Image file codecs: what Image::Read and Image::Write (image_io.cpp) exchange with the code
 // that reads and writes one file format. OpenEXR files go through kiln's own codec
 // (exr_codec.cpp, on the OpenEXR library), PNG without transparency through libpng
-// (png_codec.h), PFM through kiln's own reader and writer (pfm_codec.h) and TGA through kiln's
-// own reader (tga_codec.h). Every other format
+// (png_codec.h), PFM through kiln's own reader and writer (pfm_codec.h), TGA through kiln's
+// own reader (tga_codec.h) and JPEG through libjpeg (jpeg_codec.h). Every other format
 // goes through OpenImageIO, in a plugin (libkiln_oiio.so, oiio_plugin/) that is loaded the first
 // time such a file is read or written. A process that reads and writes only those never loads
 // OpenImageIO and the ~250 libraries it links (about 117 MB and 0.2-0.3 s of CPU).

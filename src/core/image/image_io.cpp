@@ -16,6 +16,7 @@
 #include "base/system_memory.h"
 #include "core/image/image.h"
 #include "core/image/image_codec.h"
+#include "core/image/jpeg_codec.h"
 #include "core/image/pfm_codec.h"
 #include "core/image/png_codec.h"
 #include "core/image/tga_codec.h"
@@ -143,7 +144,7 @@ Image Image::Read(const std::string& filename, ImageMetadata* metadata,
             charged = true;
             in = ExrCodec().Open(filename);
         } else if (!(in = OpenPng(filename)) && !(in = OpenPfm(filename)) &&
-                   !(in = OpenTga(filename))) {
+                   !(in = OpenTga(filename)) && !(in = OpenJpeg(filename))) {
             in = OIIOCodec().Open(filename);
         }
     } catch (const MemoryLimitError&) {
