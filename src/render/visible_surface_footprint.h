@@ -8,13 +8,14 @@
 
 namespace kiln {
 
-// The rays of camera samples one pixel to the right and one down of `sample` (same lens
-// sample, time and wavelengths), brought towards `ray` by `scale` (pbrt-v4's
+// pbrt-v4's camera ray differentials for `sample` (same lens sample, time and wavelengths;
+// perspective and orthographic cameras: the rays one pixel to the right and one down; other
+// cameras: finite differences over 0.05 pixel), brought towards `ray` by `scale` (pbrt-v4's
 // ScaleDifferentials: origins and unit directions interpolated linearly), are intersected with
 // the tangent plane of vs (point vs->p, geometric normal vs->n); vs->dpdx and vs->dpdy are the
-// offsets of those hits from vs->p. Where either ray is not generated or runs parallel to the
-// plane, the camera's estimate (Approximate_dp_dxy with samplesPerPixel) is used instead, as
-// pbrt-v4 does for rays without differentials.
+// offsets of those hits from vs->p. Where a differential ray is not generated or runs parallel
+// to the plane, the camera's estimate (Approximate_dp_dxy with samplesPerPixel) is used
+// instead, as pbrt-v4 does for rays without differentials.
 // scale: max(1/8, 1/sqrt(samples per pixel)), or 1 without pixel jitter (pbrt-v4).
 void SetCameraDifferentials(const Camera& camera, const CameraSample& sample, const Ray& ray,
                             const SampledWavelengths& lambda, Float scale, int samplesPerPixel,
