@@ -92,53 +92,109 @@ TEST(GBufferRender, TiltedPlaneMatchesClosedForm) {
     }
 }
 
-// Differences of kiln's gbuffer channels from pbrt-v4's (references rendered by pbrt-v4 at 256
-// spp, pbrt_features/README.md): the same channel names; geometric channels equal within
-// half-float precision except where a silhouette or the horizon cuts the pixel (a mixture
-// that depends on the samples); the variance channels' image means equal within their
-// sampling noise.
-void CompareWithPbrt(const std::string& name) {
+// kiln's render of a scene of test/regression/pbrt_features (256 spp, seed `seed`).
+Image RenderFeature(const std::string& name, int seed) {
     const std::string dir = std::string(KILN_SOURCE_DIR) + "/test/regression/pbrt_features/";
     RenderOptions options;
-    options.samplesPerPixel = 64;
-    Image ours = RenderFile(dir + name + ".pbrt", options).scene->job->film->GetImage(nullptr);
-    Image ref = Image::Read(dir + "references/" + name + ".exr");
+    options.samplesPerPixel = 256;
+    options.seed = seed;
+    return RenderFile(dir + name + ".pbrt", options).scene->job->film->GetImage(nullptr);
+}
+
+// pbrt-v4's gbuffer EXR of the scene (rendered by pbrt-v4 at 256 spp, pbrt_features/README.md)
+Image Reference(const std::string& name) {
+    return Image::Read(std::string(KILN_SOURCE_DIR) + "/test/regression/pbrt_features/references/" +
+                       name + ".exr");
+}
+
+void ExpectSameChannels(const Image& ours, const Image& ref) {
     std::vector<std::string> a = ours.ChannelNames(), b = ref.ChannelNames();
     std::sort(a.begin(), a.end());
     std::sort(b.begin(), b.end());
-    ASSERT_EQ(a, b);
-    ASSERT_EQ(ours.Resolution(), ref.Resolution());
-    const int nPixels = ours.Resolution().x * ours.Resolution().y;
-    for (const char* ch : {"P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "Ns.X", "Ns.Y", "Ns.Z", "u",
-                           "v", "dzdx", "dzdy", "Albedo.R", "Albedo.G", "Albedo.B"}) {
-        int off = 0;
-        double worst = 0;
-        for (int y = 0; y < ours.Resolution().y; ++y)
-            for (int x = 0; x < ours.Resolution().x; ++x) {
-                double k = Channel(ours, {x, y}, ch), r = Channel(ref, {x, y}, ch);
-                double tol = 0.01 * (1 + std::abs(r));
-                if (std::abs(k - r) > tol)
-                    ++off;
-                else
-                    worst = std::max(worst, std::abs(k - r));
-            }
-        EXPECT_LE(off, nPixels / 8) << name << " " << ch;
-    }
-    for (const char* ch : {"Variance.R", "Variance.G", "Variance.B", "RelativeVariance.R",
-                           "RelativeVariance.G", "RelativeVariance.B"}) {
-        double k = 0, r = 0;
-        for (int y = 0; y < ours.Resolution().y; ++y)
-            for (int x = 0; x < ours.Resolution().x; ++x) {
-                k += Channel(ours, {x, y}, ch);
-                r += Channel(ref, {x, y}, ch);
-            }
-        EXPECT_GT(r, 0) << ch;
-        EXPECT_NEAR(k / r, 1, 0.15) << name << " " << ch;
+    EXPECT_EQ(a, b);
+    EXPECT_EQ(ours.Resolution(), ref.Resolution());
+}
+
+// Median over the pixels of |a - b| (robust to the few pixels where the filter's footprint
+// barely reaches a surface, hit by one renderer's samples and not by the other's).
+double MedianAbsDiff(const Image& a, const Image& b, const char* ch) {
+    std::vector<double> d;
+    for (int y = 0; y < a.Resolution().y; ++y)
+        for (int x = 0; x < a.Resolution().x; ++x)
+            d.push_back(std::abs(Channel(a, {x, y}, ch) - Channel(b, {x, y}, ch)));
+    std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
+    return d[d.size() / 2];
+}
+
+double ImageSum(const Image& im, const char* ch) {
+    double sum = 0;
+    for (int y = 0; y < im.Resolution().y; ++y)
+        for (int x = 0; x < im.Resolution().x; ++x) sum += Channel(im, {x, y}, ch);
+    return sum;
+}
+
+// Channels that are Monte Carlo averages: kiln's pixels differ from pbrt-v4's by no more than
+// from another kiln render with another seed (median absolute difference over the image; both
+// differences have the noise of 256 + 256 spp, so a bias shows as a larger ratio; plus 2e-3
+// times the channel's mean magnitude for the reference's half floats, where kiln's pixels
+// agree, as the flat quad's normals do). Measured ratios: 0.73 to 1.06.
+void ExpectWithinNoise(const Image& ours, const Image& ours2, const Image& ref,
+                       const std::vector<const char*>& channels, const std::string& name) {
+    for (const char* ch : channels) {
+        double toRef = MedianAbsDiff(ours, ref, ch), toOurs = MedianAbsDiff(ours, ours2, ch);
+        double scale = 0;  // mean |value| of the reference
+        for (int y = 0; y < ref.Resolution().y; ++y)
+            for (int x = 0; x < ref.Resolution().x; ++x)
+                scale += std::abs(Channel(ref, {x, y}, ch));
+        scale /= ref.Resolution().x * ref.Resolution().y;
+        EXPECT_LE(toRef, 1.5 * toOurs + 2e-3 * scale) << name << " " << ch;
     }
 }
 
-TEST(GBufferRender, MatchesPbrtV4CameraSpace) { CompareWithPbrt("gbuffer"); }
-TEST(GBufferRender, MatchesPbrtV4WorldSpace) { CompareWithPbrt("gbuffer-world"); }
+const std::vector<const char*> kGeometric = {"P.X",  "P.Y",  "P.Z", "N.X", "N.Y",  "N.Z", "Ns.X",
+                                             "Ns.Y", "Ns.Z", "u",   "v",   "dzdx", "dzdy"};
+const std::vector<const char*> kAlbedo = {"Albedo.R", "Albedo.G", "Albedo.B"};
+const std::vector<const char*> kVariance = {"Variance.R",         "Variance.G",
+                                            "Variance.B",         "RelativeVariance.R",
+                                            "RelativeVariance.G", "RelativeVariance.B"};
+
+// The variance channels' image means agree within their sampling noise (maxdepth 0: each
+// sample is the emission seen, the same estimator in both renderers; kiln / pbrt-v4 measured
+// 0.97 to 1.04 over seeds 1 to 4).
+void ExpectVarianceMeansAgree(const Image& ours, const Image& ref, const std::string& name) {
+    for (const char* ch : kVariance) {
+        double k = ImageSum(ours, ch), r = ImageSum(ref, ch);
+        EXPECT_GT(r, 0) << ch;
+        EXPECT_NEAR(k / r, 1, 0.08) << name << " " << ch;
+    }
+}
+
+TEST(GBufferRender, MatchesPbrtV4AtPixelCentres) {
+    // Option "disablepixeljitter": every sample at the pixel centre, so the geometric channels
+    // are the same numbers in both renderers (within half-float precision)
+    Image ours = RenderFeature("gbuffer-world", 1), ref = Reference("gbuffer-world");
+    ExpectSameChannels(ours, ref);
+    for (const char* ch : kGeometric)
+        for (int y = 0; y < ref.Resolution().y; ++y)
+            for (int x = 0; x < ref.Resolution().x; ++x) {
+                double r = Channel(ref, {x, y}, ch);
+                EXPECT_NEAR(Channel(ours, {x, y}, ch), r, 2e-3 * (1 + std::abs(r)))
+                    << ch << " " << x << "," << y;
+            }
+    // The albedo has the noise of the sampled wavelengths
+    ExpectWithinNoise(ours, RenderFeature("gbuffer-world", 2), ref, kAlbedo, "gbuffer-world");
+    ExpectVarianceMeansAgree(ours, ref, "gbuffer-world");
+}
+
+TEST(GBufferRender, MatchesPbrtV4WithPixelJitter) {
+    // Samples spread over the filter's footprint: the channels are noisy averages over it
+    Image ours = RenderFeature("gbuffer", 1), ref = Reference("gbuffer");
+    ExpectSameChannels(ours, ref);
+    std::vector<const char*> channels = kGeometric;
+    channels.insert(channels.end(), kAlbedo.begin(), kAlbedo.end());
+    ExpectWithinNoise(ours, RenderFeature("gbuffer", 2), ref, channels, "gbuffer");
+    ExpectVarianceMeansAgree(ours, ref, "gbuffer");
+}
 
 }  // namespace
 }  // namespace kiln
