@@ -142,5 +142,29 @@ TEST(GBufferFilm, VarianceOfSensorRGB) {
     EXPECT_EQ(Channel(film->GetImage(nullptr), {2, 2}, "Variance.G"), 0);
 }
 
+TEST(GBufferFilm, CheckpointStateKeepsTheLayers) {
+    // A film resumed from SaveState writes the same gbuffer channels, variance included
+    FilmFixture f;
+    RGBFilm* a = MakeGBuffer(f, "", {});
+    RGBFilm* b = MakeGBuffer(f, "", {});
+    VisibleSurface vs;
+    vs.set = true;
+    vs.p = Point3f(1, 2, 3);
+    vs.n = vs.ns = Normal3f(0, 0, 1);
+    vs.uv = Point2f(0.5f, 0.25f);
+    vs.dpdx = Vector3f(0, 0, 0.1f);
+    vs.albedo = SampledSpectrum(0.5f);
+    SampledWavelengths lambda = a->SampleWavelengths(0.7f);
+    for (Float v : {1.f, 2.f, 4.f}) a->AddSample({3, 2}, SampledSpectrum(v), lambda, &vs, 1);
+    ASSERT_TRUE(b->LoadState(a->SaveState()));
+    Image ia = a->GetImage(nullptr), ib = b->GetImage(nullptr);
+    for (int c = 0; c < ia.NChannels(); ++c)
+        EXPECT_EQ(ia.GetChannel({3, 2}, c), ib.GetChannel({3, 2}, c)) << ia.ChannelNames()[c];
+    EXPECT_GT(Channel(ib, {3, 2}, "Variance.G"), 0);
+    // An rgb film's state does not load into a gbuffer film
+    RGBFilm* plain = f.Make(SmallRes());
+    EXPECT_FALSE(b->LoadState(plain->SaveState()));
+}
+
 }  // namespace
 }  // namespace kiln
