@@ -7,12 +7,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <sstream>
 
 #include "core/camera/camera_sample.h"
 #include "render/bdpt_integrator.h"
 #include "render/path_integrator.h"
+#include "render/visible_surface_footprint.h"
 #include "render/volpath_integrator.h"
 
 namespace kiln {
@@ -72,6 +74,17 @@ void RenderPixelSample(const Scene& scene, const Integrator& integrator, kiln::S
     if (cameraRay) {
         L = cameraRay->weight * integrator.Li(cameraRay->ray, lambda, sampler, pVisible);
         if constexpr (Radiance::Polarized) L = ToFilmFrame(scene, L, -cameraRay->ray.d);
+        if constexpr (AOVs) {
+            // The visible surface's footprint from the ray's differentials, scaled to the
+            // sampling rate as pbrt-v4 does (not without pixel jitter)
+            if (visible.set) {
+                const int spp = scene.job->sampler->SamplesPerPixel();
+                Float scale = FixedPixelCenter ? Float(1)
+                                               : std::max<Float>(0.125f, 1 / std::sqrt(Float(spp)));
+                SetCameraDifferentials(*scene.camera, cs, cameraRay->ray, lambda, scale, spp,
+                                       &visible);
+            }
+        }
     }
     scene.job->film->AddSample(pPixel, L, lambda, pVisible, cs.filterWeight);
 }

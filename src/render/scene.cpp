@@ -82,9 +82,12 @@ VisibleSurface Scene::MakeVisibleSurface(const SurfaceInteraction& isect, const 
     VisibleSurface vs;
     vs.set = true;
     vs.p = isect.p;
-    vs.n = isect.n;
-    vs.ns = isect.shading.n;
-    vs.depth = camera->GetCameraTransform().CameraFromRender()(isect.p).z;
+    // Normals on the side the ray came from, as pbrt-v4's VisibleSurface
+    vs.n = FaceForward(isect.n, isect.wo);
+    vs.ns = FaceForward(isect.shading.n, isect.wo);
+    vs.uv = isect.uv;
+    // dp/dx and dp/dy: set by the pixel loop from the camera ray's differentials
+    // (SetCameraDifferentials)
     // Albedo from a fixed stratified sample set, as pbrt-v4's VisibleSurface
     constexpr int n = 16;
     std::array<Float, n> uc;

@@ -199,6 +199,7 @@ class Scene {
         const RGBColorSpace* colorSpace = nullptr;
         std::optional<bool> stokes;
         bool genericFootprints = false;
+        CameraTransform cameraTransform;  // the camera's placement (gbuffer layers' spaces)
     };
     JobRecipe jobRecipe;
     std::optional<Filter> filter;

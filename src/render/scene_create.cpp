@@ -87,7 +87,9 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOpti
 // charge to the scene's budget recorded
 void CreateJobFilm(Scene& scene, RenderJob& job, const RenderOptions& options, Diagnostics& diag) {
     const Scene::JobRecipe& r = scene.jobRecipe;
-    RGBFilm::Request request{options.cropWindow, options.pixelBounds, r.stokes};
+    RGBFilm::Request request{options.cropWindow, options.pixelBounds, r.stokes,
+                             r.cameraTransform.CameraFromRender(),
+                             r.cameraTransform.WorldFromRender()};
     double before = job.arena.Budget().Committed();
     job.film = RGBFilm::Create(r.film.name, r.film.parameters, r.exposureTime, *scene.filter,
                                r.colorSpace, r.film.loc, job.arena, diag, request);
@@ -116,9 +118,14 @@ void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const RenderOptio
         throw SceneError(desc.camera.loc, "shutterclose is before shutteropen", "shutterclose");
     scene.autoExposure = desc.film.parameters.GetOneBool("autoexposure", false);
     // The first render job; later ones (Scene::SetJob) are built from the same recipe
-    scene.jobRecipe = Scene::JobRecipe{
-        desc.film,           desc.sampler,   desc.seedOption,          shutterClose - shutterOpen,
-        desc.filmColorSpace, options.stokes, options.genericFootprints};
+    scene.jobRecipe = Scene::JobRecipe{desc.film,
+                                       desc.sampler,
+                                       desc.seedOption,
+                                       shutterClose - shutterOpen,
+                                       desc.filmColorSpace,
+                                       options.stokes,
+                                       options.genericFootprints,
+                                       desc.camera.cameraTransform};
     scene.job = std::make_unique<RenderJob>(arena.Budget());
     CreateJobFilm(scene, *scene.job, options, diag);
     scene.camera = Camera::Create(desc.camera.name, desc.camera.parameters,

@@ -181,8 +181,8 @@ TEST(RGBFilm, GBufferExrHasAOVs) {
     RGBFilm* film = f.Make(SmallRes(), "gbuffer");
     VisibleSurface vs;
     vs.set = true;
-    vs.ns = Normal3f(0, 0, 1);
-    vs.depth = 3.5f;
+    vs.n = vs.ns = Normal3f(0, 0, 1);
+    vs.p = Point3f(0, 0, 3.5f);  // render space, which is the film's camera space here
     vs.albedo = SampledSpectrum(0.5f);
     const int n = 512;
     for (int i = 0; i < n; ++i) {
@@ -197,11 +197,11 @@ TEST(RGBFilm, GBufferExrHasAOVs) {
     Image im = Image::Read(exr, &rd);
     EXPECT_EQ(im.Format(), PixelFormat::Half);  // savefp16 default
     for (const char* ch :
-         {"R", "G", "B", "albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z", "Z"})
+         {"R", "G", "B", "Albedo.R", "Albedo.G", "Albedo.B", "N.X", "N.Y", "N.Z", "P.Z"})
         EXPECT_GE(im.ChannelIndex(ch), 0) << ch;
-    EXPECT_NEAR(im.GetChannel({1, 2}, im.ChannelIndex("Z")), 3.5f, 1e-3f);
+    EXPECT_NEAR(im.GetChannel({1, 2}, im.ChannelIndex("P.Z")), 3.5f, 1e-3f);
     EXPECT_NEAR(im.GetChannel({1, 2}, im.ChannelIndex("N.Z")), 1, 1e-3f);
-    for (const char* ch : {"albedo.R", "albedo.G", "albedo.B"})
+    for (const char* ch : {"Albedo.R", "Albedo.G", "Albedo.B"})
         EXPECT_NEAR(im.GetChannel({1, 2}, im.ChannelIndex(ch)), 0.5f, 0.01f) << ch;
     EXPECT_EQ(rd.samplesPerPixel, n);
     EXPECT_EQ(rd.colorSpace, &RGBColorSpace::sRGB());

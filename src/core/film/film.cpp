@@ -153,19 +153,35 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
                 "\" (expected \"Standard\", \"Filmic\", \"ACES\", \"Glow\" or \"Raw\")",
             o.view);
     o.writeAOVs = aovs;
+    Transform outputFromRender;
+    if (aovs) {
+        std::string space = params.GetOneString("coordinatesystem", "camera");
+        if (space == "camera") {
+            o.aovSpace = GBufferLayers::Space::Camera;
+            outputFromRender = request.cameraFromRender;
+        } else if (space == "world") {
+            o.aovSpace = GBufferLayers::Space::World;
+            outputFromRender = request.worldFromRender;
+        } else {
+            throw SceneError(params.Loc("coordinatesystem"),
+                             "unknown coordinate system \"" + space +
+                                 "\" for the gbuffer film (expected \"camera\" or \"world\")",
+                             space);
+        }
+    }
     o.stokes = stokes;
     PixelSensor sensor = PixelSensor::Create(params, colorSpace, exposureTime, loc, diag);
-    return arena.New<RGBFilm>(o, sensor, filter, colorSpace);
+    return arena.New<RGBFilm>(o, sensor, filter, colorSpace, outputFromRender);
 }
 
 // RGBFilm Method Definitions
 RGBFilm::RGBFilm(const Options& options, const PixelSensor& sensor, const Filter& filter,
-                 const RGBColorSpace* cs)
+                 const RGBColorSpace* cs, const Transform& outputFromRender)
     : opts(options), sensor(sensor), filter(filter), colorSpace(cs ? cs : &RGBColorSpace::sRGB()) {
     outputRGBFromSensorRGB = MulM(colorSpace->RGBFromXYZ(), sensor.XYZFromSensorRGB);
     size_t n = size_t(std::max<int64_t>(0, opts.pixelBounds.Area()));
     pixels.resize(n);
-    if (opts.writeAOVs) aovs.resize(n);
+    if (opts.writeAOVs) aovs = GBufferLayers(n, outputFromRender);
     if (opts.stokes) stokesPixels.resize(n);
 }
 
@@ -219,18 +235,12 @@ void RGBFilm::AddSample(Point2i pPixel, const SampledSpectrum& L, const Stokes* 
             for (int c = 0; c < 3; ++c) sp.rgbSum[k][c] += double(weight) * stokes[k][c];
     }
 
-    if (!aovs.empty() && visibleSurface && visibleSurface->set) {
+    if (!aovs.Empty() && visibleSurface && visibleSurface->set) {
         // Albedo as the colour of the reflectance under the colour space's illuminant (an
         // albedo of 1 gives RGB (1, 1, 1)).
         SampledSpectrum lit = visibleSurface->albedo * colorSpace->Illuminant().Sample(lambda);
         RGB a = colorSpace->ToRGB(SpectrumToXYZ(lit, lambda));
-        AOVPixel& ap = aovs[idx];
-        for (int c = 0; c < 3; ++c) {
-            ap.albedo[c] += double(weight) * a[c];
-            ap.n[c] += double(weight) * visibleSurface->ns[c];
-        }
-        ap.depth += double(weight) * visibleSurface->depth;
-        ap.weightSum += weight;
+        aovs.Add(idx, *visibleSurface, a, rgb, weight);
     }
 }
 
@@ -303,8 +313,9 @@ Image RGBFilm::GetImage(ImageMetadata* metadata) const {
     const Bounds2i& b = opts.pixelBounds;
     Point2i res(b.pMax.x - b.pMin.x, b.pMax.y - b.pMin.y);
     std::vector<std::string> names = {"R", "G", "B"};
-    if (!aovs.empty())
-        names.insert(names.end(), {"albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z", "Z"});
+    if (!aovs.Empty())
+        names.insert(names.end(), GBufferLayers::ChannelNames().begin(),
+                     GBufferLayers::ChannelNames().end());
     const int stokesChannel = int(names.size());
     if (!stokesPixels.empty())
         names.insert(names.end(), {"S0.R", "S0.G", "S0.B", "S1.R", "S1.G", "S1.B", "S2.R", "S2.G",
@@ -321,14 +332,9 @@ Image RGBFilm::GetImage(ImageMetadata* metadata) const {
                     for (int c = 0; c < 3; ++c)
                         image.SetChannel({x, y}, stokesChannel + 3 * k + c, s[c]);
                 }
-            if (aovs.empty()) continue;
-            const AOVPixel& ap = aovs[PixelIndex(p)];
-            double w = ap.weightSum != 0 ? 1 / ap.weightSum : 0;
-            for (int c = 0; c < 3; ++c) {
-                image.SetChannel({x, y}, 3 + c, Float(ap.albedo[c] * w));
-                image.SetChannel({x, y}, 6 + c, Float(ap.n[c] * w));
-            }
-            image.SetChannel({x, y}, 9, Float(ap.depth * w));
+            if (aovs.Empty()) continue;
+            size_t i = PixelIndex(p);
+            aovs.WritePixel(image, {x, y}, 3, i, pixels[i].weightSum);
         }
     if (metadata) {
         metadata->pixelBounds = b;
@@ -393,7 +399,7 @@ void RGBFilm::WriteImage(const std::string& filename, ImageMetadata metadata,
 
 // Checkpoint state
 namespace {
-constexpr char kStateMagic[8] = {'k', 'f', 'i', 'l', 'm', 0, 0, 2};
+constexpr char kStateMagic[8] = {'k', 'f', 'i', 'l', 'm', 0, 0, 3};
 
 template <typename T>
 void AppendRaw(std::string& out, const T* data, size_t count) {
@@ -405,11 +411,11 @@ std::string RGBFilm::SaveState() const {
     std::string out(kStateMagic, sizeof(kStateMagic));
     const int64_t header[8] = {opts.pixelBounds.pMin.x,      opts.pixelBounds.pMin.y,
                                opts.pixelBounds.pMax.x,      opts.pixelBounds.pMax.y,
-                               int64_t(pixels.size()),       int64_t(aovs.size()),
+                               int64_t(pixels.size()),       int64_t(aovs.Pixels().size()),
                                int64_t(stokesPixels.size()), int64_t(splats.size())};
     AppendRaw(out, header, 8);
     AppendRaw(out, pixels.data(), pixels.size());
-    AppendRaw(out, aovs.data(), aovs.size());
+    AppendRaw(out, aovs.Pixels().data(), aovs.Pixels().size());
     AppendRaw(out, stokesPixels.data(), stokesPixels.size());
     std::vector<double> splatValues(splats.size());
     for (size_t i = 0; i < splats.size(); ++i) splatValues[i] = splats[i].load();
@@ -422,23 +428,26 @@ std::string RGBFilm::SaveState() const {
 bool RGBFilm::LoadState(std::string_view state) {
     const int64_t expect[8] = {opts.pixelBounds.pMin.x,      opts.pixelBounds.pMin.y,
                                opts.pixelBounds.pMax.x,      opts.pixelBounds.pMax.y,
-                               int64_t(pixels.size()),       int64_t(aovs.size()),
+                               int64_t(pixels.size()),       int64_t(aovs.Pixels().size()),
                                int64_t(stokesPixels.size()), int64_t(splats.size())};
     size_t size = sizeof(kStateMagic) + sizeof(expect) + pixels.size() * sizeof(Pixel) +
-                  aovs.size() * sizeof(AOVPixel) + stokesPixels.size() * sizeof(StokesPixel) +
-                  splats.size() * sizeof(double) + 2 * sizeof(int64_t);
+                  aovs.Pixels().size() * sizeof(GBufferLayers::Pixel) +
+                  stokesPixels.size() * sizeof(StokesPixel) + splats.size() * sizeof(double) +
+                  2 * sizeof(int64_t);
     if (state.size() != size || std::memcmp(state.data(), kStateMagic, sizeof(kStateMagic)) != 0 ||
         std::memcmp(state.data() + sizeof(kStateMagic), expect, sizeof(expect)) != 0)
         return false;
     const char* p = state.data() + sizeof(kStateMagic) + sizeof(expect);
     // The layers are sums of doubles, each finite as kiln adds only finite values (the film
     // rejects the others): a state with anything else is damaged and is not resumed
-    static_assert(sizeof(Pixel) % sizeof(double) == 0 && sizeof(AOVPixel) % sizeof(double) == 0 &&
+    static_assert(sizeof(Pixel) % sizeof(double) == 0 &&
+                  sizeof(GBufferLayers::Pixel) % sizeof(double) == 0 &&
                   sizeof(StokesPixel) % sizeof(double) == 0);
-    size_t sums = (pixels.size() * sizeof(Pixel) + aovs.size() * sizeof(AOVPixel) +
-                   stokesPixels.size() * sizeof(StokesPixel)) /
-                      sizeof(double) +
-                  splats.size();
+    size_t sums =
+        (pixels.size() * sizeof(Pixel) + aovs.Pixels().size() * sizeof(GBufferLayers::Pixel) +
+         stokesPixels.size() * sizeof(StokesPixel)) /
+            sizeof(double) +
+        splats.size();
     for (size_t i = 0; i < sums; ++i) {
         double v;
         std::memcpy(&v, p + i * sizeof(double), sizeof(double));
@@ -453,7 +462,7 @@ bool RGBFilm::LoadState(std::string_view state) {
         p += bytes;
     };
     take(pixels.data(), pixels.size() * sizeof(Pixel));
-    take(aovs.data(), aovs.size() * sizeof(AOVPixel));
+    take(aovs.Pixels().data(), aovs.Pixels().size() * sizeof(GBufferLayers::Pixel));
     take(stokesPixels.data(), stokesPixels.size() * sizeof(StokesPixel));
     for (std::atomic<double>& s : splats) {
         double v;
@@ -469,7 +478,7 @@ bool RGBFilm::LoadState(std::string_view state) {
 
 void RGBFilm::Clear() {
     std::fill(pixels.begin(), pixels.end(), Pixel());
-    std::fill(aovs.begin(), aovs.end(), AOVPixel());
+    std::fill(aovs.Pixels().begin(), aovs.Pixels().end(), GBufferLayers::Pixel());
     std::fill(stokesPixels.begin(), stokesPixels.end(), StokesPixel());
     for (std::atomic<double>& s : splats) s.store(0);
     nonFiniteCount = 0;

@@ -20,6 +20,7 @@
 #include "base/object_arena.h"
 #include "base/vecmath.h"
 #include "core/film/filter.h"
+#include "core/film/gbuffer_layers.h"
 #include "core/film/visible_surface.h"
 #include "core/image/display.h"
 #include "core/image/image.h"
@@ -81,7 +82,9 @@ class RGBFilm {
     // ("cie1931"), "float maxcomponentvalue" (infinity), "float diagonal" (35 mm).
     // kiln additions: "float exposure" (EV stops, default 0: pixel values times 2^exposure),
     // "string view" ("Standard" | "Filmic" | "ACES" | "Raw", for display formats), "bool writeaovs"
-    // (false; film type "gbuffer" sets it: the EXR gains albedo.{R,G,B}, N.{X,Y,Z} and Z layers),
+    // (false; film type "gbuffer" sets it: the EXR gains pbrt-v4's GBufferFilm channels, see
+    // GBufferLayers), "string coordinatesystem" (with AOVs: "camera", the default, or "world":
+    // the space of P, N, Ns, dzdx and dzdy, as pbrt-v4's gbuffer film),
     // "bool stokes" (false; the EXR gains S0.{R,G,B} ... S3.{R,G,B}, the Stokes components
     // with reference axis the image's horizontal, S2 > 0 for light polarised along the
     // diagonal from lower left to upper right; S0 is the RGB image; a scene with it renders
@@ -90,11 +93,13 @@ class RGBFilm {
     // interval, s. colorSpace: output colour space (nullptr: sRGB). Throws SceneError.
     // request: what the render asks besides the scene's parameters (RenderOptions): pixel
     // bounds that replace the scene's crop window and pixel bounds, a crop window that
-    // replaces the scene's, whether to record Stokes layers.
+    // replaces the scene's, whether to record Stokes layers, and the camera's placement (the
+    // "camera" and "world" spaces of the AOV layers; identity: render space).
     struct Request {
         std::optional<Bounds2f> cropWindow;
         std::optional<Bounds2i> pixelBounds;
         std::optional<bool> stokes;
+        Transform cameraFromRender, worldFromRender;
     };
     static RGBFilm* Create(const std::string& type, const ParameterDictionary& params,
                            Float exposureTime, const Filter& filter,
@@ -111,10 +116,12 @@ class RGBFilm {
         Float exposureEV = 0;
         std::string view = "Standard";
         bool writeAOVs = false;
+        GBufferLayers::Space aovSpace = GBufferLayers::Space::Camera;
         bool stokes = false;
     };
+    // outputFromRender: render space to the AOV layers' space (opts.aovSpace).
     RGBFilm(const Options& options, const PixelSensor& sensor, const Filter& filter,
-            const RGBColorSpace* colorSpace);
+            const RGBColorSpace* colorSpace, const Transform& outputFromRender = Transform());
 
     // Limits checked by Create: pixels on a side of the full image, and the memory a pixel
     // of the rendered bounds takes (with or without AOVs).
@@ -124,7 +131,8 @@ class RGBFilm {
     static constexpr Float kMaxExposureEV = 64;
     static constexpr float kMaxHalf = 65504;
     static size_t BytesPerPixel(bool aovs, bool stokes) {
-        return sizeof(Pixel) + (aovs ? sizeof(AOVPixel) : 0) + (stokes ? sizeof(StokesPixel) : 0);
+        return sizeof(Pixel) + (aovs ? sizeof(GBufferLayers::Pixel) : 0) +
+               (stokes ? sizeof(StokesPixel) : 0);
     }
 
     Point2i FullResolution() const { return opts.fullResolution; }
@@ -186,7 +194,7 @@ class RGBFilm {
     int64_t NonFiniteSampleCount() const { return nonFiniteCount.load(); }
     std::optional<Point2i> FirstNonFinitePixel() const;
 
-    // Linear image of the pixel bounds: channels R, G, B (+ albedo.R/G/B, N.X/Y/Z, Z with
+    // Linear image of the pixel bounds: channels R, G, B (+ GBufferLayers::ChannelNames() with
     // AOVs, + S0.R ... S3.B with "stokes"), PixelFormat::Float. Fills *metadata (if not null) with
     // pixel bounds, full resolution and colour space.
     Image GetImage(ImageMetadata* metadata) const;
@@ -216,12 +224,6 @@ class RGBFilm {
         double rgbSum[3] = {0, 0, 0};  // sensor RGB, weighted
         double weightSum = 0;
     };
-    struct AOVPixel {
-        double albedo[3] = {0, 0, 0};  // output-colour-space RGB of the albedo, weighted
-        double n[3] = {0, 0, 0};       // shading normal, weighted
-        double depth = 0;              // weighted
-        double weightSum = 0;          // of samples with a visible surface
-    };
     struct StokesPixel {
         double rgbSum[3][3] = {};  // sensor RGB of S1, S2, S3, weighted
     };
@@ -236,7 +238,7 @@ class RGBFilm {
     const RGBColorSpace* colorSpace;
     ColorMatrix outputRGBFromSensorRGB;
     std::vector<Pixel> pixels;
-    std::vector<AOVPixel> aovs;             // empty unless writeAOVs
+    GBufferLayers aovs;                     // empty unless writeAOVs
     std::vector<StokesPixel> stokesPixels;  // empty unless stokes
     // Splatted sensor RGB, 3 per pixel (empty unless EnableSplats), and its output scale
     std::vector<std::atomic<double>> splats;
