@@ -179,13 +179,14 @@ class OIIOImageCodec final : public ImageCodec {
             return n;
         }
         size_t pread(void* buf, size_t size, int64_t offset) override {
-            if (offset < 0 || size_t(offset) >= bytes.size()) return 0;
+            if (offset < 0 || size == 0 || size_t(offset) >= bytes.size()) return 0;
             size_t n = std::min(size, bytes.size() - size_t(offset));
             std::memcpy(buf, bytes.data() + offset, n);
             return n;
         }
         size_t pwrite(const void* buf, size_t size, int64_t offset) override {
-            if (offset < 0) return 0;
+            // (OpenImageIO's TGA and BMP writers also write nothing from a null buffer)
+            if (offset < 0 || size == 0) return 0;
             if (size_t(offset) + size > bytes.size()) bytes.resize(size_t(offset) + size);
             std::memcpy(bytes.data() + offset, buf, size);
             return size;
