@@ -5,9 +5,9 @@
 
 #include "base/object_arena.h"
 #include "base/sampling.h"
+#include "base/sphere_mappings.h"
 #include "core/parser/diagnostics.h"
 #include "light_test_util.h"
-#include "base/sphere_mappings.h"
 #include "lights/light.h"
 #include "spectral/color.h"
 

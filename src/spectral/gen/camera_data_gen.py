@@ -12,6 +12,7 @@ Inputs are git snapshots of two public repositories (paths given on the command 
              (CIE daylight basis S0, S1, S2, 300-830 nm every 5 nm, CIE 015).
 Usage: camera_data_gen.py RAWTOACES_GIT COLOUR_GIT OUT_DIR
 Values are written digit for digit as the sources give them; nothing is fitted or resampled.
+The files are then formatted with clang-format, as every source file is.
 """
 import ast
 import json
@@ -152,3 +153,6 @@ DaylightBasisTables GetDaylightBasisTables() {{
 
 if __name__ == "__main__":
     main()
+    out = sys.argv[3]
+    subprocess.run(["clang-format", "-i", f"{out}/named_spectra_camera_data.cpp",
+                    f"{out}/color_checker_data.cpp"], check=True)
