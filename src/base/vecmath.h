@@ -392,7 +392,8 @@ inline bool InRenderRange(const Bounds3f& b) {
     return true;
 }
 
-// Rays: origin, unit (or not) direction, time in [0, 1] of the shutter interval.
+// Rays: origin, unit (or not) direction, and scene time (cameras map a sample in [0, 1) into
+// their shutter interval, as pbrt-v4; moving objects are placed at this time).
 struct Ray {
     Point3f o;
     Vector3f d;

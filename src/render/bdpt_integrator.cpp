@@ -34,7 +34,7 @@ Float BDPTIntegrator::PDF(const BDPTVertex& v, const BDPTVertex* prev,
     wn = Normalize(wn);
     Float pdf = 0;
     if (v.type == BDPTVertexType::Camera) {
-        pdf = camera->PDF_We(Ray(v.p(), wn), sampleBounds).dir;
+        pdf = camera->PDF_We(Ray(v.p(), wn, v.si.time), sampleBounds).dir;
     } else {
         if (!prev) return 0;
         Vector3f wp = prev->p() - v.p();
@@ -103,14 +103,15 @@ int BDPTIntegrator::CameraSubpath(const Ray& ray, SampledWavelengths& lambda, Sa
     v.type = BDPTVertexType::Camera;
     v.beta = SampledSpectrum(1);
     v.si.p = ray.o;
+    v.si.time = ray.time;
     Float pdfDir = camera->PDF_We(ray, sampleBounds).dir;
     return RandomWalk(lambda, ray, sampler, v.beta, pdfDir, maxDepth - 1, TransportMode::Radiance,
                       path + 1, visibleSurface) +
            1;
 }
 
-int BDPTIntegrator::LightSubpath(SampledWavelengths& lambda, Sampler& sampler,
-                                 BDPTVertex* path) const {
+int BDPTIntegrator::LightSubpath(SampledWavelengths& lambda, Sampler& sampler, BDPTVertex* path,
+                                 Float time) const {
     int maxDepth = settings.maxDepth + 1;
     std::optional<SampledLight> sampled = lightSampler.Sample(sampler.Get1D());
     Point2f u1 = sampler.Get2D(), u2 = sampler.Get2D();
@@ -119,9 +120,11 @@ int BDPTIntegrator::LightSubpath(SampledWavelengths& lambda, Sampler& sampler,
     std::optional<LightLeSample> les = light.SampleLe(u1, u2, lambda, *scene.job->shader);
     if (!les || les->pdfPos == 0 || les->pdfDir == 0 || !les->L) return 0;
 
+    les->ray.time = time;  // the camera ray's: moving objects are where the camera sees them
     Float pLight = sampled->p * les->pdfPos;
     BDPTVertex& v = path[0];
     v = BDPTVertex();
+    v.si.time = time;
     v.type = BDPTVertexType::Light;
     v.light = sampled->index;
     v.lightType = light.Type();
@@ -220,7 +223,7 @@ SampledSpectrum BDPTIntegrator::Li(Ray ray, SampledWavelengths& lambda, Sampler&
     BDPTVertex* cameraVertices = vertices.data();
     BDPTVertex* lightVertices = vertices.data() + settings.maxDepth + 2;
     int nCamera = CameraSubpath(ray, lambda, sampler, cameraVertices, visibleSurface);
-    int nLight = LightSubpath(lambda, sampler, lightVertices);
+    int nLight = LightSubpath(lambda, sampler, lightVertices, ray.time);
 
     // Light sampling (s = 1) runs whether or not the light subpath could start: its MIS weight
     // counts on it. (pbrt-v4 skips it with the light subpath, which darkens scenes whose light
@@ -263,11 +266,12 @@ SampledSpectrum BDPTIntegrator::Connect(SampledWavelengths& lambda, BDPTVertex* 
         const BDPTVertex& qs = lightVertices[s - 1];
         if (qs.IsConnectible()) {
             std::optional<CameraWiSample> cs =
-                camera->SampleWi(qs.p(), sampler.Get2D(), sampleBounds);
+                camera->SampleWi(qs.p(), qs.si.time, sampler.Get2D(), sampleBounds);
             if (cs) {
                 *pRaster = cs->pRaster;
                 sampled.type = BDPTVertexType::Camera;
                 sampled.si.p = cs->pLens;
+                sampled.si.time = qs.si.time;
                 sampled.si.n = cs->nLens;
                 sampled.beta = cs->Wi / cs->pdf;
                 L = qs.beta * qs.f(sampled, TransportMode::Importance) * sampled.beta;

@@ -48,7 +48,9 @@ class BDPTIntegrator {
   private:
     int CameraSubpath(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler,
                       BDPTVertex* path, VisibleSurface* visibleSurface) const;
-    int LightSubpath(SampledWavelengths& lambda, Sampler& sampler, BDPTVertex* path) const;
+    // The light subpath at the camera ray's time.
+    int LightSubpath(SampledWavelengths& lambda, Sampler& sampler, BDPTVertex* path,
+                     Float time) const;
     int RandomWalk(SampledWavelengths& lambda, Ray ray, Sampler& sampler, SampledSpectrum beta,
                    Float pdf, int maxDepth, TransportMode mode, BDPTVertex* path,
                    VisibleSurface* visibleSurface) const;

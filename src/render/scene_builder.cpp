@@ -202,21 +202,19 @@ void SceneBuilder::Integrator(const std::string& name, ParsedParameterVector par
 void SceneBuilder::Camera(const std::string& name, ParsedParameterVector params,
                           const FileLoc& loc) {
     RequireWorld("Camera", loc, false);
-    if (CtmIsAnimated() && !warnedAnimated) {
-        diag.Warn(loc, "animated camera transforms are not supported; using the start transform");
-        warnedAnimated = true;
-    }
     // The CTM is camera-from-world; the camera's coordinate system is its inverse.
     TransformSet cameraFromWorld = gs.ctm;
-    if (cameraFromWorld.t[0].IsSingular())
-        throw SceneError(loc, "the camera transform is singular (e.g. a zero Scale)", name);
+    for (const kiln::Transform& t : cameraFromWorld.t)
+        if (t.IsSingular())
+            throw SceneError(loc, "the camera transform is singular (e.g. a zero Scale)", name);
     TransformSet worldFromCamera;
     for (int i = 0; i < 2; ++i) worldFromCamera.t[i] = Inverse(cameraFromWorld.t[i]);
     namedCoordinateSystems["camera"] = worldFromCamera;
     scene.camera.name = name;
     scene.camera.parameters = Dict(loc, std::move(params));
     scene.camera.loc = loc;
-    scene.camera.cameraTransform = CameraTransform(worldFromCamera.t[0]);
+    scene.camera.cameraTransform = CameraTransform(AnimatedTransform(
+        worldFromCamera.t[0], transformStartTime, worldFromCamera.t[1], transformEndTime));
     scene.camera.medium = gs.currentOutsideMedium;
     scene.cameraGiven = true;
     renderFromWorld = scene.camera.cameraTransform.RenderFromWorld();
@@ -232,6 +230,7 @@ void SceneBuilder::MakeNamedMedium(const std::string& name, ParsedParameterVecto
                                    const FileLoc& loc) {
     if (!mediumNames.insert(name).second)
         throw SceneError(loc, "redefinition of named medium '" + name + "'", name);
+    WarnIfAnimated(loc, "media");
     scene.media.emplace_back(
         name, TransformedSceneEntity("", Dict(loc, std::move(params), gs.mediumAttributes), loc,
                                      RenderFromObject()));
@@ -292,20 +291,45 @@ void SceneBuilder::Attribute(const std::string& target, ParsedParameterVector pa
 
 bool SceneBuilder::CtmIsAnimated() const { return !(gs.ctm.t[0] == gs.ctm.t[1]); }
 
-kiln::Transform SceneBuilder::RenderFromObject() const { return renderFromWorld * gs.ctm.t[0]; }
+kiln::Transform SceneBuilder::RenderFromObject(int which) const {
+    return renderFromWorld * gs.ctm.t[which];
+}
+
+AnimatedTransform SceneBuilder::RenderFromObjectMotion() const {
+    return AnimatedTransform(RenderFromObject(0), transformStartTime, RenderFromObject(1),
+                             transformEndTime);
+}
+
+void SceneBuilder::WarnIfAnimated(const FileLoc& loc, const char* what) {
+    if (!CtmIsAnimated() || !warnedAnimated.insert(what).second) return;
+    diag.Warn(loc, std::string("animated transforms of ") + what +
+                       " are not supported (as in pbrt-v4); using the start transform");
+}
 
 void SceneBuilder::Shape(const std::string& name, ParsedParameterVector params,
                          const FileLoc& loc) {
     RequireWorld("Shape", loc, true);
-    if (CtmIsAnimated() && !warnedAnimated) {
-        diag.Warn(loc, "animated transforms are not supported; using the start transform");
-        warnedAnimated = true;
-    }
     ShapeSceneEntity shape;
     shape.name = name;
     shape.parameters = Dict(loc, std::move(params), gs.shapeAttributes);
     shape.loc = loc;
     shape.renderFromObject = RenderFromObject();
+    if (CtmIsAnimated()) {
+        // A moving shape is made in its object space and placed at each ray's time
+        AnimatedTransform motion = RenderFromObjectMotion();
+        if (motion.IsAnimated()) {
+            if (!gs.areaLightName.empty())
+                throw SceneError(loc,
+                                 "animated area lights are not supported (as in pbrt-v4): the "
+                                 "shape's start and end transforms differ",
+                                 name);
+            if (motion.Start().IsSingular() || motion.End().IsSingular())
+                throw SceneError(loc, "a moving shape's transform is singular (e.g. a zero Scale)",
+                                 name);
+            shape.motion = motion;
+            shape.renderFromObject = kiln::Transform();
+        }
+    }
     shape.reverseOrientation = gs.reverseOrientation;
     shape.materialIndex = gs.currentMaterialIndex;
     shape.materialName = gs.currentMaterialName;
@@ -348,6 +372,7 @@ void SceneBuilder::Texture(const std::string& name, const std::string& type,
     tex.parameters = Dict(loc, std::move(params), gs.textureAttributes);
     tex.loc = loc;
     tex.renderFromObject = RenderFromObject();
+    WarnIfAnimated(loc, "textures");
     if (tex.renderFromObject.IsSingular()) {
         // 3D and projective mappings need the inverse
         diag.Warn(loc,
@@ -385,6 +410,7 @@ void SceneBuilder::NamedMaterial(const std::string& name, const FileLoc& loc) {
 void SceneBuilder::LightSource(const std::string& name, ParsedParameterVector params,
                                const FileLoc& loc) {
     RequireWorld("LightSource", loc, true);
+    WarnIfAnimated(loc, "lights");
     if (RenderFromObject().IsSingular()) {
         // Lights place and orient themselves through the inverse transform
         diag.Warn(loc, "light \"" + name + "\" under a singular transform; skipped");
@@ -430,11 +456,20 @@ void SceneBuilder::ObjectEnd(const FileLoc& loc) {
 void SceneBuilder::ObjectInstance(const std::string& name, const FileLoc& loc) {
     RequireWorld("ObjectInstance", loc, true);
     if (activeInstance) throw SceneError(loc, "ObjectInstance inside an object definition", name);
-    if (CtmIsAnimated() && !warnedAnimated) {
-        diag.Warn(loc, "animated transforms are not supported; using the start transform");
-        warnedAnimated = true;
-    }
     kiln::Transform renderFromInstance = RenderFromObject() * Inverse(renderFromWorld);
+    if (CtmIsAnimated()) {
+        AnimatedTransform motion(RenderFromObject(0) * Inverse(renderFromWorld), transformStartTime,
+                                 RenderFromObject(1) * Inverse(renderFromWorld), transformEndTime);
+        if (motion.IsAnimated()) {
+            if (motion.Start().IsSingular() || motion.End().IsSingular()) {
+                diag.Warn(loc, "ObjectInstance '" + name + "' under a singular transform; skipped");
+                return;
+            }
+            Account(sizeof(InstanceSceneEntity) + 512 + double(name.size()), loc);
+            scene.instances.push_back({name, loc, motion.Start(), motion});
+            return;
+        }
+    }
     if (renderFromInstance.IsSingular()) {
         // An instance flattened to zero volume (Embree needs the inverse to trace it)
         diag.Warn(loc, "ObjectInstance '" + name + "' under a singular transform; skipped");

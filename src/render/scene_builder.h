@@ -112,8 +112,13 @@ class SceneBuilder : public ParserTarget {
     template <typename F>
     void ApplyTransform(F f);
     void RequireWorld(const char* directive, const FileLoc& loc, bool inWorld) const;
-    kiln::Transform RenderFromObject() const;
+    kiln::Transform RenderFromObject(int which = 0) const;  // 0: start, 1: end transform
     bool CtmIsAnimated() const;
+    // The CTM's motion in render space, and in render space relative to the world's
+    AnimatedTransform RenderFromObjectMotion() const;
+    // Directives that cannot move use the start transform, with one warning per kind (as
+    // pbrt-v4 warns for lights, textures and media)
+    void WarnIfAnimated(const FileLoc& loc, const char* what);
     // A directive's parameters, whose estimated bytes are added to the description's (an
     // error at loc beyond the memory limit)
     ParameterDictionary Dict(const FileLoc& loc, ParsedParameterVector params,
@@ -132,7 +137,7 @@ class SceneBuilder : public ParserTarget {
     std::map<std::string, TransformSet> namedCoordinateSystems;
     kiln::Transform renderFromWorld;
     bool inWorld = false;
-    bool warnedAnimated = false;
+    std::set<std::string> warnedAnimated;
     double memoryLimit = 0;
     Float transformStartTime = 0, transformEndTime = 1;
     InstanceDefinitionSceneEntity* activeInstance = nullptr;

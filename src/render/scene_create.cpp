@@ -384,6 +384,9 @@ std::vector<std::vector<int>> CreateLights(Scene& scene, SceneDescription& desc,
                                                          le.renderFromObject, shape, le.loc, arena,
                                                          diag, shapes[i].alpha));
             }
+        } else if (shapes[i].heat.emission && s.motion) {
+            diag.Warn(s.loc,
+                      "a hot moving shape glows where rays hit it but is not sampled as a light");
         } else if (shapes[i].heat.emission) {
             shapeLights[i] = emitters.CreateLights(shapes[i].shapes, shapes[i].heat, scene.lights,
                                                    shapes[i].alpha);
@@ -408,42 +411,56 @@ void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<Sce
                      const NamedTextures& textures, const SceneMaterials& materials,
                      const MediumIndices& media, ThermalEmitters& emitters, Diagnostics& diag) {
     scene.aggregate = std::make_unique<kiln::Accelerator>();
+    kiln::Accelerator& aggregate = *scene.aggregate;
+    // One directive's shapes into `definition` (-1: the top level, with their lights); a
+    // moving directive gets a definition of its own, placed at each ray's time
+    auto add = [&](const ShapeSceneEntity& s, const SceneShapes& made, std::span<const int> lights,
+                   int definition) {
+        int target = definition;
+        if (s.motion) target = aggregate.NewInstanceDefinition();
+        if (made.curves)
+            aggregate.AddCurves(*made.curves, made.heat.material, made.heat.emission, made.media,
+                                made.alpha, target);
+        if (!made.shapes.empty()) {
+            if (target < 0)
+                aggregate.Add(made.shapes, made.heat.material, lights, made.heat.emission,
+                              made.media, made.alpha);
+            else
+                aggregate.AddToInstanceDefinition(target, made.shapes, made.heat.material,
+                                                  made.heat.emission, made.media, made.alpha);
+        }
+        if (s.motion) aggregate.AddAnimatedInstance(target, *s.motion, definition);
+    };
     for (size_t i = 0; i < desc.shapes.size(); ++i) {
-        if (shapes[i].curves)
-            scene.aggregate->AddCurves(*shapes[i].curves, shapes[i].heat.material,
-                                       shapes[i].heat.emission, shapes[i].media, shapes[i].alpha);
-        if (shapes[i].shapes.empty()) continue;
-        scene.aggregate->Add(shapes[i].shapes, shapes[i].heat.material, shapeLights[i],
-                             shapes[i].heat.emission, shapes[i].media, shapes[i].alpha);
+        add(desc.shapes[i], shapes[i], shapeLights[i], -1);
         scene.shapeCount += int(shapes[i].shapes.size());
     }
     std::map<std::string, int> definitionIds;
-    for (const InstanceSceneEntity& inst : desc.instances) {
+    std::vector<size_t> placed;  // the description's index of each AddInstance call
+    for (size_t k = 0; k < desc.instances.size(); ++k) {
+        const InstanceSceneEntity& inst = desc.instances[k];
         auto it = definitionIds.find(inst.name);
         if (it == definitionIds.end()) {
             InstanceDefinitionSceneEntity& def = desc.instanceDefinitions.at(inst.name);
-            int id = scene.aggregate->NewInstanceDefinition();
-            for (ShapeSceneEntity& s : def.shapes) {
-                SceneShapes defShapes =
-                    CreateShapes(s, textures, materials, media, emitters, scene.arena, diag);
-                if (defShapes.curves)
-                    scene.aggregate->AddCurves(*defShapes.curves, defShapes.heat.material,
-                                               defShapes.heat.emission, defShapes.media,
-                                               defShapes.alpha, id);
-                if (!defShapes.shapes.empty())
-                    scene.aggregate->AddToInstanceDefinition(
-                        id, defShapes.shapes, defShapes.heat.material, defShapes.heat.emission,
-                        defShapes.media, defShapes.alpha);
-            }
+            int id = aggregate.NewInstanceDefinition();
+            for (ShapeSceneEntity& s : def.shapes)
+                add(s, CreateShapes(s, textures, materials, media, emitters, scene.arena, diag), {},
+                    id);
             it = definitionIds.emplace(inst.name, id).first;
         }
-        scene.aggregate->AddInstance(it->second, inst.renderFromInstance);
+        if (inst.motion) {
+            aggregate.AddAnimatedInstance(it->second, *inst.motion);
+        } else {
+            aggregate.AddInstance(it->second, inst.renderFromInstance);
+            placed.push_back(k);
+        }
     }
-    for (int i : scene.aggregate->Commit())
-        diag.Warn(desc.instances[size_t(i)].loc,
-                  "instance of \"" + desc.instances[size_t(i)].name +
-                      "\" under a singular transform, or one that takes it or the scene's rays "
-                      "beyond the range kiln traces rays in; skipped");
+    for (int i : aggregate.Commit()) {
+        const InstanceSceneEntity& inst = desc.instances[placed[size_t(i)]];
+        diag.Warn(inst.loc, "instance of \"" + inst.name +
+                                "\" under a singular transform, or one that takes it or the "
+                                "scene's rays beyond the range kiln traces rays in; skipped");
+    }
 }
 
 // Light selection for next-event estimation (after PreprocessLights: the power of distant and

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/animated_transform.h"
 #include "base/transform.h"
 #include "core/camera/camera_transform.h"
 #include "core/parser/file_loc.h"
@@ -47,8 +48,11 @@ struct CameraSceneEntity : SceneEntity {
 // anonymous one (materialIndex into SceneDescription::materials) or a named one
 // (materialName); areaLightIndex indexes SceneDescription::areaLights (-1: none).
 // insideMedium and outsideMedium name the media of the MediumInterface in effect ("": none).
+// A moving shape (start and end transforms differ) has `motion` (render from object over
+// time) and the identity as renderFromObject: it is made in its object space.
 struct ShapeSceneEntity : SceneEntity {
     Transform renderFromObject;
+    std::optional<AnimatedTransform> motion;
     bool reverseOrientation = false;
     int materialIndex = -1;
     std::string materialName;
@@ -67,11 +71,13 @@ struct InstanceDefinitionSceneEntity {
     std::vector<ShapeSceneEntity> shapes;
 };
 
-// ObjectInstance: renderFromInstance maps the definition's render space to this instance's.
+// ObjectInstance: renderFromInstance maps the definition's render space to this instance's;
+// a moving instance has `motion` too (renderFromInstance is its start).
 struct InstanceSceneEntity {
     std::string name;
     FileLoc loc;
     Transform renderFromInstance;
+    std::optional<AnimatedTransform> motion;
 };
 
 struct SceneDescription {

@@ -106,7 +106,7 @@ TEST(CameraImportance, SampleWiConnectsToTheFilm) {
                 Normalize(cam->GetCameraTransform().RenderFromCamera()(Vector3f(0, 0, 1)));
             Point3f pRef = center(4 / Dot(center.d, axis));
             Point2f u(rng.UniformFloat(), rng.UniformFloat());
-            std::optional<CameraWiSample> cs = cam->SampleWi(pRef, u, f.bounds);
+            std::optional<CameraWiSample> cs = cam->SampleWi(pRef, 0, u, f.bounds);
             ASSERT_TRUE(cs);
             ++seen;
             // In focus: every lens point sees pRef at the same film position

@@ -223,3 +223,74 @@ TEST(Accelerator, LargeScenesGetTheCompactBVHAndStillHit) {
 
 }  // namespace
 }  // namespace kiln
+
+namespace kiln {
+namespace {
+
+// A unit sphere and a quad (triangles) that move: found where they are at each ray's time,
+// with their materials, at the top level, inside an object definition placed by a static
+// instance, and in a moving instance; shadow rays likewise.
+TEST(Accelerator, MovingShapesAreFoundWhereTheyAreAtTheRaysTime) {
+    Scene s;
+    Accelerator accel;
+    Transform id;
+    Sphere unit(&id, &id, false, 1, -1, 1, 360);
+    std::vector<Shape> sphere = {Shape(&unit)};
+    std::vector<Shape> quad = {Shape(&s.tris[0]), Shape(&s.tris[1])};  // z = 3, |x|, |y| <= 1
+    // A sphere sliding from x = 0 to x = 10 over times 2 to 4 (top level)
+    int slide = accel.NewInstanceDefinition();
+    accel.AddToInstanceDefinition(slide, sphere, Tag(4), EmissionTag(3));
+    accel.AddAnimatedInstance(slide,
+                              AnimatedTransform(Transform(), 2, Translate(Vector3f(10, 0, 0)), 4));
+    // A quad turning a quarter turn about z over times 0 to 1, inside a definition placed at
+    // y = 20 by a static instance
+    int holder = accel.NewInstanceDefinition();
+    int turning = accel.NewInstanceDefinition();
+    accel.AddToInstanceDefinition(turning, quad, Tag(5), nullptr);
+    accel.AddAnimatedInstance(
+        turning,
+        AnimatedTransform(Scale(4, 0.25f, 1), 0, Rotate(90, Vector3f(0, 0, 1)) * Scale(4, 0.25f, 1),
+                          1),
+        holder);
+    accel.AddInstance(holder, Translate(Vector3f(0, 20, 0)));
+    accel.Commit();
+
+    for (Float time : {0.f, 2.f, 2.5f, 3.f, 4.f, 7.f}) {
+        Float x = 10 * Clamp((time - 2) / 2, 0, 1);
+        auto h = accel.Intersect(Ray(Point3f(x + 0.3f, 0, -5), Vector3f(0, 0, 1), time));
+        ASSERT_TRUE(h) << time;
+        EXPECT_NEAR(h->intr.p.z, -std::sqrt(1 - 0.09f), 1e-4f) << time;
+        EXPECT_NEAR(h->intr.p.x, x + 0.3f, 1e-4f) << time;
+        EXPECT_NEAR(h->intr.time, time, 0);
+        EXPECT_EQ(h->intr.material, Tag(4));
+        EXPECT_EQ(h->intr.thermal, EmissionTag(3));
+        EXPECT_EQ(h->intr.lightIndex, -1);
+        test::ExpectNearV(h->intr.n, Normal3f(0.3f, 0, -std::sqrt(1 - 0.09f)), 1e-4f);
+        // Where it was not
+        EXPECT_FALSE(accel.IntersectP(Ray(Point3f(x + 3, 0, -5), Vector3f(0, 0, 1), time)));
+        EXPECT_TRUE(accel.IntersectP(Ray(Point3f(x, 0, -5), Vector3f(0, 0, 1), time)));
+    }
+    // The bar (4 x 0.25 at time 0) lies along x at time 0, along y at 1, along the diagonal at
+    // one half (a matrix blend would have shrunk it there)
+    auto bar = [&](Point3f p, Float time) {
+        return accel.Intersect(Ray(p + Vector3f(0, 20, -5), Vector3f(0, 0, 1), time));
+    };
+    EXPECT_TRUE(bar(Point3f(3.5f, 0, 0), 0));
+    EXPECT_FALSE(bar(Point3f(0, 3.5f, 0), 0));
+    EXPECT_TRUE(bar(Point3f(0, 3.5f, 0), 1));
+    EXPECT_FALSE(bar(Point3f(3.5f, 0, 0), 1));
+    Float d = 3.8f / std::sqrt(2.f);
+    auto h = bar(Point3f(d, d, 0), 0.5f);
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->intr.p.y, 20 + d, 1e-4f);
+    EXPECT_NEAR(h->intr.p.z, 3, 1e-4f);
+    EXPECT_NEAR(h->tHit, 8, 1e-4f);
+    EXPECT_EQ(h->intr.material, Tag(5));
+    // The scene's bounds hold the whole motion
+    Bounds3f b = accel.Bounds();
+    EXPECT_GE(b.pMax.x, 11);
+    EXPECT_GE(b.pMax.y, 24);
+}
+
+}  // namespace
+}  // namespace kiln

@@ -25,9 +25,8 @@ Transform RotateFromTo(Vector3f from, Vector3f to) {
 // CameraBase
 void CameraBase::Approximate_dp_dxy(Point3f p, Normal3f n, Float time, int samplesPerPixel,
                                     Vector3f* dpdx, Vector3f* dpdy) const {
-    (void)time;  // static cameras only
     // Tangent plane of p in a camera space rotated so that p lies on +z.
-    const Transform& cameraFromRender = cameraTransform.CameraFromRender();
+    const Transform cameraFromRender = cameraTransform.CameraFromRender(time);
     Point3f pCamera = cameraFromRender(p);
     Vector3f toP = Vector3f(pCamera);
     if (LengthSquared(toP) == 0) {
@@ -50,7 +49,7 @@ void CameraBase::Approximate_dp_dxy(Point3f p, Normal3f n, Float time, int sampl
     Point3f py = hit(minPosDifferentialY, minDirDifferentialY);
 
     Float sppScale = std::max<Float>(0.125f, 1 / std::sqrt(Float(std::max(1, samplesPerPixel))));
-    const Transform& renderFromCamera = cameraTransform.RenderFromCamera();
+    const Transform renderFromCamera = cameraTransform.RenderFromCamera(time);
     *dpdx = sppScale * renderFromCamera(downZFromCamera.ApplyInverse(px - pDownZ));
     *dpdy = sppScale * renderFromCamera(downZFromCamera.ApplyInverse(py - pDownZ));
 }
@@ -125,7 +124,7 @@ std::optional<CameraRay> PerspectiveCamera::GenerateRay(const CameraSample& samp
     Point3f pCamera = cameraFromRaster(Point3f(sample.pFilm.x, sample.pFilm.y, 0));
     Ray ray(Point3f(0, 0, 0), Normalize(Vector3f(pCamera)), SampleTime(sample.time));
     ApplyThinLens(sample.pLens, &ray);
-    return CameraRay{cameraTransform.RenderFromCamera()(ray)};
+    return CameraRay{cameraTransform.RenderFromCamera(ray)};
 }
 
 namespace {
@@ -136,13 +135,14 @@ bool Inside(Point2f p, const Bounds2f& b) {
 }  // namespace
 
 bool PerspectiveCamera::RasterPosition(const Ray& ray, Float* cosTheta, Point2f* pRaster) const {
-    Vector3f dCamera = cameraTransform.CameraFromRender()(ray.d);
+    const Transform cameraFromRender = cameraTransform.CameraFromRender(ray.time);
+    Vector3f dCamera = cameraFromRender(ray.d);
     Float len = Length(dCamera);
     if (!(len > 0)) return false;
     *cosTheta = dCamera.z / len;
     if (!(*cosTheta > 0)) return false;
     // The ray's point on the plane of focus (z = 1 for a pinhole): its film position
-    Point3f oCamera = cameraTransform.CameraFromRender()(ray.o);
+    Point3f oCamera = cameraFromRender(ray.o);
     Float zFocus = lensRadius > 0 ? focalDistance : 1;
     Point3f pFocus = oCamera + dCamera * ((zFocus - oCamera.z) / dCamera.z);
     Point3f pRaster3 = (rasterFromScreen * screenFromCamera)(pFocus);
@@ -167,10 +167,10 @@ CameraPDF PerspectiveCamera::PDF_We(const Ray& ray, Bounds2f sampleBounds) const
     return {1 / LensArea(), 1 / (imagePlaneArea * cosTheta * cosTheta * cosTheta)};
 }
 
-std::optional<CameraWiSample> PerspectiveCamera::SampleWi(Point3f pRef, Point2f u,
+std::optional<CameraWiSample> PerspectiveCamera::SampleWi(Point3f pRef, Float time, Point2f u,
                                                           Bounds2f sampleBounds) const {
     Point2f pLens = lensRadius * SampleUniformDiskConcentric(u);
-    const Transform& renderFromCamera = cameraTransform.RenderFromCamera();
+    const Transform renderFromCamera = cameraTransform.RenderFromCamera(time);
     Point3f pLensRender = renderFromCamera(Point3f(pLens.x, pLens.y, 0));
     Normal3f nLens = Normalize(renderFromCamera(Normal3f(0, 0, 1)));
     Vector3f wi = pLensRender - pRef;
@@ -181,7 +181,7 @@ std::optional<CameraWiSample> PerspectiveCamera::SampleWi(Point3f pRef, Point2f 
     if (cosLens == 0) return {};
     Float pdf = dist * dist / (cosLens * LensArea());
     Point2f pRaster;
-    SampledSpectrum Wi = We(Ray(pLensRender, -wi), sampleBounds, &pRaster);
+    SampledSpectrum Wi = We(Ray(pLensRender, -wi, time), sampleBounds, &pRaster);
     if (!Wi) return {};
     return CameraWiSample{Wi, wi, pdf, pRaster, pRef, pLensRender, nLens};
 }
@@ -209,7 +209,7 @@ std::optional<CameraRay> OrthographicCamera::GenerateRay(const CameraSample& sam
         // As pbrt-v4: the lens is centred on the camera axis, focusing this film point.
         ApplyThinLens(sample.pLens, &ray);
     }
-    return CameraRay{cameraTransform.RenderFromCamera()(ray)};
+    return CameraRay{cameraTransform.RenderFromCamera(ray)};
 }
 
 }  // namespace kiln

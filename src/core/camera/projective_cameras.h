@@ -53,7 +53,6 @@ void CameraBase::FindMinimumDifferentials(const C& camera, Point2i fullResolutio
     const Vector3f inf(Infinity, Infinity, Infinity);
     minPosDifferentialX = minPosDifferentialY = minDirDifferentialX = minDirDifferentialY = inf;
     SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.5f);
-    const Transform& cameraFromRender = cameraTransform.CameraFromRender();
     const int n = 512;
     for (int i = 0; i < n; ++i) {
         CameraSample s;
@@ -79,6 +78,7 @@ void CameraBase::FindMinimumDifferentials(const C& camera, Point2i fullResolutio
         };
         Vector3f dOx, dDx, dOy, dDy;
         if (!shifted(0, &dOx, &dDx) || !shifted(1, &dOy, &dDy)) continue;
+        const Transform cameraFromRender = cameraTransform.CameraFromRender(r.time);
         Vector3f dox = cameraFromRender(dOx), doy = cameraFromRender(dOy);
         if (Length(dox) < Length(minPosDifferentialX)) minPosDifferentialX = dox;
         if (Length(doy) < Length(minPosDifferentialY)) minPosDifferentialY = doy;
@@ -132,13 +132,15 @@ class PerspectiveCamera : public ProjectiveCamera {
     // image plane at distance 1 (area A, the full image) and the lens (area pi r^2, 1 for a
     // pinhole) is 1: We = 1 / (A lensArea cos^4 theta), theta from the viewing direction.
     // We of a render-space ray leaving the lens (unit direction); *pRaster gets the film
-    // position it reaches.
+    // position it reaches. The camera is placed where it is at ray.time.
     SampledSpectrum We(const Ray& ray, Bounds2f sampleBounds, Point2f* pRaster = nullptr) const;
     // Densities with which GenerateRay (film position uniform over the image, lens uniform)
     // produces ray: pos 1 / lensArea, dir 1 / (A cos^3 theta); zero outside sampleBounds.
     CameraPDF PDF_We(const Ray& ray, Bounds2f sampleBounds) const;
-    // A point on the lens (uniform, from u) seen from pRef, with its importance towards pRef.
-    std::optional<CameraWiSample> SampleWi(Point3f pRef, Point2f u, Bounds2f sampleBounds) const;
+    // A point on the lens (uniform, from u) seen from pRef at `time`, with its importance
+    // towards pRef.
+    std::optional<CameraWiSample> SampleWi(Point3f pRef, Float time, Point2f u,
+                                           Bounds2f sampleBounds) const;
     // The image plane's area at distance 1 in camera space (A above).
     Float ImagePlaneArea() const { return imagePlaneArea; }
 

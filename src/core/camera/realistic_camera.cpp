@@ -59,7 +59,7 @@ std::optional<CameraRay> RealisticCamera::GenerateRay(const CameraSample& sample
     Float weight = lens.TraceFromFilm(rFilm, &ray);
     if (!(weight > 0)) return std::nullopt;
     ray.time = SampleTime(sample.time);
-    ray = cameraTransform.RenderFromCamera()(ray);
+    ray = cameraTransform.RenderFromCamera(ray);
     ray.d = Normalize(ray.d);
     Float cosAxis = Normalize(rFilm.d).z;
     weight *= Sqr(Sqr(cosAxis)) / (pdf * Sqr(lens.RearZ()));

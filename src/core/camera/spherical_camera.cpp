@@ -26,7 +26,7 @@ std::optional<CameraRay> SphericalCamera::GenerateRay(const CameraSample& sample
         dir = EqualAreaSquareToSphere(WrapEqualAreaSquare(uv));
     std::swap(dir.y, dir.z);
     Ray ray(Point3f(0, 0, 0), Normalize(dir), SampleTime(sample.time));
-    return CameraRay{cameraTransform.RenderFromCamera()(ray)};
+    return CameraRay{cameraTransform.RenderFromCamera(ray)};
 }
 
 }  // namespace kiln

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <deque>
 #include <limits>
 #include <memory>
 #include <stdexcept>
 #include <vector>
 
+#include "base/animated_transform.h"
 #include "base/rng.h"
 #include "core/geometry/shape_util.h"
 
@@ -17,9 +19,17 @@ namespace kiln {
 // Accelerator data
 namespace {
 
+struct SceneBVH;
+
+// A definition that moves (Accelerator::AddAnimatedInstance).
+struct MotionInstance {
+    AnimatedTransform renderFromInstance;  // to the space of the scene holding it
+    const SceneBVH* definition = nullptr;
+};
+
 // What one Embree geometry stands for; the geometry's user data points at it.
 struct GeomRecord {
-    enum class Kind { Triangles, User, Instance, Curves } kind = Kind::User;
+    enum class Kind { Triangles, User, Instance, Curves, Motion } kind = Kind::User;
     const TriangleMesh* mesh = nullptr;
     const CurveSet* curves = nullptr;
     std::vector<int> triIndices;  // primID -> triangle index; empty when the identity
@@ -28,8 +38,9 @@ struct GeomRecord {
     std::vector<int> lights;  // primID -> index of the light in the scene's list; empty: none
     const ThermalEmission* thermal = nullptr;
     MediumInterface media;
-    const AlphaMask* alpha = nullptr;  // cut-outs; nullptr: opaque
-    Transform renderFromInstance;      // Instance
+    const AlphaMask* alpha = nullptr;        // cut-outs; nullptr: opaque
+    Transform renderFromInstance;            // Instance
+    std::unique_ptr<MotionInstance> motion;  // Motion
 };
 
 struct SceneBVH {
@@ -156,6 +167,103 @@ void TriangleAlphaFilter(const RTCFilterFunctionNArguments* args) {
     if (rec->alpha->Masked(si, u)) args->valid[0] = 0;
 }
 
+// The full hit rh found on geometry rec, in the space of the scene holding rec: o and d are
+// the query ray there. User and motion geometries left their hits in ctx.
+std::optional<ShapeIntersection> RecordHit(const GeomRecord& rec, const RTCRayHit& rh,
+                                           const KilnContext& ctx, Point3f o, Vector3f d,
+                                           Float time) {
+    if (rec.kind == GeomRecord::Kind::Motion) return ctx.userHit;  // complete already
+    unsigned prim = rh.hit.primID;
+    ShapeIntersection si;
+    if (rec.kind == GeomRecord::Kind::Triangles) {
+        int tri = rec.triIndices.empty() ? int(prim) : rec.triIndices[prim];
+        Float b1 = Clamp(rh.hit.u, 0, 1), b2 = Clamp(rh.hit.v, 0, 1);
+        if (b1 + b2 > 1) b1 /= (b1 + b2), b2 = 1 - b1;
+        si.intr =
+            Triangle(rec.mesh, tri).InteractionFromBarycentrics({1 - b1 - b2, b1, b2}, time, -d);
+        si.tHit = rh.ray.tfar;
+    } else if (rec.kind == GeomRecord::Kind::Curves) {
+        si.intr = rec.curves->InteractionAt(int(prim), rh.hit.u, o, d, rh.ray.tfar, time);
+        si.tHit = rh.ray.tfar;
+    } else {
+        if (!ctx.userHit) return std::nullopt;
+        si = *ctx.userHit;
+    }
+    si.intr.material = rec.material;
+    si.intr.lightIndex = rec.lights.empty() ? -1 : rec.lights[prim];
+    si.intr.thermal = rec.thermal;
+    si.intr.mediumInterface = rec.media;
+    return si;
+}
+
+// A moving definition as an Embree user geometry (pbrt-v4's AnimatedPrimitive): bounds over
+// the whole motion, and each ray traced in the definition's space at the ray's time.
+void MotionBoundsCallback(const RTCBoundsFunctionArguments* args) {
+    auto* m = static_cast<const GeomRecord*>(args->geometryUserPtr)->motion.get();
+    Bounds3f b = m->renderFromInstance.MotionBounds(m->definition->bounds);
+    args->bounds_o->lower_x = b.pMin.x, args->bounds_o->lower_y = b.pMin.y;
+    args->bounds_o->lower_z = b.pMin.z, args->bounds_o->upper_x = b.pMax.x;
+    args->bounds_o->upper_y = b.pMax.y, args->bounds_o->upper_z = b.pMax.z;
+}
+
+// The ray in the definition's space at its time; false where the transform there is singular
+// or the ray leaves the range Embree traces.
+bool MotionRay(const MotionInstance& m, const RTCRay& r, Transform* t, RTCRay* out) {
+    *t = m.renderFromInstance.Interpolate(r.time);
+    if (t->IsSingular()) return false;
+    Point3f o = t->ApplyInverse(Point3f(r.org_x, r.org_y, r.org_z));
+    Vector3f d = t->ApplyInverse(Vector3f(r.dir_x, r.dir_y, r.dir_z));
+    for (Float v : {o.x, o.y, o.z, d.x, d.y, d.z})
+        if (!(std::abs(v) <= 1.844e18f)) return false;
+    *out = r;
+    out->org_x = o.x, out->org_y = o.y, out->org_z = o.z;
+    out->dir_x = d.x, out->dir_y = d.y, out->dir_z = d.z;
+    return true;
+}
+
+void MotionIntersect(const RTCIntersectFunctionNArguments* args) {
+    if (args->N != 1 || !args->valid[0]) return;
+    auto* rec = static_cast<const GeomRecord*>(args->geometryUserPtr);
+    auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
+    Transform t;
+    RTCRayHit inner;
+    if (!MotionRay(*rec->motion, rh->ray, &t, &inner.ray)) return;
+    inner.hit.geomID = inner.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l)
+        inner.hit.instID[l] = RTC_INVALID_GEOMETRY_ID;
+    const SceneBVH& def = *rec->motion->definition;
+    KilnContext innerContext;
+    rtcIntersect1(def.scene, &innerContext.context, &inner);
+    if (inner.hit.geomID == RTC_INVALID_GEOMETRY_ID || !(inner.ray.tfar < rh->ray.tfar)) return;
+    Point3f o(inner.ray.org_x, inner.ray.org_y, inner.ray.org_z);
+    Vector3f d(inner.ray.dir_x, inner.ray.dir_y, inner.ray.dir_z);
+    std::optional<ShapeIntersection> si =
+        RecordHit(*def.records[inner.hit.geomID], inner, innerContext, o, d, inner.ray.time);
+    if (!si) return;
+    si->intr = TransformInteraction(t, si->intr);
+    rh->ray.tfar = inner.ray.tfar;
+    rh->hit.Ng_x = si->intr.n.x, rh->hit.Ng_y = si->intr.n.y, rh->hit.Ng_z = si->intr.n.z;
+    rh->hit.u = inner.hit.u, rh->hit.v = inner.hit.v;
+    rh->hit.primID = args->primID;
+    rh->hit.geomID = args->geomID;
+    for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l)
+        rh->hit.instID[l] = args->context->instID[l];
+    reinterpret_cast<KilnContext*>(args->context)->userHit = std::move(si);
+}
+
+void MotionOccluded(const RTCOccludedFunctionNArguments* args) {
+    if (args->N != 1 || !args->valid[0]) return;
+    auto* rec = static_cast<const GeomRecord*>(args->geometryUserPtr);
+    auto* r = reinterpret_cast<RTCRay*>(args->ray);
+    Transform t;
+    RTCRay inner;
+    if (!MotionRay(*rec->motion, *r, &t, &inner)) return;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    rtcOccluded1(rec->motion->definition->scene, &context, &inner);
+    if (inner.tfar < 0) r->tfar = -std::numeric_limits<float>::infinity();
+}
+
 void ErrorCallback(void*, RTCError code, const char* message) {
     std::fprintf(stderr, "kiln: Embree error %d: %s\n", int(code), message ? message : "");
 }
@@ -168,7 +276,7 @@ struct Accelerator::Impl {
     std::atomic<int64_t> embreeBytes{0}, embreePeakBytes{0};
     size_t primitives = 0;  // added to the top-level scene and to instance definitions
     SceneBVH top;
-    std::vector<SceneBVH> definitions;
+    std::deque<SceneBVH> definitions;  // stable addresses: motion records point at them
     struct PlacedInstance {
         unsigned geomID;  // in top; RTC_INVALID_GEOMETRY_ID for an empty definition
         Transform renderFromInstance;
@@ -350,6 +458,23 @@ void Accelerator::AddInstance(int definition, const Transform& renderFromInstanc
     impl->Attach(impl->top, g, std::move(rec));
 }
 
+void Accelerator::AddAnimatedInstance(int definition, const AnimatedTransform& renderFromInstance,
+                                      int parent) {
+    const SceneBVH& def = impl->definitions.at(size_t(definition));
+    if (def.records.empty()) return;
+    SceneBVH& s = parent < 0 ? impl->top : impl->definitions.at(size_t(parent));
+    auto rec = std::make_unique<GeomRecord>();
+    rec->kind = GeomRecord::Kind::Motion;
+    rec->motion = std::make_unique<MotionInstance>(MotionInstance{renderFromInstance, &def});
+    s.bounds = Union(s.bounds, renderFromInstance.MotionBounds(def.bounds));
+    RTCGeometry g = rtcNewGeometry(impl->device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(g, 1);
+    rtcSetGeometryBoundsFunction(g, MotionBoundsCallback, nullptr);
+    rtcSetGeometryIntersectFunction(g, MotionIntersect);
+    rtcSetGeometryOccludedFunction(g, MotionOccluded);
+    impl->Attach(s, g, std::move(rec));
+}
+
 void Accelerator::AddCurves(const CurveSet& curves, const Material* material,
                             const ThermalEmission* thermal, MediumInterface media,
                             const AlphaMask* alpha, int definition) {
@@ -488,33 +613,14 @@ std::optional<ShapeIntersection> Accelerator::Intersect(const Ray& ray, Float tM
     if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
         const GeomRecord* inst = impl->top.records[rh.hit.instID[0]].get();
         renderFromInstance = &inst->renderFromInstance;
-        rec = impl->definitions[inst->triIndices[0]].records[rh.hit.geomID].get();
+        rec = impl->definitions[size_t(inst->triIndices[0])].records[rh.hit.geomID].get();
         d = renderFromInstance->ApplyInverse(ray.d);
         o = renderFromInstance->ApplyInverse(ray.o);
     } else {
         rec = impl->top.records[rh.hit.geomID].get();
     }
-    unsigned prim = rh.hit.primID;
-    ShapeIntersection si;
-    if (rec->kind == GeomRecord::Kind::Triangles) {
-        int tri = rec->triIndices.empty() ? int(prim) : rec->triIndices[prim];
-        Float b1 = Clamp(rh.hit.u, 0, 1), b2 = Clamp(rh.hit.v, 0, 1);
-        if (b1 + b2 > 1) b1 /= (b1 + b2), b2 = 1 - b1;
-        si.intr = Triangle(rec->mesh, tri)
-                      .InteractionFromBarycentrics({1 - b1 - b2, b1, b2}, ray.time, -d);
-        si.tHit = rh.ray.tfar;
-    } else if (rec->kind == GeomRecord::Kind::Curves) {
-        si.intr = rec->curves->InteractionAt(int(prim), rh.hit.u, o, d, rh.ray.tfar, ray.time);
-        si.tHit = rh.ray.tfar;
-    } else {
-        if (!ctx.userHit) return std::nullopt;
-        si = *ctx.userHit;
-    }
-    if (renderFromInstance) si.intr = TransformInteraction(*renderFromInstance, si.intr);
-    si.intr.material = rec->material;
-    si.intr.lightIndex = rec->lights.empty() ? -1 : rec->lights[prim];
-    si.intr.thermal = rec->thermal;
-    si.intr.mediumInterface = rec->media;
+    std::optional<ShapeIntersection> si = RecordHit(*rec, rh, ctx, o, d, ray.time);
+    if (si && renderFromInstance) si->intr = TransformInteraction(*renderFromInstance, si->intr);
     return si;
 }
 

@@ -1,7 +1,8 @@
 // Accelerator: Embree 3 BVH over every primitive of the scene. Triangle meshes are native
 // Embree triangle geometries sharing the meshes' buffers, curves native curve geometries; quadrics
 // and bilinear patches are user geometries whose callbacks call Shape::Intersect. Object instances
-// are Embree instance geometries over one scene per definition.
+// are Embree instance geometries over one scene per definition; moving shapes and instances are
+// user geometries that trace the definition's scene at each ray's time.
 #pragma once
 
 #include <embree3/rtcore.h>
@@ -10,6 +11,7 @@
 #include <optional>
 #include <span>
 
+#include "base/animated_transform.h"
 #include "base/transform.h"
 #include "base/vecmath.h"
 #include "core/geometry/alpha_mask.h"
@@ -58,6 +60,13 @@ class Accelerator {
                                  MediumInterface media = {}, const AlphaMask* alpha = nullptr);
     // Places a definition.
     void AddInstance(int definition, const Transform& renderFromInstance);
+    // Places a definition that moves over the shutter (pbrt-v4's AnimatedPrimitive): each ray
+    // is traced in the definition's space through renderFromInstance at the ray's time, and
+    // hits are mapped back with the same transform. parent -1 places it at the top level;
+    // a definition's index places it inside that definition (a moving shape in an object).
+    // Empty definitions are left out.
+    void AddAnimatedInstance(int definition, const AnimatedTransform& renderFromInstance,
+                             int parent = -1);
     // A curve (curve.h) as Embree curve primitives, at the top level (definition -1) or in an
     // instance definition; it must outlive the accelerator. Curves are not lights.
     void AddCurves(const CurveSet& curves, const Material* material, const ThermalEmission* thermal,
