@@ -323,9 +323,6 @@ void SceneBuilder::Shape(const std::string& name, ParsedParameterVector params,
                                  "animated area lights are not supported (as in pbrt-v4): the "
                                  "shape's start and end transforms differ",
                                  name);
-            if (motion.Start().IsSingular() || motion.End().IsSingular())
-                throw SceneError(loc, "a moving shape's transform is singular (e.g. a zero Scale)",
-                                 name);
             shape.motion = motion;
             shape.renderFromObject = kiln::Transform();
         }
@@ -461,10 +458,6 @@ void SceneBuilder::ObjectInstance(const std::string& name, const FileLoc& loc) {
         AnimatedTransform motion(RenderFromObject(0) * Inverse(renderFromWorld), transformStartTime,
                                  RenderFromObject(1) * Inverse(renderFromWorld), transformEndTime);
         if (motion.IsAnimated()) {
-            if (motion.Start().IsSingular() || motion.End().IsSingular()) {
-                diag.Warn(loc, "ObjectInstance '" + name + "' under a singular transform; skipped");
-                return;
-            }
             Account(sizeof(InstanceSceneEntity) + 512 + double(name.size()), loc);
             scene.instances.push_back({name, loc, motion.Start(), motion});
             return;

@@ -7,6 +7,7 @@
 // geometry/accelerator_test.cpp; the interpolation: base/animated_transform_test.cpp.)
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "render_test_util.h"
@@ -48,6 +49,44 @@ TEST(MotionBlur, MovingHotBodyInACavityRendersTheBlackbody) {
         EXPECT_NE(r.warnings[0].message.find("moving"), std::string::npos) << r.warnings[0].message;
         r.warnings.clear();
         testing::ExpectBlackbodyImage(r, T, std::string("moving gold, ") + integrator);
+    }
+}
+
+}  // namespace
+}  // namespace kiln
+
+namespace kiln {
+namespace {
+
+// Motions that flatten a shape to nothing, fling it beyond the range rays are traced in, spin
+// it 1e20 degrees or mirror it render finite pixels, with no warning, under both integrators.
+TEST(MotionBlur, HostileMotionsRenderFinitePixels) {
+    for (const char* end : {"Scale 0 0 0", "ConcatTransform [0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0]",
+                            "Translate 1e30 0 0", "Rotate 1e20 1 1 0", "Scale -1 1 1"}) {
+        for (const char* integrator : {"path", "bdpt"}) {
+            SCOPED_TRACE(std::string(end) + ", " + integrator);
+            std::ostringstream s;
+            s << "TransformTimes 0 1\nLookAt 0 -5 2  0 0 0.5  0 0 1\nCamera \"perspective\"\n"
+              << "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\n"
+              << "Sampler \"zsobol\" \"integer pixelsamples\" 4\n"
+              << "Integrator \"" << integrator << "\"\nWorldBegin\n"
+              << "LightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+              << "AttributeBegin\nActiveTransform EndTime\n"
+              << end << "\nActiveTransform All\n"
+              << "Shape \"sphere\"\nShape \"trianglemesh\" \"integer indices\" [0 1 2] "
+                 "\"point3 P\" [0 0 0 1 0 0 0 1 0]\n"
+              << "ObjectBegin \"o\"\nShape \"disk\"\nObjectEnd\nObjectInstance \"o\"\n"
+              << "AttributeEnd\n";
+            testing::RenderedScene r = testing::RenderText(s.str());
+            EXPECT_TRUE(r.warnings.empty());
+            Bounds2i b = r.scene->job->film->PixelBounds();
+            for (int y = b.pMin.y; y < b.pMax.y; ++y)
+                for (int x = b.pMin.x; x < b.pMax.x; ++x) {
+                    RGB rgb = r.scene->job->film->GetPixelRGB({x, y});
+                    ASSERT_TRUE(std::isfinite(rgb.r) && std::isfinite(rgb.g) &&
+                                std::isfinite(rgb.b));
+                }
+        }
     }
 }
 
