@@ -52,7 +52,8 @@ MajorantIterator GridMedium::SampleRay(const Ray& ray, Float tMax,
 // Creation
 MediumEmission ReadGridEmission(const TextureParameterDictionary& params,
                                 SampledGrid<Float> temperature, int nx, int ny, int nz,
-                                std::optional<EmissionModel> modelOverride, ObjectArena& arena) {
+                                std::optional<EmissionModel> modelOverride, ObjectArena& arena,
+                                bool constantLeScale) {
     std::optional<Spectrum> Le = ReadMediumLe(params);
     if (Le && !temperature.Empty())
         throw SceneError(params.Loc("Le"), "both \"Le\" and \"temperature\" values were provided",
@@ -90,6 +91,9 @@ MediumEmission ReadGridEmission(const TextureParameterDictionary& params,
                 modelOverride ? *modelOverride : t.model.value_or(EmissionModel::Kirchhoff);
             return MediumEmission::Thermal(std::move(temperature), offset, tScale, model);
         }
+        if (LeScale.Empty() && constantLeScale)
+            return MediumEmission::NormalizedBlackbody(std::move(temperature), offset, tScale, {},
+                                                       LeScaleConstant);
         if (LeScale.Empty()) LeScale = SampledGrid<Float>({LeScaleConstant}, 1, 1, 1);
         return MediumEmission::NormalizedBlackbody(std::move(temperature), offset, tScale,
                                                    std::move(LeScale));
@@ -153,7 +157,7 @@ GridMedium* GridMedium::CreateFromVDB(const TextureParameterDictionary& params,
     MediumCoefficients c = ReadMediumCoefficients(params, loc, diag);
     int nx = v.density.XSize(), ny = v.density.YSize(), nz = v.density.ZSize();
     MediumEmission emission =
-        ReadGridEmission(params, std::move(v.temperature), nx, ny, nz, modelOverride, arena);
+        ReadGridEmission(params, std::move(v.temperature), nx, ny, nz, modelOverride, arena, true);
     return arena.New<GridMedium>(v.indexBounds, renderFromMedium * v.mediumFromIndex, c,
                                  std::move(v.density), std::move(emission));
 }

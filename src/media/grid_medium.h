@@ -52,10 +52,13 @@ class GridMedium {
     MajorantGrid majorants;
 };
 
-// How a grid medium glows from its parameters (shared by "uniformgrid" and OpenVDB files):
-// temperature: one value per voxel of the density grid, or empty.
+// How a grid medium glows from its parameters (shared by "uniformgrid" and volume files):
+// temperature: one value per voxel of the density grid, or empty. constantLeScale: one
+// "Lescale" value scales a temperature grid's glow everywhere (pbrt-v4's NanoVDBMedium), not
+// as a one-voxel grid fading toward the box's faces (its GridMedium).
 MediumEmission ReadGridEmission(const TextureParameterDictionary& params,
                                 SampledGrid<Float> temperature, int nx, int ny, int nz,
-                                std::optional<EmissionModel> modelOverride, ObjectArena& arena);
+                                std::optional<EmissionModel> modelOverride, ObjectArena& arena,
+                                bool constantLeScale = false);
 
 }  // namespace kiln
