@@ -11,8 +11,9 @@ namespace kiln {
 // GridMedium
 GridMedium::GridMedium(const Bounds3f& bounds, const Transform& renderFromMedium,
                        const MediumCoefficients& c, SampledGrid<Float> density,
-                       MediumEmission emission)
+                       MediumEmission emission, std::optional<Bounds3f> sampleBounds)
     : bounds(bounds),
+      sampleBounds(sampleBounds.value_or(bounds)),
       renderFromMedium(renderFromMedium),
       sigma_a(c.sigma_a),
       sigma_s(c.sigma_s),
@@ -21,20 +22,33 @@ GridMedium::GridMedium(const Bounds3f& bounds, const Transform& renderFromMedium
       density(std::move(density)),
       emission(std::move(emission)),
       majorants(bounds, 16) {
-    majorants.Fill(
-        [&](const Bounds3f& b) { return this->density.MaxValue(b, [](Float d) { return d; }); });
+    // Majorant voxels are in the unit cube of bounds; the samples' lookups in that of
+    // sampleBounds
+    majorants.Fill([&](const Bounds3f& b) {
+        if (this->sampleBounds.pMin == this->bounds.pMin &&
+            this->sampleBounds.pMax == this->bounds.pMax)
+            return this->density.MaxValue(b, [](Float d) { return d; });
+        Vector3f d = bounds.Diagonal();
+        auto medium = [&](Point3f u) {
+            return Point3f(bounds.pMin.x + u.x * d.x, bounds.pMin.y + u.y * d.y,
+                           bounds.pMin.z + u.z * d.z);
+        };
+        Bounds3f s(UnitPoint(this->sampleBounds, medium(b.pMin)),
+                   UnitPoint(this->sampleBounds, medium(b.pMax)));
+        return this->density.MaxValue(s, [](Float d) { return d; });
+    });
 }
 
-Point3f GridMedium::UnitPoint(Point3f p) const {
-    Vector3f d = bounds.Diagonal();
-    return Point3f((p.x - bounds.pMin.x) / d.x, (p.y - bounds.pMin.y) / d.y,
-                   (p.z - bounds.pMin.z) / d.z);
+Point3f GridMedium::UnitPoint(const Bounds3f& box, Point3f p) {
+    Vector3f d = box.Diagonal();
+    return Point3f((p.x - box.pMin.x) / d.x, (p.y - box.pMin.y) / d.y, (p.z - box.pMin.z) / d.z);
 }
 
 MediumProperties GridMedium::SamplePoint(Point3f p, const SampledWavelengths& lambda) const {
-    Point3f pUnit = UnitPoint(renderFromMedium.ApplyInverse(p));
+    Point3f pMedium = renderFromMedium.ApplyInverse(p);
     // The medium ends at its box (the interpolation would reach half a voxel beyond)
-    if (!InsideUnitCube(pUnit)) return {};
+    if (!InsideUnitCube(UnitPoint(bounds, pMedium))) return {};
+    Point3f pUnit = UnitPoint(sampleBounds, pMedium);
     Float d = scale * density.Lookup(pUnit);
     MediumProperties mp{sigma_a.Sample(lambda) * d, sigma_s.Sample(lambda) * d, g, {}};
     emission.Apply(mp, p, pUnit, lambda);
@@ -159,7 +173,7 @@ GridMedium* GridMedium::CreateFromVDB(const TextureParameterDictionary& params,
     MediumEmission emission =
         ReadGridEmission(params, std::move(v.temperature), nx, ny, nz, modelOverride, arena, true);
     return arena.New<GridMedium>(v.indexBounds, renderFromMedium * v.mediumFromIndex, c,
-                                 std::move(v.density), std::move(emission));
+                                 std::move(v.density), std::move(emission), v.sampleBounds);
 }
 
 }  // namespace kiln

@@ -282,9 +282,9 @@ TEST(MediumTest, BadParametersAreLocatedErrors) {
     EXPECT_NE(error("rgbgrid", {}), "");
     EXPECT_NE(error("fog", {}), "");
     EXPECT_NE(error("homogeneous", {Float1("temperature", -5)}), "");
+    // A missing .nvdb file: kiln's NanoVDB reader names it and says why
     std::string nvdb = error("nanovdb", {String1("filename", "explosion.nvdb")});
-    EXPECT_NE(nvdb.find("NanoVDB"), std::string::npos) << nvdb;
-    EXPECT_NE(nvdb.find(".vdb"), std::string::npos) << nvdb;
+    EXPECT_NE(nvdb.find("explosion.nvdb: cannot read it"), std::string::npos) << nvdb;
     EXPECT_NE(error("nanovdb", {String1("filename", "/nonexistent/smoke.vdb")}), "");
     try {
         f.Make("homogeneous", Dict({}), Scale(0, 1, 1));
