@@ -141,31 +141,38 @@ VDBVolume ReadNanoVDBVolume(const std::string& filename, const std::string& dens
     const bool sameMap = temperature && temperature->Matrix() == density->Matrix() &&
                          temperature->Translation() == density->Translation();
     std::vector<Float> d(n), t(temperature ? n : 0);
-    size_t at = 0;
-    for (int64_t z = first[2]; z <= last[2]; ++z)
-        for (int64_t y = first[1]; y <= last[1]; ++y)
-            for (int64_t x = first[0]; x <= last[0]; ++x, ++at) {
-                float v = density->Value(int32_t(x), int32_t(y), int32_t(z));
-                if (!std::isfinite(v))
-                    fail("the grid \"" + densityName + "\" has a non-finite value at voxel (" +
-                         std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) +
-                         ")");
-                d[at] = std::max(0.f, v);  // negative densities as 0, as for .vdb files
-                if (!temperature) continue;
-                double T;
-                if (sameMap) {
-                    T = temperature->Value(int32_t(x), int32_t(y), int32_t(z));
-                } else {
-                    std::array<double, 3> world =
-                        Apply(density->Matrix(), {double(x), double(y), double(z)});
-                    for (int k = 0; k < 3; ++k)
-                        world[k] += density->Translation()[k] - temperature->Translation()[k];
-                    T = Trilinear(*temperature, Apply(temperature->InverseMatrix(), world));
+    // A damaged node met on the way is an error naming the file
+    try {
+        size_t at = 0;
+        for (int64_t z = first[2]; z <= last[2]; ++z)
+            for (int64_t y = first[1]; y <= last[1]; ++y)
+                for (int64_t x = first[0]; x <= last[0]; ++x, ++at) {
+                    float v = density->Value(int32_t(x), int32_t(y), int32_t(z));
+                    if (!std::isfinite(v))
+                        fail("the grid \"" + densityName + "\" has a non-finite value at voxel (" +
+                             std::to_string(x) + ", " + std::to_string(y) + ", " +
+                             std::to_string(z) + ")");
+                    d[at] = std::max(0.f, v);  // negative densities as 0, as for .vdb files
+                    if (!temperature) continue;
+                    double T;
+                    if (sameMap) {
+                        T = temperature->Value(int32_t(x), int32_t(y), int32_t(z));
+                    } else {
+                        std::array<double, 3> world =
+                            Apply(density->Matrix(), {double(x), double(y), double(z)});
+                        for (int k = 0; k < 3; ++k)
+                            world[k] += density->Translation()[k] - temperature->Translation()[k];
+                        T = Trilinear(*temperature, Apply(temperature->InverseMatrix(), world));
+                    }
+                    if (!std::isfinite(T))
+                        fail("the grid \"" + temperatureName + "\" has non-finite values");
+                    t[at] = Float(T);
                 }
-                if (!std::isfinite(T))
-                    fail("the grid \"" + temperatureName + "\" has non-finite values");
-                t[at] = Float(T);
-            }
+    } catch (const SceneError&) {
+        throw;
+    } catch (const std::runtime_error& e) {
+        fail(e.what());
+    }
 
     VDBVolume v;
     v.density = SampledGrid<Float>(std::move(d), int(nx), int(ny), int(nz));

@@ -91,10 +91,13 @@ std::vector<uint8_t> NanoVDBGridBytes(const NanoVDBGridDescription& g) {
                 uppers.emplace(Coord(x & ~4095, y & ~4095, z & ~4095), 0);
             }
     const uint64_t tree = kGridDataBytes, root = tree + kTreeDataBytes;
-    const uint64_t firstUpper = root + kRootDataBytes + kRootTileBytes * uppers.size();
-    const uint64_t firstLower = firstUpper + kUpperBytes * uppers.size();
-    const uint64_t firstLeaf = firstLower + kLowerBytes * lowers.size();
-    const uint64_t size = firstLeaf + kLeafBytes * leaves.size();
+    const uint64_t nodes = root + kRootDataBytes + kRootTileBytes * uppers.size();
+    const uint64_t upperBytes = kUpperBytes * uppers.size(),
+                   lowerBytes = kLowerBytes * lowers.size(), leafBytes = kLeafBytes * leaves.size();
+    const uint64_t firstUpper = g.uppersLast ? nodes + leafBytes + lowerBytes : nodes;
+    const uint64_t firstLower = g.uppersLast ? nodes + leafBytes : nodes + upperBytes;
+    const uint64_t firstLeaf = g.uppersLast ? nodes : nodes + upperBytes + lowerBytes;
+    const uint64_t size = nodes + upperBytes + lowerBytes + leafBytes;
     uint32_t i = 0;
     for (auto& u : uppers) u.second = i++;
     i = 0;

@@ -26,6 +26,10 @@ struct NanoVDBGridDescription {
     // index-to-world: world = matrix index + translation, matrix row-major (invertible)
     std::array<double, 9> matrix{1, 0, 0, 0, 1, 0, 0, 0, 1};
     std::array<double, 3> translation{};
+    // Lay out leaves, lower nodes, then upper nodes (NanoVDB's builder: the reverse). Readers
+    // follow the offsets, so both read alike; a file whose last upper node holds voxels near
+    // its origin ends in that node's zero table entries (the fuzzing seeds drop them).
+    bool uppersLast = false;
 };
 
 // The grid's bytes as NanoVDB lays them out in memory (what an uncompressed file holds)
