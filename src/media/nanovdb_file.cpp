@@ -36,10 +36,15 @@ T Get(const char* bytes, size_t offset) {
     return v;
 }
 
+// "NanoVDB0", or "NanoVDB2", which later NanoVDB versions may write and read
+bool IsFileMagic(uint64_t magic) {
+    return magic == kNanoVDBMagic || magic == kNanoVDBMagic + (uint64_t(2) << 56);
+}
+
 }  // namespace
 
 bool NanoVDBFile::HasMagic(const std::string& firstBytes) {
-    return firstBytes.size() >= 8 && Get<uint64_t>(firstBytes.data(), 0) == kNanoVDBMagic;
+    return firstBytes.size() >= 8 && IsFileMagic(Get<uint64_t>(firstBytes.data(), 0));
 }
 
 NanoVDBFile::NanoVDBFile(const std::string& filename) : filename(filename) {
@@ -64,7 +69,7 @@ NanoVDBFile::NanoVDBFile(const std::string& filename) : filename(filename) {
         char header[kHeaderBytes];
         read(header, kHeaderBytes, "a segment header");
         uint64_t magic = Get<uint64_t>(header, 0);
-        if (magic != kNanoVDBMagic)
+        if (!IsFileMagic(magic))
             throw std::runtime_error(
                 at == kHeaderBytes ? "not a NanoVDB file (no \"NanoVDB0\" magic number)"
                                    : "the segment at byte " + std::to_string(at - kHeaderBytes) +

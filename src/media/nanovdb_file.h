@@ -39,7 +39,7 @@ class NanoVDBFile {
     // there is none. A grid that would take more than maxBytes of memory is an error.
     std::optional<NanoVDBFloatGrid> ReadFloatGrid(const std::string& name, uint64_t maxBytes) const;
 
-    // Whether bytes begin with NanoVDB's magic number
+    // Whether bytes begin with a NanoVDB file's magic number ("NanoVDB0"; "NanoVDB2")
     static bool HasMagic(const std::string& firstBytes);
 
   private:

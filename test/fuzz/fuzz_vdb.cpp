@@ -26,7 +26,7 @@ namespace {
 
 std::string PaddedNanoVDB(const uint8_t* data, size_t size) {
     std::string s(reinterpret_cast<const char*>(data), size);
-    if (size < 16 || std::memcmp(data, "NanoVDB0", 8) != 0) return s;
+    if (size < 16 || std::memcmp(data, "NanoVDB", 7) != 0) return s;
     constexpr uint64_t kMax = 16 << 20;
     uint16_t count;
     std::memcpy(&count, data + 12, 2);

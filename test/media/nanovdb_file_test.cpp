@@ -92,6 +92,13 @@ TEST(NanoVDBFileTest, WrittenGridsReadBackWithTheirValuesBoxesAndMaps) {
                 }
         EXPECT_EQ(mismatches, 0);
         EXPECT_FALSE(file.ReadFloatGrid("smoke", 1 << 30));
+        // Later NanoVDB versions may mark files "NanoVDB2"
+        {
+            std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+            f.seekp(7);
+            f.put('2');
+        }
+        EXPECT_EQ(NanoVDBFile(path).Grids().size(), 3u);
         EXPECT_EQ(file.ReadFloatGrid("level", 1 << 30)->Class(), NanoVDBGridClass::LevelSet);
         // A grid larger than the memory allowed is refused before it is allocated
         EXPECT_THROW(file.ReadFloatGrid("temperature", 1000), std::runtime_error);
