@@ -11,8 +11,9 @@ namespace kiln {
 // GridMedium
 GridMedium::GridMedium(const Bounds3f& bounds, const Transform& renderFromMedium,
                        const MediumCoefficients& c, SampledGrid<Float> density,
-                       MediumEmission emission)
+                       MediumEmission emission, std::optional<Bounds3f> sampleBounds)
     : bounds(bounds),
+      sampleBounds(sampleBounds.value_or(bounds)),
       renderFromMedium(renderFromMedium),
       sigma_a(c.sigma_a),
       sigma_s(c.sigma_s),
@@ -21,20 +22,33 @@ GridMedium::GridMedium(const Bounds3f& bounds, const Transform& renderFromMedium
       density(std::move(density)),
       emission(std::move(emission)),
       majorants(bounds, 16) {
-    majorants.Fill(
-        [&](const Bounds3f& b) { return this->density.MaxValue(b, [](Float d) { return d; }); });
+    // Majorant voxels are in the unit cube of bounds; the samples' lookups in that of
+    // sampleBounds
+    majorants.Fill([&](const Bounds3f& b) {
+        if (this->sampleBounds.pMin == this->bounds.pMin &&
+            this->sampleBounds.pMax == this->bounds.pMax)
+            return this->density.MaxValue(b, [](Float d) { return d; });
+        Vector3f d = bounds.Diagonal();
+        auto medium = [&](Point3f u) {
+            return Point3f(bounds.pMin.x + u.x * d.x, bounds.pMin.y + u.y * d.y,
+                           bounds.pMin.z + u.z * d.z);
+        };
+        Bounds3f s(UnitPoint(this->sampleBounds, medium(b.pMin)),
+                   UnitPoint(this->sampleBounds, medium(b.pMax)));
+        return this->density.MaxValue(s, [](Float d) { return d; });
+    });
 }
 
-Point3f GridMedium::UnitPoint(Point3f p) const {
-    Vector3f d = bounds.Diagonal();
-    return Point3f((p.x - bounds.pMin.x) / d.x, (p.y - bounds.pMin.y) / d.y,
-                   (p.z - bounds.pMin.z) / d.z);
+Point3f GridMedium::UnitPoint(const Bounds3f& box, Point3f p) {
+    Vector3f d = box.Diagonal();
+    return Point3f((p.x - box.pMin.x) / d.x, (p.y - box.pMin.y) / d.y, (p.z - box.pMin.z) / d.z);
 }
 
 MediumProperties GridMedium::SamplePoint(Point3f p, const SampledWavelengths& lambda) const {
-    Point3f pUnit = UnitPoint(renderFromMedium.ApplyInverse(p));
+    Point3f pMedium = renderFromMedium.ApplyInverse(p);
     // The medium ends at its box (the interpolation would reach half a voxel beyond)
-    if (!InsideUnitCube(pUnit)) return {};
+    if (!InsideUnitCube(UnitPoint(bounds, pMedium))) return {};
+    Point3f pUnit = UnitPoint(sampleBounds, pMedium);
     Float d = scale * density.Lookup(pUnit);
     MediumProperties mp{sigma_a.Sample(lambda) * d, sigma_s.Sample(lambda) * d, g, {}};
     emission.Apply(mp, p, pUnit, lambda);
@@ -52,7 +66,8 @@ MajorantIterator GridMedium::SampleRay(const Ray& ray, Float tMax,
 // Creation
 MediumEmission ReadGridEmission(const TextureParameterDictionary& params,
                                 SampledGrid<Float> temperature, int nx, int ny, int nz,
-                                std::optional<EmissionModel> modelOverride, ObjectArena& arena) {
+                                std::optional<EmissionModel> modelOverride, ObjectArena& arena,
+                                bool constantLeScale) {
     std::optional<Spectrum> Le = ReadMediumLe(params);
     if (Le && !temperature.Empty())
         throw SceneError(params.Loc("Le"), "both \"Le\" and \"temperature\" values were provided",
@@ -90,6 +105,9 @@ MediumEmission ReadGridEmission(const TextureParameterDictionary& params,
                 modelOverride ? *modelOverride : t.model.value_or(EmissionModel::Kirchhoff);
             return MediumEmission::Thermal(std::move(temperature), offset, tScale, model);
         }
+        if (LeScale.Empty() && constantLeScale)
+            return MediumEmission::NormalizedBlackbody(std::move(temperature), offset, tScale, {},
+                                                       LeScaleConstant);
         if (LeScale.Empty()) LeScale = SampledGrid<Float>({LeScaleConstant}, 1, 1, 1);
         return MediumEmission::NormalizedBlackbody(std::move(temperature), offset, tScale,
                                                    std::move(LeScale));
@@ -153,9 +171,9 @@ GridMedium* GridMedium::CreateFromVDB(const TextureParameterDictionary& params,
     MediumCoefficients c = ReadMediumCoefficients(params, loc, diag);
     int nx = v.density.XSize(), ny = v.density.YSize(), nz = v.density.ZSize();
     MediumEmission emission =
-        ReadGridEmission(params, std::move(v.temperature), nx, ny, nz, modelOverride, arena);
+        ReadGridEmission(params, std::move(v.temperature), nx, ny, nz, modelOverride, arena, true);
     return arena.New<GridMedium>(v.indexBounds, renderFromMedium * v.mediumFromIndex, c,
-                                 std::move(v.density), std::move(emission));
+                                 std::move(v.density), std::move(emission), v.sampleBounds);
 }
 
 }  // namespace kiln

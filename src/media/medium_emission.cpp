@@ -1,5 +1,6 @@
 #include "media/medium_emission.h"
 
+#include "spectral/cie.h"
 #include "spectral/planck.h"
 #include "textures/texture_eval_context.h"
 #include "thermal/volume_emission.h"
@@ -15,13 +16,15 @@ MediumEmission MediumEmission::Radiance(Spectrum Le, SampledGrid<Float> LeScale)
 }
 
 MediumEmission MediumEmission::NormalizedBlackbody(SampledGrid<Float> temperature, Float offset,
-                                                   Float scale, SampledGrid<Float> LeScale) {
+                                                   Float scale, SampledGrid<Float> LeScale,
+                                                   Float LeFactor) {
     MediumEmission e;
     e.kind = Kind::NormalizedBlackbody;
     e.temperatureGrid = std::move(temperature);
     e.temperatureOffset = offset;
     e.temperatureScale = scale;
     e.LeScale = std::move(LeScale);
+    e.LeFactor = LeFactor;
     return e;
 }
 
@@ -55,12 +58,12 @@ void MediumEmission::Apply(MediumProperties& mp, Point3f pRender, Point3f pUnit,
             return;
         }
         case Kind::NormalizedBlackbody: {
-            Float scale = LeScale.Empty() ? 1 : LeScale.Lookup(pUnit);
+            Float scale = LeFactor * (LeScale.Empty() ? 1 : LeScale.Lookup(pUnit));
             Float T = (temperatureGrid.Lookup(pUnit) - temperatureOffset) * temperatureScale;
             if (scale <= 0 || !(T > 100)) return;
             SampledSpectrum B;
             for (int i = 0; i < NSpectrumSamples; ++i)
-                B[i] = Float(planck_radiance_normalized(lambda[i], T));
+                B[i] = Float(planck_radiance_normalized(lambda[i], T)) * CIE_Y_integral;
             mp.emission = mp.sigma_a * (scale * B);
             return;
         }

@@ -27,10 +27,15 @@ class MediumEmission {
     // pbrt-v4: Le (already divided by its luminance and times a constant Lescale), scaled per
     // point by LeScale when given.
     static MediumEmission Radiance(Spectrum Le, SampledGrid<Float> LeScale = {});
-    // pbrt-v4's temperature grid: LeScale(p) times the peak-normalised blackbody at
-    // (T(p) - offset) * scale, nothing below 100 K.
+    // pbrt-v4's temperature grid: LeScale(p) (1 if empty) times LeFactor times the
+    // peak-normalised blackbody at (T(p) - offset) * scale, nothing below 100 K, times
+    // CIE_Y_integral: pbrt-v4's film weighs radiance by the colour matching functions without
+    // dividing by the integral of y-bar (kiln's film divides, as SampledSpectrum::ToXYZ
+    // does); its lights and "Le" are divided by their luminance, so they look alike in both,
+    // but this blackbody is not, and looks CIE_Y_integral (106.9) times brighter in pbrt-v4.
     static MediumEmission NormalizedBlackbody(SampledGrid<Float> temperature, Float offset,
-                                              Float scale, SampledGrid<Float> LeScale);
+                                              Float scale, SampledGrid<Float> LeScale,
+                                              Float LeFactor = 1);
     // kiln: thermal emission at a temperature from a texture (render-space points) or a grid
     // ((T - offset) * scale at points of the unit cube).
     static MediumEmission Thermal(FloatTexture temperature, EmissionModel model);
@@ -52,7 +57,7 @@ class MediumEmission {
     std::optional<Spectrum> Le;
     std::optional<FloatTexture> temperatureTexture;
     SampledGrid<Float> temperatureGrid, LeScale;
-    Float temperatureOffset = 0, temperatureScale = 1;
+    Float temperatureOffset = 0, temperatureScale = 1, LeFactor = 1;
     EmissionModel model = EmissionModel::Kirchhoff;
     std::optional<Spectrum> eta;
 };

@@ -21,6 +21,8 @@
 #include "base/plugin.h"
 #include "base/system_memory.h"
 #include "core/parser/diagnostics.h"
+#include "media/nanovdb_file.h"
+#include "media/nanovdb_volume.h"
 #include "media/vdb_reader.h"
 
 namespace kiln {
@@ -145,14 +147,15 @@ namespace {
 VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityName,
                         const std::string& temperatureName, const FileLoc& loc, size_t maxVoxels,
                         MemoryBudget* budget) {
-    if (filename.size() >= 5 && filename.compare(filename.size() - 5, 5, ".nvdb") == 0)
-        throw SceneError(loc,
-                         filename +
-                             ": kiln cannot read NanoVDB files (no Debian 12 package provides "
-                             "NanoVDB); convert the volume to OpenVDB (.vdb, e.g. with "
-                             "nanovdb_convert) and name that file: \"nanovdb\" and \"vdb\" "
-                             "media read .vdb files",
-                         filename);
+    // NanoVDB files: by their magic number, or by name (then their reader says what is wrong)
+    std::string magic(8, '\0');
+    if (std::FILE* f = std::fopen(filename.c_str(), "rb")) {
+        magic.resize(std::fread(magic.data(), 1, magic.size(), f));
+        std::fclose(f);
+    }
+    if (NanoVDBFile::HasMagic(magic) ||
+        (filename.size() >= 5 && filename.compare(filename.size() - 5, 5, ".nvdb") == 0))
+        return ReadNanoVDBVolume(filename, densityName, temperatureName, loc, maxVoxels, budget);
     auto fail = [&](const std::string& why) {
         throw SceneError(loc, filename + ": " + why, filename);
     };
@@ -265,6 +268,7 @@ VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityN
     if (hasTemperature) v.temperature = SampledGrid<Float>(std::move(t), int(nx), int(ny), int(nz));
     v.indexBounds = Bounds3f(Point3f(h.box[0] - 0.5f, h.box[1] - 0.5f, h.box[2] - 0.5f),
                              Point3f(h.box[3] + 0.5f, h.box[4] + 0.5f, h.box[5] + 0.5f));
+    v.sampleBounds = v.indexBounds;
     Float c[16];
     for (int i = 0; i < 16; ++i) c[i] = Float(h.indexToWorld[i]);
     v.mediumFromIndex = Transform(SquareMatrix4(c));

@@ -1,8 +1,8 @@
 // Sparse volumes from OpenVDB files (.vdb, through Debian's libopenvdb in the OpenVDB plugin,
 // vdb_reader.h): the float grids a medium reads, resampled onto a dense SampledGrid over the
 // density grid's active voxels.
-// NanoVDB files (.nvdb, pbrt-v4's "nanovdb" medium) cannot be read: no Debian 12 package
-// provides NanoVDB, and ReadVDBVolume says so.
+// NanoVDB files (.nvdb, pbrt-v4's "nanovdb" medium) are read by kiln's own reader
+// (nanovdb_volume.h), chosen by the file's magic number or its .nvdb name.
 #pragma once
 
 #include <string>
@@ -18,10 +18,12 @@ class MemoryBudget;
 struct VDBVolume {
     SampledGrid<Float> density;
     SampledGrid<Float> temperature;  // empty if the file has no such grid
-    // The box of the density grid's active voxels in index space (voxel centres at integer
-    // coordinates, so the box reaches half a voxel beyond them), and the grid's index-to-world
-    // transform: world is the medium's space.
-    Bounds3f indexBounds;
+    // The medium's box in index space (voxel centres at integer coordinates): for .vdb files
+    // the density grid's active voxels, reaching half a voxel beyond them; for .nvdb files the
+    // grid's stated world box. The box the dense samples span (half a voxel beyond the
+    // outermost; the same box for .vdb files). The grid's index-to-world transform: world is
+    // the medium's space.
+    Bounds3f indexBounds, sampleBounds;
     Transform mediumFromIndex;
 };
 
