@@ -266,9 +266,12 @@ VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityN
     VDBVolume v;
     v.density = SampledGrid<Float>(std::move(d), int(nx), int(ny), int(nz));
     if (hasTemperature) v.temperature = SampledGrid<Float>(std::move(t), int(nx), int(ny), int(nz));
-    v.indexBounds = Bounds3f(Point3f(h.box[0] - 0.5f, h.box[1] - 0.5f, h.box[2] - 0.5f),
-                             Point3f(h.box[3] + 0.5f, h.box[4] + 0.5f, h.box[5] + 0.5f));
-    v.sampleBounds = v.indexBounds;
+    // As a NanoVDB file converted from it (nanovdb_volume.cpp, pbrt-v4's NanoVDBMedium): the
+    // medium fills the index box [min, max + 1] and voxel values sit at integer coordinates
+    v.indexBounds = Bounds3f(Point3f(h.box[0], h.box[1], h.box[2]),
+                             Point3f(h.box[3] + 1.f, h.box[4] + 1.f, h.box[5] + 1.f));
+    v.sampleBounds = Bounds3f(Point3f(h.box[0] - 0.5f, h.box[1] - 0.5f, h.box[2] - 0.5f),
+                              Point3f(h.box[3] + 0.5f, h.box[4] + 0.5f, h.box[5] + 0.5f));
     Float c[16];
     for (int i = 0; i < 16; ++i) c[i] = Float(h.indexToWorld[i]);
     v.mediumFromIndex = Transform(SquareMatrix4(c));
