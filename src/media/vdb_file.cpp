@@ -237,7 +237,8 @@ VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityN
     const int64_t nx = int64_t(h.box[3]) - h.box[0] + 1, ny = int64_t(h.box[4]) - h.box[1] + 1,
                   nz = int64_t(h.box[5]) - h.box[2] + 1;
     if (nx <= 0 || ny <= 0 || nz <= 0) fail("the density grid has no active voxels");
-    double voxels = double(nx) * double(ny) * double(nz);
+    // The dense grid kiln keeps has one more layer each way (below)
+    double voxels = double(nx + 1) * double(ny + 1) * double(nz + 1);
     if (voxels > double(maxVoxels))
         throw SceneError(loc,
                          filename + ": the density grid spans " + std::to_string(uint64_t(voxels)) +
@@ -257,21 +258,32 @@ VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityN
     }
     // Dense copies over the density's active box; temperatures sampled (trilinearly) at the
     // density's voxel centres
-    std::vector<Float> d(n), t(hasTemperature ? n : 0);
-    if (!ReadAll(reap.fd, d.data(), n * sizeof(Float)) ||
+    const size_t nRead = size_t(nx * ny * nz);  // what the reader sends
+    std::vector<Float> d(nRead), t(hasTemperature ? nRead : 0);
+    if (!ReadAll(reap.fd, d.data(), nRead * sizeof(Float)) ||
         !ReadAll(reap.fd, t.data(), t.size() * sizeof(Float)))
         fail(childFailure());
     if (int status = reap.Wait(); !WIFEXITED(status) || WEXITSTATUS(status) != 0)
         fail("OpenVDB failed to read it: the file is damaged");
+    // One more layer of the background (0) beyond the far faces: inside the box [min, max + 1]
+    // values fade from the last voxels to it, as NanoVDB's sampler gives them
+    const int64_t px = nx + 1, py = ny + 1, pz = nz + 1;
+    auto pad = [&](const std::vector<Float>& in) {
+        std::vector<Float> out(size_t(px * py * pz), 0.f);
+        for (int64_t z = 0; z < nz; ++z)
+            for (int64_t y = 0; y < ny; ++y)
+                std::copy_n(in.begin() + (z * ny + y) * nx, nx, out.begin() + (z * py + y) * px);
+        return out;
+    };
     VDBVolume v;
-    v.density = SampledGrid<Float>(std::move(d), int(nx), int(ny), int(nz));
-    if (hasTemperature) v.temperature = SampledGrid<Float>(std::move(t), int(nx), int(ny), int(nz));
+    v.density = SampledGrid<Float>(pad(d), int(px), int(py), int(pz));
+    if (hasTemperature) v.temperature = SampledGrid<Float>(pad(t), int(px), int(py), int(pz));
     // As a NanoVDB file converted from it (nanovdb_volume.cpp, pbrt-v4's NanoVDBMedium): the
     // medium fills the index box [min, max + 1] and voxel values sit at integer coordinates
     v.indexBounds = Bounds3f(Point3f(h.box[0], h.box[1], h.box[2]),
                              Point3f(h.box[3] + 1.f, h.box[4] + 1.f, h.box[5] + 1.f));
     v.sampleBounds = Bounds3f(Point3f(h.box[0] - 0.5f, h.box[1] - 0.5f, h.box[2] - 0.5f),
-                              Point3f(h.box[3] + 0.5f, h.box[4] + 0.5f, h.box[5] + 0.5f));
+                              Point3f(h.box[3] + 1.5f, h.box[4] + 1.5f, h.box[5] + 1.5f));
     Float c[16];
     for (int i = 0; i < 16; ++i) c[i] = Float(h.indexToWorld[i]);
     v.mediumFromIndex = Transform(SquareMatrix4(c));

@@ -14,6 +14,7 @@
 #include "../textures/param_helpers.h"
 #include "base/memory_budget.h"
 #include "media/medium.h"
+#include "media/nanovdb_writer.h"
 #include "media/vdb_file.h"
 #include "spectral/planck.h"
 
@@ -54,11 +55,15 @@ std::string WriteTestVolume() {
 TEST(VDBFileTest, ReadsTheActiveVoxelsWithTheirTransformAndTemperatures) {
     std::string path = WriteTestVolume();
     VDBVolume v = ReadVDBVolume(path, "density", "temperature", test::TestLoc());
-    ASSERT_EQ(v.density.XSize(), 4);
-    ASSERT_EQ(v.density.YSize(), 3);
-    ASSERT_EQ(v.density.ZSize(), 3);
+    // The active box and one layer of background beyond its far faces
+    ASSERT_EQ(v.density.XSize(), 5);
+    ASSERT_EQ(v.density.YSize(), 4);
+    ASSERT_EQ(v.density.ZSize(), 4);
     EXPECT_FLOAT_EQ(v.density.At(0, 0, 0), 20 + 2 - 10);
     EXPECT_FLOAT_EQ(v.density.At(3, 2, 1), 20 + 5 + 10 + 100);
+    EXPECT_FLOAT_EQ(v.density.At(4, 2, 1), 0);
+    EXPECT_FLOAT_EQ(v.density.At(3, 3, 1), 0);
+    EXPECT_FLOAT_EQ(v.density.At(3, 2, 3), 0);
     ASSERT_FALSE(v.temperature.Empty());
     EXPECT_NEAR(v.temperature.At(1, 0, 0), 1000 + 100 * 3, 1e-2);  // index 3 of the density
 
@@ -84,6 +89,41 @@ TEST(VDBFileTest, ReadsTheActiveVoxelsWithTheirTransformAndTemperatures) {
     EXPECT_THROW(ReadVDBVolume(path, "smoke", "", test::TestLoc()), SceneError);
     EXPECT_THROW(ReadVDBVolume(path, "density", "", test::TestLoc(), 10), SceneError);
     std::remove(path.c_str());
+}
+
+// A .vdb file and the .nvdb file of the same grid (same voxels, same index-to-world map) give the
+// same volume: values, box and map (the box NanoVDB's conversion states, [min, max + 1]).
+TEST(VDBFileTest, ReadsAsItsNanoVDBConversion) {
+    std::string path = WriteTestVolume();
+    VDBVolume fromVdb = ReadVDBVolume(path, "density", "", test::TestLoc());
+    NanoVDBGridDescription g;
+    g.name = "density";
+    g.origin = {2, -1, 0};
+    g.nx = 4, g.ny = 3, g.nz = 3;
+    for (int k = 0; k <= 2; ++k)
+        for (int j = -1; j <= 1; ++j)
+            for (int i = 2; i <= 5; ++i) g.values.push_back(float(20 + i + 10 * j + 100 * k));
+    g.matrix = {0.5, 0, 0, 0, 0.5, 0, 0, 0, 0.5};
+    g.translation = {1, 2, 3};
+    std::string nvdb = path + ".nvdb";
+    WriteNanoVDBFile(nvdb, {g});
+    VDBVolume fromNvdb = ReadVDBVolume(nvdb, "density", "", test::TestLoc());
+    ASSERT_EQ(fromVdb.density.XSize(), fromNvdb.density.XSize());
+    ASSERT_EQ(fromVdb.density.YSize(), fromNvdb.density.YSize());
+    ASSERT_EQ(fromVdb.density.ZSize(), fromNvdb.density.ZSize());
+    for (int z = 0; z < 4; ++z)
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 5; ++x)
+                EXPECT_EQ(fromVdb.density.At(x, y, z), fromNvdb.density.At(x, y, z));
+    EXPECT_EQ(fromVdb.indexBounds.pMin, fromNvdb.indexBounds.pMin);
+    EXPECT_EQ(fromVdb.indexBounds.pMax, fromNvdb.indexBounds.pMax);
+    EXPECT_EQ(fromVdb.sampleBounds.pMin, fromNvdb.sampleBounds.pMin);
+    EXPECT_EQ(fromVdb.sampleBounds.pMax, fromNvdb.sampleBounds.pMax);
+    EXPECT_EQ(fromVdb.mediumFromIndex.Matrix(), fromNvdb.mediumFromIndex.Matrix());
+    EXPECT_EQ(fromNvdb.indexBounds.pMin, Point3f(2, -1, 0));
+    EXPECT_EQ(fromNvdb.indexBounds.pMax, Point3f(6, 2, 3));
+    std::remove(path.c_str());
+    std::remove(nvdb.c_str());
 }
 
 // Issue 23: damaged .vdb files made OpenVDB allocate gigabytes or grow without end, and end in
