@@ -37,9 +37,11 @@ class ObjectArena {
         return raw;
     }
 
-    // The T created for `key` (a file's resolved name) by the first call with that key and
-    // type: make() (returning T) runs once per key, so objects that several scene directives
-    // load from one file are shared. Thread-safe; make() runs without the arena's lock held.
+    // The T stored for `key` (a file's resolved name) and type by the first call that
+    // finished making one: make() (returning T) runs when none is stored, so objects that
+    // several scene directives load from one file are made once (scene creation is
+    // sequential). Thread-safe: make() runs without the arena's lock, so racing calls may
+    // each make one; all return the one stored first.
     template <typename T, typename Make>
     T* Shared(const std::string& key, Make&& make) {
         const std::pair<std::type_index, std::string> id(typeid(T), key);

@@ -109,7 +109,8 @@ struct Models {
 };
 Models Make(const RGLConductor& m) {
     Models r{MeasuredBxDFData::FromTensor(TensorFile::Parse(test::WriteRGLConductor(m))), {}, {}};
-    SampledWavelengths lambda = NodeWavelengths();
+    // The analytic model at the four wavelengths of NodeWavelengths(), which must be the file's
+    if (m.wavelengths.size() != NSpectrumSamples) throw std::runtime_error("needs 4 wavelengths");
     SampledSpectrum eta, k;
     for (int i = 0; i < NSpectrumSamples; ++i) eta[i] = m.eta[i], k[i] = m.k[i];
     r.analytic = ConductorBxDF(TrowbridgeReitzDistribution(m.alphaX, m.alphaY), eta, k);

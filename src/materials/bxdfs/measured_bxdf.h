@@ -36,6 +36,19 @@ class MeasuredBxDF {
     BxDFFlags Flags() const { return BxDFFlags::GlossyReflection; }
     void Regularize() {}
 
+    // What Sample_f draws from wo (wo.z > 0) with u, apart from the spectral values: f at the
+    // wavelengths lambda is max(0, spectra(p, phi_o, theta_o, lambda)) * scale.
+    struct Draw {
+        Vector3f wi;
+        Float pdf;
+        Point2f p;
+        Float scale, phi_o, theta_o;
+    };
+    static std::optional<Draw> SampleGeometry(const MeasuredBxDFData& data, Vector3f wo, Point2f u);
+    // The same for f(wo, wi) (both with z > 0); pdf is not set.
+    static std::optional<Draw> EvaluateGeometry(const MeasuredBxDFData& data, Vector3f wo,
+                                                Vector3f wi);
+
     const MeasuredBxDFData* Data() const { return data; }
     // The wavelengths (nm) the values are given at.
     Float Lambda(int i) const { return lambda[i]; }

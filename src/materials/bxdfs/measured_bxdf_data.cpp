@@ -109,6 +109,7 @@ MeasuredBxDFData MeasuredBxDFData::FromTensor(const TensorFile& file) {
     data.wavelengths = Nodes(file, "wavelengths");
     std::vector<float> phiNodes = Nodes(file, "phi_i"), thetaNodes = Nodes(file, "theta_i");
     data.isotropic = nPhi <= 2;
+    data.azimuths = int(nPhi);
     if (!data.isotropic) {
         // pbrt-v4: the azimuths must span 2 pi (no symmetry reduction)
         const double reduction = std::rint(2 * Pi / (double(phiNodes.back()) - phiNodes.front()));

@@ -33,6 +33,7 @@ struct MeasuredBxDFData {
     PiecewiseLinear2D luminance;   // distribution, parameters (phi_i, theta_i)
     PiecewiseLinear2D spectra;     // values, parameters (phi_i, theta_i, wavelength)
     bool isotropic = true;
+    int azimuths = 1;  // the number of phi_i values
     std::string description;
 
     // The tables of the file; throws TensorFileError saying which field is missing or wrong
