@@ -17,8 +17,7 @@ using kiln::test::RGLConductor;
 
 namespace {
 
-const std::string kCommittedFile =
-    std::string(KILN_SOURCE_DIR) + "/test/regression/pbrt_features/measured-ggx.bsdf";
+const std::string kCommittedDir = std::string(KILN_SOURCE_DIR) + "/test/regression/pbrt_features/";
 
 // The four wavelengths of the test data (400, 500, 600, 700 nm)
 SampledWavelengths NodeWavelengths() { return SampledWavelengths::SampleUniform(0, 400, 800); }
@@ -219,23 +218,27 @@ TEST(MeasuredBxDFData, BadStructureGivesErrors) {
     }
 }
 
-// The committed file is what the generator writes (values within float rounding, which
+// The committed files are what the generator writes (values within float rounding, which
 // differs between compilers)
 TEST(MeasuredFile, CommittedMatchesGenerator) {
-    const std::string generated = test::WriteRGLConductor(test::KilnTestConductor());
-    if (const char* path = std::getenv("KILN_WRITE_MEASURED_FILE")) {
-        std::ofstream(path, std::ios::binary) << generated;
-    }
-    TensorFile committed = TensorFile::Read(kCommittedFile), fresh = TensorFile::Parse(generated);
-    ASSERT_EQ(committed.Fields().size(), fresh.Fields().size());
-    for (const auto& [name, f] : fresh.Fields()) {
-        const TensorFile::Field* c = committed.Find(name);
-        ASSERT_NE(c, nullptr) << name;
-        EXPECT_EQ(c->shape, f.shape) << name;
-        if (f.dtype != TensorFile::DType::Float32) continue;
-        std::vector<float> a = committed.Floats(name), b = fresh.Floats(name);
-        for (size_t i = 0; i < a.size(); ++i)
-            ASSERT_NEAR(a[i], b[i], 1e-4f * std::max(1.f, std::abs(b[i]))) << name << " " << i;
+    for (auto [name, model] : {std::pair{"measured-ggx.bsdf", test::KilnTestConductor()},
+                               std::pair{"measured-aniso.bsdf", test::KilnTestAnisotropic()}}) {
+        SCOPED_TRACE(name);
+        const std::string generated = test::WriteRGLConductor(model);
+        if (const char* dir = std::getenv("KILN_WRITE_MEASURED_FILES"))
+            std::ofstream(std::string(dir) + "/" + name, std::ios::binary) << generated;
+        TensorFile committed = TensorFile::Read(kCommittedDir + name);
+        TensorFile fresh = TensorFile::Parse(generated);
+        ASSERT_EQ(committed.Fields().size(), fresh.Fields().size());
+        for (const auto& [field, f] : fresh.Fields()) {
+            const TensorFile::Field* c = committed.Find(field);
+            ASSERT_NE(c, nullptr) << field;
+            EXPECT_EQ(c->shape, f.shape) << field;
+            if (f.dtype != TensorFile::DType::Float32) continue;
+            std::vector<float> a = committed.Floats(field), b = fresh.Floats(field);
+            for (size_t i = 0; i < a.size(); ++i)
+                ASSERT_NEAR(a[i], b[i], 1e-4f * std::max(1.f, std::abs(b[i]))) << field << " " << i;
+        }
     }
 }
 
@@ -319,6 +322,25 @@ TEST(MeasuredBxDF, SamplingConsistencyReciprocityEnergy) {
         }
         // Measured: 2 % (isotropic), 7 % (anisotropic, 5 azimuths)
         EXPECT_LT(asym / total, 0.15);
+    }
+}
+
+// pbrt-v4 takes files with two azimuths as isotropic too: the same BRDF as with one
+TEST(MeasuredBxDF, TwoAzimuthsAreIsotropic) {
+    RGLConductor two = test::KilnTestConductor();
+    two.nPhi = 2;
+    Models a = Make(test::KilnTestConductor()), b = Make(two);
+    EXPECT_TRUE(b.data.isotropic);
+    BxDF fa = MeasuredBxDF(&a.data, NodeWavelengths()),
+         fb = MeasuredBxDF(&b.data, NodeWavelengths());
+    for (Float phi : {-3.f, -1.f, 0.5f, 2.5f}) {
+        Vector3f wo = Dir(0.6f, phi), wi = Dir(0.7f, phi + 2.8f);
+        SampledSpectrum x = fa.f(wo, wi, TransportMode::Radiance);
+        SampledSpectrum y = fb.f(wo, wi, TransportMode::Radiance);
+        for (int l = 0; l < NSpectrumSamples; ++l) EXPECT_NEAR(x[l], y[l], 1e-3f * x[l]) << phi;
+        EXPECT_NEAR(fa.PDF(wo, wi, TransportMode::Radiance),
+                    fb.PDF(wo, wi, TransportMode::Radiance),
+                    1e-3f * fa.PDF(wo, wi, TransportMode::Radiance));
     }
 }
 

@@ -9,8 +9,9 @@
 //   spectra  = f 4 sigma cos_i / D = F(wo . wm) G(wo, wi) / G1(wo) at the normal the vndf warp
 //              (built here from the vndf table, as the renderer builds it) maps each node of
 //              the sample square to, and luminance = their mean over the wavelengths.
-// test/regression/pbrt_features/measured-ggx.bsdf is KilnTestConductor() written by
-// `KILN_WRITE_MEASURED_FILE=path kiln_bxdfs_tests --gtest_filter=MeasuredFile.*`.
+// test/regression/pbrt_features/measured-ggx.bsdf and measured-aniso.bsdf are
+// KilnTestConductor() and KilnTestAnisotropic() written by `KILN_WRITE_MEASURED_FILES=dir
+// kiln_bxdfs_tests --gtest_filter=MeasuredFile.*`.
 #pragma once
 
 #include <array>
@@ -36,8 +37,19 @@ struct RGLConductor {
     int nSample = 16;  // spectra and luminance resolution (per side)
 };
 
-// The committed test file's model: isotropic, alpha 0.35.
+// The committed test files' models: measured-ggx.bsdf, isotropic, alpha 0.35, and
+// measured-aniso.bsdf, alpha 0.15 along x and 0.45 along y, coarse (5 azimuths, 4 elevations,
+// 3 wavelengths, 12 x 12 and 8 x 8 tables) to stay small.
 inline RGLConductor KilnTestConductor() { return RGLConductor{}; }
+inline RGLConductor KilnTestAnisotropic() {
+    RGLConductor m;
+    m.alphaX = 0.15f, m.alphaY = 0.45f;
+    m.wavelengths = {400, 550, 700};
+    m.eta = {1.4f, 0.45f, 0.15f};  // gold-like
+    m.k = {1.9f, 2.4f, 4.0f};
+    m.nTheta = 4, m.nPhi = 5, m.nNormal = 12, m.nSample = 8;
+    return m;
+}
 
 inline std::vector<float> RGLThetaNodes(const RGLConductor& m) {
     std::vector<float> t(m.nTheta);
@@ -54,7 +66,7 @@ inline std::vector<float> RGLPhiNodes(const RGLConductor& m) {
 inline std::string WriteRGLConductor(const RGLConductor& m) {
     using Field = TensorFile::NamedField;
     const TrowbridgeReitzDistribution distrib(m.alphaX, m.alphaY);
-    const bool isotropic = m.nPhi == 1;
+    const bool isotropic = m.nPhi <= 2;  // as pbrt-v4 decides
     const std::vector<float> thetas = RGLThetaNodes(m), phis = RGLPhiNodes(m);
     auto uToTheta = [](double u) { return u * u * Pi / 2; };
     auto uToPhi = [](double u) { return (2 * u - 1) * Pi; };

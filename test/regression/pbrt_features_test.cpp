@@ -75,7 +75,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Feature{"spherical", 0}, Feature{"spherical-equirect", 0},
                       Feature{"realistic", 0}, Feature{"realistic-aperture", 0},
                       Feature{"caustic", 0, 16384}, Feature{"sampler_halton", 0, 4096},
-                      Feature{"sampler_sobol", 0, 4096}, Feature{"measured", 0, 4096}),
+                      Feature{"sampler_sobol", 0, 4096}, Feature{"measured", 0, 4096},
+                      Feature{"measured-aniso", 0, 4096}),
     [](const ::testing::TestParamInfo<Feature>& info) {
         std::string name = info.param.scene;
         std::replace(name.begin(), name.end(), '-', '_');
