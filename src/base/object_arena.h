@@ -4,9 +4,11 @@
 // (memory_budget.h): creation code charges large allocations to it before making them.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <mutex>
-
+#include <string>
+#include <typeindex>
 #include <utility>
 #include <vector>
 #include "base/memory_budget.h"
@@ -35,6 +37,23 @@ class ObjectArena {
         return raw;
     }
 
+    // The T stored for `key` (a file's resolved name) and type by the first call that
+    // finished making one: make() (returning T) runs when none is stored, so objects that
+    // several scene directives load from one file are made once (scene creation is
+    // sequential). Thread-safe: make() runs without the arena's lock, so racing calls may
+    // each make one; all return the one stored first.
+    template <typename T, typename Make>
+    T* Shared(const std::string& key, Make&& make) {
+        const std::pair<std::type_index, std::string> id(typeid(T), key);
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (auto it = shared_.find(id); it != shared_.end()) return static_cast<T*>(it->second);
+        }
+        T* created = New<T>(make());
+        std::lock_guard<std::mutex> lock(mutex_);
+        return static_cast<T*>(shared_.emplace(id, created).first->second);
+    }
+
     MemoryBudget& Budget() { return *budget_; }
     const MemoryBudget& Budget() const { return *budget_; }
 
@@ -43,6 +62,7 @@ class ObjectArena {
     MemoryBudget* budget_ = &ownBudget_;
     std::mutex mutex_;
     std::vector<std::shared_ptr<void>> objects_;
+    std::map<std::pair<std::type_index, std::string>, void*> shared_;
 };
 
 }  // namespace kiln

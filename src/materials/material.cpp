@@ -4,6 +4,7 @@
 
 #include "core/parser/suggestions.h"
 #include "materials/materials.h"
+#include "materials/measured_material.h"
 #include "spectral/named_spectra.h"
 #include "textures/basic_textures.h"
 #include "textures/texture_parameter_dictionary.h"
@@ -224,7 +225,8 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
                                       arena),
             scale));
     }
-    if (type == "measured" || type == "subsurface") {
+    if (type == "measured") return make(MeasuredMaterial::Create(params, loc, arena));
+    if (type == "subsurface") {
         diag.Warn(loc, "\"" + type + "\" material is not supported; using diffuse 0.5");
         return make(arena.New<DiffuseMaterial>(arena.New<SpectrumConstantTexture>(Constant(0.5f))));
     }

@@ -14,6 +14,7 @@
 #include "materials/hair_material.h"
 #include "materials/material.h"
 #include "materials/material_base.h"
+#include "materials/measured_material.h"
 #include "spectral/spectrum.h"
 #include "textures/texture.h"
 

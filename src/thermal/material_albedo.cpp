@@ -31,6 +31,8 @@ const MaterialAlbedo* MaterialAlbedo::Create(const Material& material, Emissivit
         return arena.New<MaterialAlbedo>(CoatedDiffuseEmissivity(*c, material, tables));
     if (const CoatedConductorMaterial* c = material.GetIf<CoatedConductorMaterial>())
         return arena.New<MaterialAlbedo>(CoatedConductorEmissivity(*c, material, tables));
+    if (const MeasuredMaterial* m = material.GetIf<MeasuredMaterial>())
+        return arena.New<MaterialAlbedo>(MeasuredEmissivity(*m, tables, arena));
     return arena.New<MaterialAlbedo>(NonAbsorbing{});
 }
 
@@ -72,6 +74,8 @@ SampledSpectrum MaterialAlbedo::EvaluateLocal(const Material* material, const BS
         } else if constexpr (std::is_same_v<K, CoatedConductorEmissivity>) {
             const CoatedConductorBxDF* c = bxdf.GetIf<CoatedConductorBxDF>();
             return c ? k.Albedo(*c, wo, lambda) : SampledSpectrum(1.f);
+        } else if constexpr (std::is_same_v<K, MeasuredEmissivity>) {
+            return bxdf.Is<MeasuredBxDF>() ? k.Albedo(wo, lambda) : SampledSpectrum(1.f);
         } else {
             for (const auto& [component, albedo] : k.components)
                 if (component == material) return albedo->EvaluateLocal(material, bsdf, wo, lambda);

@@ -17,6 +17,8 @@
 //                             conductor_emissivity.h)
 //   coateddiffuse,
 //   coatedconductor:          tables of the layered walk's expectation (coated_emissivity.h)
+//   measured:                 tables of the measured BRDF's albedo per file
+//                             (measured_emissivity.h)
 //   dielectric,
 //   thindielectric, interface: A = 1, their surfaces emit nothing: a hot transparent body glows
 //                             from its interior medium (volume_emission.h) (a rough dielectric's
@@ -47,6 +49,7 @@
 #include "thermal/conductor_emissivity.h"
 #include "thermal/emission_model.h"
 #include "thermal/emissivity_tables.h"
+#include "thermal/measured_emissivity.h"
 
 namespace kiln {
 
@@ -105,7 +108,7 @@ class MaterialAlbedo {
     };
     // How the albedo is computed, by the material's kind
     using Kind = ClosedSet<Diffuse, NonAbsorbing, ConductorEmissivity, CoatedDiffuseEmissivity,
-                           CoatedConductorEmissivity, Mix>;
+                           CoatedConductorEmissivity, MeasuredEmissivity, Mix>;
     explicit MaterialAlbedo(Kind kind) : kind(std::move(kind)) {}
 
   private:

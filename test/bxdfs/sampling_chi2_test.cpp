@@ -11,6 +11,7 @@
 #include "base/rng.h"
 #include "base/statistics.h"
 #include "materials/bxdfs/bxdf.h"
+#include "rgl_test_data.h"
 
 using namespace kiln;
 
@@ -18,7 +19,7 @@ namespace {
 
 constexpr int kThetaBins = 80, kPhiBins = 160, kSub = 8;
 constexpr int kSamples = 200000;
-constexpr int kNumTests = 42;  // tests in this file, for the multiple-testing correction
+constexpr int kNumTests = 47;  // tests in this file, for the multiple-testing correction
 
 // Bins directions by (theta, phi) over the sphere (bins narrow near the poles, where sharp
 // lobes sit); sample() returns nullopt on failure (the lost mass must then be missing from the
@@ -124,6 +125,32 @@ TEST(SamplingChi2, RoughConductorAnisotropic) {
             auto r = TestBxDF(bxdf, Wo(cosTheta, 1.1f), seed++);
             EXPECT_TRUE(r.passed) << ax << "," << ay << " cos " << cosTheta << ": " << r.message;
         }
+}
+
+// RGL measured BRDFs tabulated from rough conductors (rgl_test_data.h): the luminance warp
+// followed by the visible-normal warp, against MeasuredBxDF::PDF
+TEST(SamplingChi2, MeasuredIsotropic) {
+    MeasuredBxDFData data = MeasuredBxDFData::FromTensor(
+        TensorFile::Parse(test::WriteRGLConductor(test::KilnTestConductor())));
+    BxDF bxdf = MeasuredBxDF(&data, SampledWavelengths::SampleUniform(0, 400, 800));
+    int seed = 200;
+    for (Float cosTheta : {0.9f, 0.3f, -0.6f}) {
+        auto r = TestBxDF(bxdf, Wo(cosTheta), seed++);
+        EXPECT_TRUE(r.passed) << "cos " << cosTheta << ": " << r.message;
+    }
+}
+
+TEST(SamplingChi2, MeasuredAnisotropic) {
+    test::RGLConductor model;
+    model.alphaX = 0.2f, model.alphaY = 0.5f, model.nPhi = 9, model.nTheta = 6;
+    MeasuredBxDFData data =
+        MeasuredBxDFData::FromTensor(TensorFile::Parse(test::WriteRGLConductor(model)));
+    BxDF bxdf = MeasuredBxDF(&data, SampledWavelengths::SampleUniform(0, 400, 800));
+    int seed = 210;
+    for (auto [cosTheta, phi] : {std::pair{0.7f, 1.1f}, std::pair{0.2f, -2.f}}) {
+        auto r = TestBxDF(bxdf, Wo(cosTheta, phi), seed++);
+        EXPECT_TRUE(r.passed) << "cos " << cosTheta << " phi " << phi << ": " << r.message;
+    }
 }
 
 TEST(SamplingChi2, RoughDielectric) {

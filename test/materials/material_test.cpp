@@ -242,11 +242,44 @@ TEST(Materials, MixChoiceDeterministicAndProportional) {
     EXPECT_TRUE(r.passed) << r.message;
 }
 
+// "measured": an RGL .bsdf file, read once however many materials name it; what is wrong with
+// the file is an error at the "filename" parameter
+TEST(Materials, Measured) {
+    Fixture f;
+    const std::string file =
+        std::string(KILN_SOURCE_DIR) + "/test/regression/pbrt_features/measured-ggx.bsdf";
+    Material a = f.Make("measured", Dict({Strings("string", "filename", {file})}));
+    Material b = f.Make("measured", Dict({Strings("string", "filename", {file})}));
+    ASSERT_TRUE(a.Is<MeasuredMaterial>());
+    EXPECT_EQ(a.GetIf<MeasuredMaterial>()->Data(), b.GetIf<MeasuredMaterial>()->Data());
+    BSDF bsdf = GetBSDF(a);
+    ASSERT_TRUE(bsdf.GetBxDF().Is<MeasuredBxDF>());
+    EXPECT_GT(bsdf.f(Vector3f(0.3f, 0, 1), Vector3f(-0.3f, 0, 1))[0], 0);
+    EXPECT_EQ(f.diag.WarningCount(), 0);
+    auto error = [&](const ParameterDictionary& d) -> std::string {
+        try {
+            f.Make("measured", d);
+        } catch (const SceneError& e) {
+            return e.what();
+        }
+        return "";
+    };
+    EXPECT_NE(error(Dict({})).find("needs \"string filename\""), std::string::npos);
+    std::string e = error(Dict({Strings("string", "filename", {"/nonexistent.bsdf"})}));
+    EXPECT_NE(e.find("test.pbrt:3"), std::string::npos) << e;
+    EXPECT_NE(e.find("/nonexistent.bsdf"), std::string::npos) << e;
+    // A file that is no tensor file (a scene of the test folder)
+    e = error(Dict({Strings(
+        "string", "filename",
+        {std::string(KILN_SOURCE_DIR) + "/test/regression/pbrt_features/measured.pbrt"})}));
+    EXPECT_NE(e.find("not a tensor file"), std::string::npos) << e;
+}
+
 TEST(Materials, UnsupportedAndUnknown) {
     Fixture f;
-    Material measured = f.Make("measured", Dict({}));
-    EXPECT_TRUE(measured.Is<DiffuseMaterial>());
-    EXPECT_EQ(GetBSDF(measured).GetBxDF().GetIf<DiffuseBxDF>()->Reflectance(),
+    Material subsurface = f.Make("subsurface", Dict({}));
+    EXPECT_TRUE(subsurface.Is<DiffuseMaterial>());
+    EXPECT_EQ(GetBSDF(subsurface).GetBxDF().GetIf<DiffuseBxDF>()->Reflectance(),
               SampledSpectrum(0.5f));
     EXPECT_EQ(f.diag.WarningCount(), 1);
     // Hair is supported: brown by default

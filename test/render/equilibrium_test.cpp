@@ -105,6 +105,9 @@ const Case kCases[] = {
     {"diffusetransmission, textured",
      "\"diffusetransmission\" \"texture reflectance\" \"checks\" \"rgb transmittance\" "
      "[0.05 0.1 0.3]"},
+    // An RGL measured BRDF (its albedo tabulated per file, thermal/measured_emissivity.h)
+    {"measured, RGL file", "\"measured\" \"string filename\" \"" KILN_SOURCE_DIR
+                           "/test/regression/pbrt_features/measured-ggx.bsdf\""},
 };
 
 // Polarised transport: the cavity must also be unpolarised. Reflection from metals polarises
