@@ -4,6 +4,7 @@
 
 #include "core/parser/suggestions.h"
 #include "materials/materials.h"
+#include "materials/subsurface_material.h"
 #include "spectral/named_spectra.h"
 #include "textures/basic_textures.h"
 #include "textures/texture_parameter_dictionary.h"
@@ -48,6 +49,8 @@ bool Material::MayPassLightStraightThrough() const {
 
 std::optional<Spectrum> Material::InteriorEta() const {
     if (const DielectricMaterial* d = GetIf<DielectricMaterial>()) return d->Eta();
+    if (const SubsurfaceMaterial* s = GetIf<SubsurfaceMaterial>())
+        return Spectrum(ConstantSpectrum(s->Parameters().eta));
     return std::nullopt;
 }
 
@@ -113,7 +116,8 @@ ConductorSpec GetConductor(const TextureParameterDictionary& params, const std::
 
 Material Material::Create(const std::string& type, const TextureParameterDictionary& params,
                           const std::map<std::string, Material>& namedMaterials, const FileLoc& loc,
-                          ObjectArena& arena, Diagnostics& diag, LayeredMIS layeredMIS) {
+                          ObjectArena& arena, Diagnostics& diag, LayeredMIS layeredMIS,
+                          BSSRDFTableCache* bssrdfTables) {
     ShadingPerturbation perturbation;
     auto make = [&](auto* m) {
         m->perturbation = perturbation;
@@ -224,7 +228,11 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
                                       arena),
             scale));
     }
-    if (type == "measured" || type == "subsurface") {
+    if (type == "subsurface") {
+        if (!bssrdfTables) bssrdfTables = arena.New<BSSRDFTableCache>();
+        return make(SubsurfaceMaterial::Create(params, *bssrdfTables, arena, diag));
+    }
+    if (type == "measured") {
         diag.Warn(loc, "\"" + type + "\" material is not supported; using diffuse 0.5");
         return make(arena.New<DiffuseMaterial>(arena.New<SpectrumConstantTexture>(Constant(0.5f))));
     }

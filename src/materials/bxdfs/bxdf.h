@@ -29,6 +29,7 @@
 #include "materials/bxdfs/diffuse_transmission_bxdf.h"
 #include "materials/bxdfs/hair_bxdf.h"
 #include "materials/bxdfs/layered_bxdf.h"
+#include "materials/bxdfs/normalized_fresnel_bxdf.h"
 #include "materials/bxdfs/polarizing_filter_bxdf.h"
 #include "materials/bxdfs/thin_dielectric_bxdf.h"
 #include "spectral/polarization.h"
@@ -53,9 +54,9 @@ concept PolarizationDefinedBxDF = PolarizingBxDF<B>
 != DepolarizingBxDF<B>;
 
 // The BxDFs, held by value
-using BxDFSet =
-    ClosedSet<DiffuseBxDF, ConductorBxDF, DielectricBxDF, ThinDielectricBxDF, CoatedDiffuseBxDF,
-              CoatedConductorBxDF, PolarizingFilterBxDF, HairBxDF, DiffuseTransmissionBxDF>;
+using BxDFSet = ClosedSet<DiffuseBxDF, ConductorBxDF, DielectricBxDF, ThinDielectricBxDF,
+                          CoatedDiffuseBxDF, CoatedConductorBxDF, PolarizingFilterBxDF, HairBxDF,
+                          DiffuseTransmissionBxDF, NormalizedFresnelBxDF>;
 
 class BxDF : public BxDFSet {
   public:
