@@ -49,8 +49,6 @@ bool Material::MayPassLightStraightThrough() const {
 
 std::optional<Spectrum> Material::InteriorEta() const {
     if (const DielectricMaterial* d = GetIf<DielectricMaterial>()) return d->Eta();
-    if (const SubsurfaceMaterial* s = GetIf<SubsurfaceMaterial>())
-        return Spectrum(ConstantSpectrum(s->Parameters().eta));
     return std::nullopt;
 }
 

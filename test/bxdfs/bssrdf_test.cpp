@@ -85,6 +85,11 @@ TEST(BSSRDFTable, InversionRecoversTheAlbedo) {
         EXPECT_NEAR(1 / (sigma_a[i] + sigma_s[i]), mfp[i], 1e-5f);
         EXPECT_NEAR(t.EffectiveAlbedo(sigma_s[i] / (sigma_a[i] + sigma_s[i])), target[i], 1e-4f);
     }
+    // No mean free path (a spectrum that is 0 there): no medium, not a division by 0
+    mfp[1] = 0;
+    SubsurfaceFromDiffuse(t, target, mfp, &sigma_a, &sigma_s);
+    EXPECT_EQ(sigma_a[1], 0);
+    EXPECT_EQ(sigma_s[1], 0);
 }
 
 // Sp integrates over a plane to the effective albedo, and PDF_Sr to 1, per wavelength.

@@ -98,6 +98,12 @@ void SubsurfaceFromDiffuse(const BSSRDFTable& table, const SampledSpectrum& rhoE
                            const SampledSpectrum& mfp, SampledSpectrum* sigma_a,
                            SampledSpectrum* sigma_s) {
     for (int c = 0; c < NSpectrumSamples; ++c) {
+        // No mean free path (a spectrum that is 0 at this wavelength): no medium, nothing
+        // scatters back (pbrt-v4 would divide by 0)
+        if (!(mfp[c] > 0)) {
+            (*sigma_s)[c] = (*sigma_a)[c] = 0;
+            continue;
+        }
         Float rho = table.InvertEffectiveAlbedo(rhoEff[c]);
         (*sigma_s)[c] = rho / mfp[c];
         (*sigma_a)[c] = (1 - rho) / mfp[c];

@@ -67,7 +67,8 @@ class TabulatedBSSRDF {
 };
 
 // The sigma_a and sigma_s (per unit length) of a medium whose effective albedo is rhoEff and
-// whose mean free path 1 / sigma_t is mfp, per wavelength (pbrt-v4's SubsurfaceFromDiffuse).
+// whose mean free path 1 / sigma_t is mfp, per wavelength (pbrt-v4's SubsurfaceFromDiffuse);
+// 0 and 0 where mfp is not positive.
 void SubsurfaceFromDiffuse(const BSSRDFTable& table, const SampledSpectrum& rhoEff,
                            const SampledSpectrum& mfp, SampledSpectrum* sigma_a,
                            SampledSpectrum* sigma_s);
