@@ -11,10 +11,11 @@
 // tentative collision (sigma_a Le, or thermal emission: medium_emission.h). Surfaces are
 // handled as in PathIntegrator: emission computed from the BSDF at the hit, and thin sheets
 // crossed by shadow rays (a path straight through one keeps its MIS state and depth, as at an
-// interface).
+// interface). A path transmitted through a "subsurface" boundary continues from an exit point
+// that pbrt-v4's BSSRDF samples (SampleSubsurfaceExit, materials/subsurface_material.h).
 //
-// Scenes without media run PathIntegrator (renderer.cpp); kiln --generic volpath runs this
-// one anyway, for comparisons.
+// Scenes without media or subsurface materials run PathIntegrator (renderer.cpp); kiln
+// --generic volpath runs this one anyway, for comparisons.
 #pragma once
 
 #include <optional>

@@ -68,5 +68,30 @@ INSTANTIATE_TEST_SUITE_P(
              {1000, 5000}}),
     [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
 
+// Subsurface transport is volpath's: a scene with a subsurface material runs VolPathIntegrator,
+// "path" renders the boundary alone (a warning, as pbrt-v4's path integrator ignores BSSRDFs)
+// and "bdpt" falls back to volpath (a warning)
+TEST(Subsurface, IntegratorChoice) {
+    const std::string scene =
+        "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\"\nWorldBegin\n"
+        "LightSource \"point\" \"point3 from\" [0 0 -2]\n"
+        "Material \"subsurface\"\nShape \"sphere\"\n";
+    struct Expectation {
+        const char* integrator;
+        bool volumetric;
+        int warnings;
+    };
+    for (Expectation e : {Expectation{"volpath", true, 0}, Expectation{"path", false, 1},
+                          Expectation{"bdpt", true, 1}}) {
+        Diagnostics diag(nullptr);
+        std::unique_ptr<Scene> s =
+            testing::BuildScene(std::string("Integrator \"") + e.integrator + "\"\n" + scene, diag);
+        EXPECT_EQ(s->features.volumetric, e.volumetric) << e.integrator;
+        EXPECT_FALSE(s->features.bidirectional) << e.integrator;
+        EXPECT_EQ(s->features.subsurface, 1) << e.integrator;
+        EXPECT_EQ(diag.WarningCount(), e.warnings) << e.integrator;
+    }
+}
+
 }  // namespace
 }  // namespace kiln
