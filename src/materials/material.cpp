@@ -5,6 +5,7 @@
 #include "core/parser/suggestions.h"
 #include "materials/materials.h"
 #include "materials/measured_material.h"
+#include "materials/subsurface_material.h"
 #include "spectral/named_spectra.h"
 #include "textures/basic_textures.h"
 #include "textures/texture_parameter_dictionary.h"
@@ -114,7 +115,8 @@ ConductorSpec GetConductor(const TextureParameterDictionary& params, const std::
 
 Material Material::Create(const std::string& type, const TextureParameterDictionary& params,
                           const std::map<std::string, Material>& namedMaterials, const FileLoc& loc,
-                          ObjectArena& arena, Diagnostics& diag, LayeredMIS layeredMIS) {
+                          ObjectArena& arena, Diagnostics& diag, LayeredMIS layeredMIS,
+                          BSSRDFTableCache* bssrdfTables) {
     ShadingPerturbation perturbation;
     auto make = [&](auto* m) {
         m->perturbation = perturbation;
@@ -227,8 +229,8 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
     }
     if (type == "measured") return make(MeasuredMaterial::Create(params, loc, arena));
     if (type == "subsurface") {
-        diag.Warn(loc, "\"" + type + "\" material is not supported; using diffuse 0.5");
-        return make(arena.New<DiffuseMaterial>(arena.New<SpectrumConstantTexture>(Constant(0.5f))));
+        if (!bssrdfTables) bssrdfTables = arena.New<BSSRDFTableCache>();
+        return make(SubsurfaceMaterial::Create(params, *bssrdfTables, arena, diag));
     }
     static constexpr std::string_view kMaterials[] = {
         "diffuse",         "conductor", "dielectric", "thindielectric", "coateddiffuse",

@@ -29,6 +29,8 @@ class InterfaceMaterial;
 class PolarizingFilterMaterial;
 class HairMaterial;
 class MeasuredMaterial;
+class SubsurfaceMaterial;
+class BSSRDFTableCache;
 class TextureParameterDictionary;
 struct ShadingPerturbation;
 
@@ -38,7 +40,8 @@ class Material
                        const ThinDielectricMaterial*, const CoatedDiffuseMaterial*,
                        const CoatedConductorMaterial*, const MixMaterial*, const InterfaceMaterial*,
                        const PolarizingFilterMaterial*, const HairMaterial*,
-                       const DiffuseTransmissionMaterial*, const MeasuredMaterial*> {
+                       const DiffuseTransmissionMaterial*, const MeasuredMaterial*,
+                       const SubsurfaceMaterial*> {
   public:
     using ClosedSet::ClosedSet;
 
@@ -75,16 +78,19 @@ class Material
 
     // Creates a material of pbrt-v4 type `type` ("diffuse", "conductor", "dielectric",
     // "thindielectric", "coateddiffuse", "coatedconductor", "mix", "interface", "hair",
-    // "diffusetransmission", "measured"; "" and "none" give interface), and kiln's polarising
+    // "diffusetransmission", "measured", "subsurface"; "" and "none" give interface), and kiln's polarising
     // filters "polarizer" ("float angle", degrees) and "retarder" ("float angle", "float
     // retardance" in degrees, default 90: a quarter-wave plate), see
     // bxdfs/polarizing_filter_bxdf.h. Other pbrt-v4 types are replaced by diffuse with a warning at
     // loc; unknown types throw SceneError. namedMaterials resolves the components of "mix".
-    // layeredMIS: the MIS weights of the coated materials' layered walk (LayeredMIS)
+    // layeredMIS: the MIS weights of the coated materials' layered walk (LayeredMIS). bssrdfTables:
+    // where "subsurface" materials find their tables (one per g and eta); null: a table of the
+    // material's own, kept in arena.
     static Material Create(const std::string& type, const TextureParameterDictionary& params,
                            const std::map<std::string, Material>& namedMaterials,
                            const FileLoc& loc, ObjectArena& arena, Diagnostics& diag,
-                           LayeredMIS layeredMIS = LayeredMIS::Kiln);
+                           LayeredMIS layeredMIS = LayeredMIS::Kiln,
+                           BSSRDFTableCache* bssrdfTables = nullptr);
 };
 
 }  // namespace kiln

@@ -15,6 +15,7 @@
 #include "materials/material.h"
 #include "materials/material_base.h"
 #include "materials/measured_material.h"
+#include "materials/subsurface_material.h"
 #include "spectral/spectrum.h"
 #include "textures/texture.h"
 
@@ -264,6 +265,10 @@ void ForEachTexture(const Material& material, F&& f) {
         if (p.eumelanin) f(*p.eumelanin);
         if (p.pheomelanin) f(*p.pheomelanin);
         f(p.eta), f(p.beta_m), f(p.beta_n), f(p.alpha);
+    } else if (const auto* m = material.GetIf<SubsurfaceMaterial>()) {
+        const SubsurfaceMaterial::Params& p = m->Parameters();
+        opt(p.sigma_a), opt(p.sigma_s), opt(p.reflectance), opt(p.mfp);
+        f(p.uRoughness), f(p.vRoughness);
     } else if (const auto* m = material.GetIf<MixMaterial>()) {
         f(m->Amount());
     }

@@ -18,7 +18,7 @@ std::string SceneFeatures::ToString() const {
         "thermal emission %s (%d lights, %d emissivity tables in %.2f s%s); texture footprints "
         "at %d of %d materials; pixel loop: AOVs %s, %d wavelength%s, %s pixel positions; "
         "light sampler %s; area lights %s, environment light %s, dispersion %s; shadow rays "
-        "cross %d sheet material%s; "
+        "cross %d sheet material%s; subsurface materials %d (%d BSSRDF tables in %.3f s); "
         "polarisation %s; media %d (%d emissive, %d thermal), integrator %s%s%s%s",
         onOff(thermalEmission), thermalLights, emissivityTables, emissivitySeconds,
         varyingTemperatures ? ", varying temperatures" : "", footprintMaterials, materials,
@@ -30,8 +30,9 @@ std::string SceneFeatures::ToString() const {
         : lightSelection == LightSelection::Uniform ? "uniform"
                                                     : "area",
         onOff(areaLights), onOff(environmentLight), onOff(dispersion), sheets,
-        sheets == 1 ? "" : "s", polarized ? "on (Stokes vectors, Mueller matrices)" : "off", media,
-        emissiveMedia, thermalMedia,
+        sheets == 1 ? "" : "s", subsurface, bssrdfTables, bssrdfSeconds,
+        polarized ? "on (Stokes vectors, Mueller matrices)" : "off", media, emissiveMedia,
+        thermalMedia,
         bidirectional ? "bdpt"
         : volumetric  ? "volpath"
                       : "path",

@@ -81,6 +81,10 @@ struct SceneFeatures {
     // MayPassLightStraightThrough): with any, shadow rays cross them (an Intersect loop),
     // else one IntersectP
     int sheets = 0;
+    // "subsurface" materials (pbrt-v4's TabulatedBSSRDF): volpath runs VolPathIntegrator for
+    // them; their BSSRDF tables (one per g and eta) and the time building them took
+    int subsurface = 0, bssrdfTables = 0;
+    double bssrdfSeconds = 0;
     // Participating media: the integrator "volpath" runs VolPathIntegrator when the scene has
     // media (or an environment map with unnormalised light samples), PathIntegrator otherwise
     // (media cost nothing when absent); --generic volpath runs VolPathIntegrator whatever the scene

@@ -15,6 +15,7 @@
 #include "core/geometry/triangle.h"
 #include "core/parser/suggestions.h"
 #include "lights/thermal_area_light.h"
+#include "materials/subsurface_material.h"
 #include "render/scene.h"
 #include "render/scene_emitters.h"
 #include "render/scene_media.h"
@@ -195,6 +196,7 @@ struct SceneMaterials {
     std::vector<const Material*> anonymous;
     std::map<std::string, ThermalProperties> namedHeat;
     std::vector<ThermalProperties> anonymousHeat;
+    const BSSRDFTableCache* bssrdfTables = nullptr;  // the subsurface materials' tables
 
     const Material* Of(const ShapeSceneEntity& s) const {
         if (!s.materialName.empty()) return named.at(CheckedName(s));
@@ -235,6 +237,8 @@ ThermalProperties ReadMaterialHeat(const std::string& type,
 SceneMaterials CreateMaterials(SceneDescription& desc, const NamedTextures& textures,
                                ObjectArena& arena, Diagnostics& diag, LayeredMIS layeredMIS) {
     SceneMaterials materials;
+    BSSRDFTableCache* bssrdfTables = arena.New<BSSRDFTableCache>();
+    materials.bssrdfTables = bssrdfTables;
     std::map<std::string, Material> named;
     std::vector<std::pair<std::string, SceneEntity>*> pending;
     for (auto& nm : desc.namedMaterials) pending.push_back(&nm);
@@ -260,8 +264,8 @@ SceneMaterials CreateMaterials(SceneDescription& desc, const NamedTextures& text
             TextureParameterDictionary params(&e.parameters, &textures);
             materials.namedHeat[nm->first] =
                 ReadMaterialHeat(type, params, materials.namedHeat, arena);
-            named.emplace(nm->first,
-                          Material::Create(type, params, named, e.loc, arena, diag, layeredMIS));
+            named.emplace(nm->first, Material::Create(type, params, named, e.loc, arena, diag,
+                                                      layeredMIS, bssrdfTables));
             e.parameters.ReportUnused(diag);
         }
         if (deferred.size() == pending.size()) {
@@ -284,7 +288,7 @@ SceneMaterials CreateMaterials(SceneDescription& desc, const NamedTextures& text
         materials.anonymousHeat.push_back(
             ReadMaterialHeat(e.name, params, materials.namedHeat, arena));
         materials.anonymous.push_back(arena.New<Material>(
-            Material::Create(e.name, params, named, e.loc, arena, diag, layeredMIS)));
+            Material::Create(e.name, params, named, e.loc, arena, diag, layeredMIS, bssrdfTables)));
         e.parameters.ReportUnused(diag);
     }
     return materials;
@@ -512,9 +516,12 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
         ++f.materials;
         if (m->UsesFootprint()) ++f.footprintMaterials;
         if (m->MayPassLightStraightThrough()) ++f.sheets;
+        if (m->Is<SubsurfaceMaterial>()) ++f.subsurface;
     };
     for (const auto& [name, m] : materials.named) count(m);
     for (const Material* m : materials.anonymous) count(m);
+    f.bssrdfTables = materials.bssrdfTables->Size();
+    f.bssrdfSeconds = materials.bssrdfTables->BuildSeconds();
     f.genericFootprints = options.genericFootprints;
     f.genericAOVs = options.genericAOVs;
     f.aovs = scene.job->film->UsesVisibleSurface() || options.genericAOVs;
@@ -533,8 +540,10 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
     // keeps pbrt-v4's volpath heuristic even without media
     for (const Light& light : scene.lights)
         f.unnormalizedLightSamples |= light.HasUnnormalizedSamples();
-    f.volumetric = options.genericVolumes ||
-                   (scene.integrator.volumetric && (f.media > 0 || f.unnormalizedLightSamples));
+    // Subsurface scattering is volpath's (as in pbrt-v4, whose path integrator ignores it)
+    f.volumetric =
+        options.genericVolumes || (scene.integrator.volumetric &&
+                                   (f.media > 0 || f.unnormalizedLightSamples || f.subsurface > 0));
     f.areaLights = !desc.areaLights.empty();
     f.environmentLight = !scene.infiniteLights.empty();
     auto dispersive = [](const ParameterDictionary& p) {
@@ -552,10 +561,11 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
 void DecideBidirectional(Scene& scene, const SceneDescription& desc, Diagnostics& diag) {
     SceneFeatures& f = scene.features;
     if (!scene.integrator.bidirectional) return;
-    const char* why = f.genericVolumes ? "--generic volpath"
-                      : f.media > 0    ? "participating media"
-                      : f.polarized    ? "polarised light (Stokes layers, a camera polariser or a "
-                                         "polarising filter)"
+    const char* why = f.genericVolumes   ? "--generic volpath"
+                      : f.media > 0      ? "participating media"
+                      : f.subsurface > 0 ? "subsurface scattering (\"subsurface\" materials)"
+                      : f.polarized ? "polarised light (Stokes layers, a camera polariser or a "
+                                      "polarising filter)"
                       : !scene.camera->Is<PerspectiveCamera>()
                           ? "cameras other than \"perspective\""
                           : nullptr;
@@ -612,6 +622,11 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
         diag.Warn(desc.integrator.loc,
                   "integrator \"path\" ignores participating media (as pbrt-v4); use "
                   "\"volpath\"");
+    if (!scene.integrator.volumetric && scene.features.subsurface > 0 &&
+        !scene.features.bidirectional)
+        diag.Warn(desc.integrator.loc,
+                  "integrator \"path\" renders \"subsurface\" materials as their dielectric "
+                  "boundary alone (as pbrt-v4); use \"volpath\"");
     if (scene.lights.empty() && !scene.features.thermalEmission &&
         !(scene.features.volumetric && scene.features.emissiveMedia > 0))
         diag.Warn(FileLoc(), "the scene has no lights; the image will be black");

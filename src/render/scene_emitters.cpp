@@ -121,7 +121,8 @@ const MaterialAlbedo* ThermalEmitters::AlbedoOf(const Material* material, const 
                   "with a scattering layer, textured thickness or conductor constants, or "
                   "a dispersive coat over a conductor: a Monte Carlo table, about 1 %; a "
                   "conductor with textured anisotropic roughness: the isotropic albedo at "
-                  "the projected roughness): Kirchhoff equilibrium does not hold exactly");
+                  "the projected roughness; a rough subsurface boundary: the smooth Fresnel "
+                  "split): Kirchhoff equilibrium does not hold exactly");
     albedos.emplace(material, albedo);
     return albedo;
 }

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 
+#include "materials/bxdfs/fresnel.h"
 #include "materials/materials.h"
+#include "materials/subsurface_material.h"
+#include "textures/basic_textures.h"
 
 namespace kiln {
 
@@ -33,6 +36,17 @@ const MaterialAlbedo* MaterialAlbedo::Create(const Material& material, Emissivit
         return arena.New<MaterialAlbedo>(CoatedConductorEmissivity(*c, material, tables));
     if (const MeasuredMaterial* m = material.GetIf<MeasuredMaterial>())
         return arena.New<MaterialAlbedo>(MeasuredEmissivity(*m, tables, arena));
+    if (const SubsurfaceMaterial* s = material.GetIf<SubsurfaceMaterial>()) {
+        const SubsurfaceMaterial::Params& p = s->Parameters();
+        auto isZero = [](const FloatTexture& t) {
+            const FloatConstantTexture* c = t.GetIf<FloatConstantTexture>();
+            return c && c->Value() == 0;
+        };
+        // The probe radii stop at the profile's 0.999 quantile (TabulatedBSSRDF::SampleSp)
+        Float C = NormalizedFresnelBxDF(p.eta).ExitFraction() * 0.999f;
+        return arena.New<MaterialAlbedo>(
+            Subsurface{C, isZero(p.uRoughness) && isZero(p.vRoughness)});
+    }
     return arena.New<MaterialAlbedo>(NonAbsorbing{});
 }
 
@@ -43,6 +57,8 @@ bool MaterialAlbedo::Exact() const {
                       std::is_same_v<K, CoatedDiffuseEmissivity> ||
                       std::is_same_v<K, CoatedConductorEmissivity>)
             return k.Exact();
+        else if constexpr (std::is_same_v<K, Subsurface>)
+            return k.smooth;
         else if constexpr (std::is_same_v<K, Mix>)
             return std::all_of(k.components.begin(), k.components.end(),
                                [](const auto& c) { return c.second->Exact(); });
@@ -53,7 +69,8 @@ bool MaterialAlbedo::Exact() const {
 
 // Evaluation
 SampledSpectrum MaterialAlbedo::EvaluateLocal(const Material* material, const BSDF& bsdf,
-                                              Vector3f wo, const SampledWavelengths& lambda) const {
+                                              Vector3f wo, const SampledWavelengths& lambda,
+                                              const SurfaceInteraction* si) const {
     const BxDF& bxdf = bsdf.GetBxDF();
     return kind.Dispatch([&](const auto& k) -> SampledSpectrum {
         using K = std::decay_t<decltype(k)>;
@@ -76,9 +93,18 @@ SampledSpectrum MaterialAlbedo::EvaluateLocal(const Material* material, const BS
             return c ? k.Albedo(*c, wo, lambda) : SampledSpectrum(1.f);
         } else if constexpr (std::is_same_v<K, MeasuredEmissivity>) {
             return bxdf.Is<MeasuredBxDF>() ? k.Albedo(wo, lambda) : SampledSpectrum(1.f);
+        } else if constexpr (std::is_same_v<K, Subsurface>) {
+            const DielectricBxDF* d = bxdf.GetIf<DielectricBxDF>();
+            const SubsurfaceMaterial* s =
+                material ? material->GetIf<SubsurfaceMaterial>() : nullptr;
+            if (!d || !s) return SampledSpectrum(1.f);
+            Float R = FrDielectric(CosTheta(wo), d->Eta());
+            MaterialEvalContext ctx = si ? MaterialEvalContext(*si) : MaterialEvalContext();
+            return SampledSpectrum(R) + (1 - R) * k.exitFraction * s->EffectiveAlbedo(ctx, lambda);
         } else {
             for (const auto& [component, albedo] : k.components)
-                if (component == material) return albedo->EvaluateLocal(material, bsdf, wo, lambda);
+                if (component == material)
+                    return albedo->EvaluateLocal(material, bsdf, wo, lambda, si);
             return SampledSpectrum(1.f);
         }
     });
@@ -87,7 +113,7 @@ SampledSpectrum MaterialAlbedo::EvaluateLocal(const Material* material, const BS
 SampledSpectrum BSDFReflectance::DirectionalAlbedo(Vector3f wo,
                                                    const SampledWavelengths& lambda) const {
     if (!bsdf) return SampledSpectrum(1.f);
-    return Clamp(albedo.EvaluateLocal(material, bsdf, wo, lambda), Float(0), Float(1));
+    return Clamp(albedo.EvaluateLocal(material, bsdf, wo, lambda, si), Float(0), Float(1));
 }
 
 ReflectedPolarization BSDFReflectance::LinearPolarization(Vector3f wo) const {

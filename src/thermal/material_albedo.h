@@ -23,6 +23,16 @@
 //   thindielectric, interface: A = 1, their surfaces emit nothing: a hot transparent body glows
 //                             from its interior medium (volume_emission.h) (a rough dielectric's
 //                             single-scattering energy loss is not emitted either)
+//   subsurface:               A = R(wo) + (1 - R(wo)) rhoEff C: the smooth boundary's Fresnel
+//                             reflectance R, and of what it transmits the fraction the
+//                             BSSRDF returns (the table's effective albedo at the point's
+//                             single-scattering albedo, bxdfs/bssrdf_table.h) times what the
+//                             exit lets out: C = NormalizedFresnelBxDF::ExitFraction() x 0.999
+//                             (the BSSRDF's probe radii stop at the profile's 0.999 quantile).
+//                             This is the albedo of kiln's (pbrt-v4's) BSSRDF transport on a
+//                             flat surface; the emission 1 - A is that of the hot medium below
+//                             the boundary. A rough boundary uses the smooth Fresnel split
+//                             (approximate: Exact() is false)
 //   mix:                      the component chosen at the point
 // Polarisation (surface_emission.h): LinearPolarization gives (a1, a2) of the reflection; for
 // conductors see conductor_emissivity.h; zero for depolarising BSDFs (diffuse, coated: their
@@ -55,13 +65,15 @@ namespace kiln {
 
 class Material;
 class MaterialAlbedo;
+struct SurfaceInteraction;
 
 // The BSDF a material built at a point, as the thermal module's SurfaceReflectance
 // (surface_emission.h): directions in the BSDF's local shading frame.
 class BSDFReflectance {
   public:
-    BSDFReflectance(const MaterialAlbedo& albedo, const Material* material, const BSDF& bsdf)
-        : albedo(albedo), material(material), bsdf(bsdf) {}
+    BSDFReflectance(const MaterialAlbedo& albedo, const Material* material, const BSDF& bsdf,
+                    const SurfaceInteraction* si = nullptr)
+        : albedo(albedo), material(material), bsdf(bsdf), si(si) {}
     // A(wo) in [0, 1] (the tables carry quadrature and interpolation errors of ~1e-5)
     SampledSpectrum DirectionalAlbedo(Vector3f wo, const SampledWavelengths& lambda) const;
     ReflectedPolarization LinearPolarization(Vector3f wo) const;
@@ -70,6 +82,7 @@ class BSDFReflectance {
     const MaterialAlbedo& albedo;
     const Material* material;
     const BSDF& bsdf;
+    const SurfaceInteraction* si;  // the point, for materials whose albedo reads textures
 };
 static_assert(SurfaceReflectance<BSDFReflectance>);
 
@@ -78,8 +91,11 @@ class MaterialAlbedo {
   public:
     // The reflectance of bsdf, which `material` built at a surface point (for a mix material,
     // the component chosen there: SurfaceInteraction::material after the scene's GetBSDF).
-    BSDFReflectance Reflectance(const Material* material, const BSDF& bsdf) const {
-        return BSDFReflectance(*this, material, bsdf);
+    // si: the point (its textures give a subsurface material's effective albedo; without it,
+    // textures are evaluated at a default context, exact for constant ones).
+    BSDFReflectance Reflectance(const Material* material, const BSDF& bsdf,
+                                const SurfaceInteraction* si = nullptr) const {
+        return BSDFReflectance(*this, material, bsdf, si);
     }
     // A of bsdf, which `material` built at a surface point (for a mix material, the component
     // chosen there: SurfaceInteraction::material after the scene's GetBSDF), seen from woRender
@@ -103,18 +119,23 @@ class MaterialAlbedo {
 
     struct Diffuse {};
     struct NonAbsorbing {};
+    struct Subsurface {
+        Float exitFraction;  // C above
+        bool smooth;         // a smooth boundary (else the smooth Fresnel split approximates)
+    };
     struct Mix {
         std::vector<std::pair<const Material*, const MaterialAlbedo*>> components;
     };
     // How the albedo is computed, by the material's kind
     using Kind = ClosedSet<Diffuse, NonAbsorbing, ConductorEmissivity, CoatedDiffuseEmissivity,
-                           CoatedConductorEmissivity, MeasuredEmissivity, Mix>;
+                           CoatedConductorEmissivity, MeasuredEmissivity, Subsurface, Mix>;
     explicit MaterialAlbedo(Kind kind) : kind(std::move(kind)) {}
 
   private:
     friend class BSDFReflectance;
     SampledSpectrum EvaluateLocal(const Material* material, const BSDF& bsdf, Vector3f wo,
-                                  const SampledWavelengths& lambda) const;
+                                  const SampledWavelengths& lambda,
+                                  const SurfaceInteraction* si = nullptr) const;
     ReflectedPolarization LinearPolarizationLocal(const Material* material, const BSDF& bsdf,
                                                   Vector3f wo) const;
     Kind kind;

@@ -32,7 +32,7 @@ Radiance ThermalEmission::L(const SurfaceInteraction& si, const BSDF& bsdf, Vect
     SampledSpectrum B = scale * planck_radiance(lambda, T);
     if (model != EmissionModel::Kirchhoff) return Radiance(B);
     if (!bsdf) return {};
-    return SurfaceEmission<Radiance>(model, B, albedo->Reflectance(si.material, bsdf),
+    return SurfaceEmission<Radiance>(model, B, albedo->Reflectance(si.material, bsdf, &si),
                                      bsdf.ShadingFrame(), w, lambda);
 }
 
@@ -47,7 +47,7 @@ Float ThermalEmission::VisibleExitance(const SurfaceInteraction& si, const BSDF&
         return kiln::VisibleExitance(model, Temperature(si), scale, NoReflectance{});
     if (!bsdf) return 0;
     return kiln::VisibleExitance(model, Temperature(si), scale,
-                                 albedo->Reflectance(si.material, bsdf));
+                                 albedo->Reflectance(si.material, bsdf, &si));
 }
 
 }  // namespace kiln

@@ -19,7 +19,7 @@ namespace {
 
 constexpr int kThetaBins = 80, kPhiBins = 160, kSub = 8;
 constexpr int kSamples = 200000;
-constexpr int kNumTests = 47;  // tests in this file, for the multiple-testing correction
+constexpr int kNumTests = 49;  // tests in this file, for the multiple-testing correction
 
 // Bins directions by (theta, phi) over the sphere (bins narrow near the poles, where sharp
 // lobes sit); sample() returns nullopt on failure (the lost mass must then be missing from the
@@ -104,6 +104,25 @@ TEST(SamplingChi2, DiffuseTransmission) {
         SampledSpectrum rho = bxdf.rho(Wo(cosTheta), uc, u2);
         for (int i = 0; i < NSpectrumSamples; ++i) EXPECT_NEAR(rho[i], R[i] + T[i], 2e-3f);
     }
+}
+
+// The exit of a subsurface material (pbrt-v4's NormalizedFresnelBxDF): cosine sampling on the
+// side of wo; its albedo for radiance is eta^2 times the exit fraction
+TEST(SamplingChi2, NormalizedFresnel) {
+    NormalizedFresnelBxDF exit(1.33f);
+    BxDF bxdf = exit;
+    for (Float cosTheta : {0.7f, -0.4f}) {
+        auto r = TestBxDF(bxdf, Wo(cosTheta), 5);
+        EXPECT_TRUE(r.passed) << r.message;
+    }
+    // integral f |cos| dwi by the midpoint rule in cos theta (f is isotropic in phi)
+    double rho = 0;
+    constexpr int kN = 20000;
+    for (int i = 0; i < kN; ++i) {
+        Float mu = (i + 0.5f) / kN;
+        rho += bxdf.f(Wo(0.5f), Wo(mu), TransportMode::Radiance)[0] * mu * 2 * Pi / kN;
+    }
+    EXPECT_NEAR(rho, Sqr(1.33f) * exit.ExitFraction(), 1e-4);
 }
 
 TEST(SamplingChi2, RoughConductorIsotropic) {

@@ -73,12 +73,13 @@ INSTANTIATE_TEST_SUITE_P(
                       Feature{"tga", 0, 4096}, Feature{"projective_light", 0, 4096},
                       Feature{"invisible_light", 0, 4096}, Feature{"portal", 1, 4096},
                       Feature{"portal_map", 0, 4096}, Feature{"diffusetransmission", 0, 4096},
-                      Feature{"spherical", 0}, Feature{"spherical-equirect", 0},
-                      Feature{"realistic", 0}, Feature{"realistic-aperture", 0},
-                      Feature{"caustic", 0, 16384}, Feature{"sampler_halton", 0, 4096},
-                      Feature{"sampler_sobol", 0, 4096}, Feature{"motionblur", 0, 4096},
-                      Feature{"motionblur-camera", 0, 4096}, Feature{"nanovdb", 0, 16384},
-                      Feature{"measured", 0, 4096}, Feature{"measured-aniso", 0, 4096}),
+                      Feature{"subsurface", 0, 4096}, Feature{"spherical", 0},
+                      Feature{"spherical-equirect", 0}, Feature{"realistic", 0},
+                      Feature{"realistic-aperture", 0}, Feature{"caustic", 0, 16384},
+                      Feature{"sampler_halton", 0, 4096}, Feature{"sampler_sobol", 0, 4096},
+                      Feature{"motionblur", 0, 4096}, Feature{"motionblur-camera", 0, 4096},
+                      Feature{"nanovdb", 0, 16384}, Feature{"measured", 0, 4096},
+                      Feature{"measured-aniso", 0, 4096}),
     [](const ::testing::TestParamInfo<Feature>& info) {
         std::string name = info.param.scene;
         std::replace(name.begin(), name.end(), '-', '_');

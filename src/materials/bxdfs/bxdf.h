@@ -30,6 +30,7 @@
 #include "materials/bxdfs/hair_bxdf.h"
 #include "materials/bxdfs/layered_bxdf.h"
 #include "materials/bxdfs/measured_bxdf.h"
+#include "materials/bxdfs/normalized_fresnel_bxdf.h"
 #include "materials/bxdfs/polarizing_filter_bxdf.h"
 #include "materials/bxdfs/thin_dielectric_bxdf.h"
 #include "spectral/polarization.h"
@@ -56,7 +57,7 @@ concept PolarizationDefinedBxDF = PolarizingBxDF<B>
 // The BxDFs, held by value
 using BxDFSet = ClosedSet<DiffuseBxDF, ConductorBxDF, DielectricBxDF, ThinDielectricBxDF,
                           CoatedDiffuseBxDF, CoatedConductorBxDF, PolarizingFilterBxDF, HairBxDF,
-                          DiffuseTransmissionBxDF, MeasuredBxDF>;
+                          DiffuseTransmissionBxDF, MeasuredBxDF, NormalizedFresnelBxDF>;
 
 class BxDF : public BxDFSet {
   public:
