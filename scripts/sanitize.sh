@@ -2,7 +2,7 @@
 # Builds kiln with clang, AddressSanitizer and UndefinedBehaviorSanitizer (any report fails) in
 # build-sanitize/, fuzzes each libFuzzer target of test/fuzz for SECONDS from its committed
 # seed corpus (test/fuzz/corpus/TARGET, plus the repository's scenes and meshes), one fuzzer per
-# core at a time, then runs the test suite in that build except the Monte Carlo renders labelled
+# core at a time, then runs the test suite in that build except the Monte Carlo checks labelled
 # `statistical` (the release stage, scripts/test.sh, runs those). A crashing input is kept in
 # build-sanitize/fuzz/TARGET/; add it to test/fuzz/corpus/TARGET once fixed, so it stays a
 # regression input.
@@ -74,6 +74,6 @@ if [ "$seconds" -gt 0 ]; then
 fi
 
 cd "$build"
-# Every test but the Monte Carlo renders labelled `statistical` and the installation test
+# Every test but the Monte Carlo checks labelled `statistical` and the installation test
 # labelled `packaging` (CMakeLists.txt), which the release stage runs
 ctest --output-on-failure -j "$jobs" --timeout 1800 -LE "statistical|packaging"

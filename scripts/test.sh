@@ -2,7 +2,7 @@
 # Builds kiln and its tests (installing missing packages first) and runs the whole suite; then
 # the sanitizer stage (scripts/sanitize.sh: a clang build with AddressSanitizer and
 # UndefinedBehaviorSanitizer, each libFuzzer target fuzzed for KILN_FUZZ_SECONDS, default 30,
-# and the suite again under the sanitizers but for the Monte Carlo renders labelled
+# and the suite again under the sanitizers but for the Monte Carlo checks labelled
 # `statistical`). KILN_QUICK=1 skips that stage.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
