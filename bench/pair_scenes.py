@@ -235,8 +235,8 @@ def curves(out: str, size: Size) -> PairScene:
 
 
 def many_lights(out: str, size: Size) -> PairScene:
-    """300 point lights and 100 small quad area lights, blackbody 2000-6500 K, over a room of
-    diffuse and rough-metal boxes (the light BVH matters)."""
+    """300 point lights (0.5 above the tallest box or more) and 100 small quad area lights,
+    blackbody 2000-6500 K, over diffuse and rough-metal boxes (the light BVH matters)."""
     folder = os.path.join(out, "many-lights")
     rng = random.Random("many-lights")
     n_point, n_area = max(20, int(300 * size.scale)), max(8, int(100 * size.scale))
@@ -256,7 +256,7 @@ def many_lights(out: str, size: Size) -> PairScene:
                  f'-.5 {-h / 2:.2f} .5  -.5 {h / 2:.2f} -.5  .5 {h / 2:.2f} -.5  '
                  f'.5 {h / 2:.2f} .5  -.5 {h / 2:.2f} .5]\nAttributeEnd\n')
     for _ in range(n_point):
-        p = (rng.uniform(-14, 14), rng.uniform(0.3, 4), rng.uniform(-8, 16))
+        p = (rng.uniform(-14, 14), rng.uniform(3.5, 6), rng.uniform(-8, 16))
         text += (f'LightSource "point" "point3 from" [{fmt(p)}] "blackbody I" '
                  f'{rng.randint(2000, 6500)} "float scale" {rng.uniform(0.05, 0.5):.3f}\n')
     for _ in range(n_area):

@@ -36,7 +36,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BENCH = os.path.join(ROOT, "bench")
 LOCK = "/tmp/kiln-build.lock"
 REFERENCE_SEED = 7919
-FULL = pair_scenes.Size(width=192, height=128, spp=16, ref_spp=1024, scale=1.0)
+FULL = pair_scenes.Size(width=192, height=128, spp=16, ref_spp=512, scale=1.0)
 QUICK = pair_scenes.Size(width=32, height=24, spp=4, ref_spp=32, scale=0.02)
 
 
@@ -220,9 +220,12 @@ def summarise(args, scenes, rows, command):
     lines = [
         "# kiln against pbrt-v4 (bench/pairbench.py)", "",
         f"Command: `{command}`  ",
-        f"kiln: {args.kiln} at commit {args.commit}; pbrt-v4: {args.pbrt} (portable build; "
+        f"kiln: {args.kiln}, built from commit {args.commit}; pbrt-v4: {args.pbrt} (portable build; "
         "pbrt-v4's -march=native build is 20-25 % faster)  ",
-        f"Machine: {platform.machine()}, {os.cpu_count()} cores, shared ({args.machine_note})  ",
+        f"Machine: {platform.machine()}, {os.cpu_count()} cores, shared; 5-minute load average "
+        f"{args.load_start:.2f} at the start, {os.getloadavg()[1]:.2f} at the end "
+        f"(renders held the shared lock; other work may have run beside them). "
+        f"{args.machine_note}  ",
         f"{args.reps} repetitions, {args.threads} thread(s), sizes {args.size}; medians "
         "(min-max). Times in seconds, peak RSS in MB. Reference: pbrt-v4 at the given spp, "
         "another seed.", "",
@@ -264,17 +267,28 @@ def main():
     p.add_argument("--threads", type=int, default=1)
     p.add_argument("--ref-threads", type=int, default=os.cpu_count())
     p.add_argument("--quick", action="store_true", help="tiny images, few samples, 1 repetition")
+    p.add_argument("--kiln-commit", default="", help="the commit the kiln binary was built from")
     p.add_argument("--machine-note", default="", help="e.g. 'other agents were building'")
     p.add_argument("--out", default=os.path.join(BENCH, "out", "pairs"))
-    p.add_argument("--results", default=os.path.join(BENCH, "results"))
+    p.add_argument("--results", default=None,
+                   help="where the table and CSV go (default bench/results/, with --quick "
+                        "bench/out/pairs/)")
     args = p.parse_args()
     args.reps = args.reps or (1 if args.quick else 3)
     args.out = os.path.abspath(args.out)
+    args.results = args.results or (args.out if args.quick else os.path.join(BENCH, "results"))
     size = QUICK if args.quick else FULL
     args.size = f"{size.width}x{size.height}, {size.spp} spp, reference {size.ref_spp} spp"
     args.kiln, args.pbrt = os.path.abspath(args.kiln), os.path.abspath(args.pbrt)
-    args.commit = subprocess.run(["git", "-C", os.path.dirname(args.kiln), "rev-parse", "--short",
-                                  "HEAD"], capture_output=True, text=True).stdout.strip() or "?"
+    # The binary's commit unless given: the last commit of its checkout before the binary was
+    # written (a guess: the binary may have been built from uncommitted or later-merged work)
+    mtime = int(os.path.getmtime(args.kiln))
+    args.commit = subprocess.run(["git", "-C", os.path.dirname(args.kiln), "log", "-1",
+                                  "--format=%h", f"--before={mtime}"],
+                                 capture_output=True, text=True).stdout.strip() or "?"
+    stamp = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime(mtime))
+    args.commit = args.kiln_commit or f"{args.commit} (guessed: last commit before the binary's date, {stamp})"
+    args.load_start = os.getloadavg()[1]
     wanted = args.scenes.split(",") if args.scenes else all_names
     for name in wanted:
         if name not in all_names:
