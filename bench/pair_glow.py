@@ -18,7 +18,7 @@ import os
 import random
 from typing import Callable
 
-from pair_scenes import PairScene, Size, density_grid, fmt, header, write
+from pair_scenes import PairScene, Size, box, density_grid, fmt, header, write
 
 FLOOR = ('Material "diffuse" "rgb reflectance" [0.4 0.4 0.4]\n'
          'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
@@ -61,22 +61,19 @@ def hot_smoke(out: str, size: Size, photometric: Callable[[float], float]) -> Pa
     common = (header(size, "0 1.4 -5  0 1.1 0  0 1 0", 40, "volpath", 20, '"float iso" 400')
               + AMBIENT + FLOOR
               + 'AttributeBegin AreaLightSource "diffuse" "blackbody L" 6500 "float scale" 1\n'
-              '  Shape "trianglemesh" "integer indices" [0 2 1 0 3 2]\n'
+              '  Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
               '    "point3 P" [-3 4 -3  -1 4 -3  -1 4 -1  -3 4 -1]\nAttributeEnd\n')
     grid = ('"string type" "uniformgrid" "rgb sigma_a" [3 3 3] "rgb sigma_s" [3 3 3] '
             f'"float g" 0.2 "integer nx" {n} "integer ny" {n} "integer nz" {n}\n'
-            '    "point3 p0" [-1.2 0 -1.2] "point3 p1" [1.2 2.4 1.2]\n'
+            '    "point3 p0" [-1.2 0.02 -1.2] "point3 p1" [1.2 2.42 1.2]\n'
             f'    "float density" [{fmt(density)}]\n')
     kiln = common + f'MakeNamedMedium "smoke" {grid}    "float temperature" {T}\n'
     pbrt = (common + f'MakeNamedMedium "smoke" {grid}    "blackbody Le" {T}\n'
             f'    "float Lescale" [{" ".join([f"{photometric(T):.6g}"] * len(density))}]\n')
-    box = ('AttributeBegin MediumInterface "smoke" "" Material "interface"\n'
-           '  Shape "trianglemesh" "integer indices" [0 2 1 0 3 2 4 5 6 4 6 7 0 1 5 0 5 4 '
-           '2 3 7 2 7 6 1 2 6 1 6 5 0 4 7 0 7 3]\n'
-           '    "point3 P" [-1.2 0 -1.2  1.2 0 -1.2  1.2 0 1.2  -1.2 0 1.2  '
-           '-1.2 2.4 -1.2  1.2 2.4 -1.2  1.2 2.4 1.2  -1.2 2.4 1.2]\nAttributeEnd\n')
-    return PairScene("hot-smoke", f"{n}^3 hot smoke grid, 1400 K", write(folder, "kiln.pbrt", kiln + box),
-                     write(folder, "pbrt.pbrt", pbrt + box), size.spp, size.ref_spp)
+    box_ = ('AttributeBegin MediumInterface "smoke" "" Material "interface"\n'
+            + box(-1.2, 0.02, -1.2, 1.2, 2.42, 1.2) + 'AttributeEnd\n')
+    return PairScene("hot-smoke", f"{n}^3 hot smoke grid, 1400 K", write(folder, "kiln.pbrt", kiln + box_),
+                     write(folder, "pbrt.pbrt", pbrt + box_), size.spp, size.ref_spp)
 
 
 TEMPERATURES = (1000, 1200, 1400, 1600, 1800)
@@ -121,10 +118,7 @@ def hot_metal_glass(out: str, size: Size, photometric: Callable[[float], float])
     common = (header(size, "0 1.2 -4.5  0 0.6 0  0 1 0", 40, maxdepth=12, film='"float iso" 400')
               + 'LightSource "infinite" "rgb L" [0.05 0.05 0.06]\n' + FLOOR
               + 'AttributeBegin Material "dielectric" "float eta" 1.5\n'
-              '  Shape "trianglemesh" "integer indices" [0 2 1 0 3 2 4 5 6 4 6 7 0 1 5 0 5 4 '
-              '2 3 7 2 7 6 1 2 6 1 6 5 0 4 7 0 7 3]\n'
-              '    "point3 P" [-1.5 0 -1.6  1.5 0 -1.6  1.5 0 -1.4  -1.5 0 -1.4  '
-              '-1.5 2 -1.6  1.5 2 -1.6  1.5 2 -1.4  -1.5 2 -1.4]\nAttributeEnd\n')
+              + box(-1.5, 0.01, -1.6, 1.5, 2, -1.4) + 'AttributeEnd\n')
     metal = ('Material "conductor" "spectrum eta" "metal-Cu-eta" "spectrum k" "metal-Cu-k" '
              '"float roughness" 0.2')
     kiln = common + (f'AttributeBegin {metal} "float temperature" {T}\n'

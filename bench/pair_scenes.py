@@ -53,6 +53,15 @@ def fmt(values) -> str:
     return " ".join(f"{v:.5g}" for v in values)
 
 
+def box(x0, y0, z0, x1, y1, z1) -> str:
+    """A closed box as a trianglemesh, normals outward (pbrt-v4: n = (p0 - p2) x (p1 - p2))."""
+    P = [(x0, y0, z0), (x1, y0, z0), (x1, y0, z1), (x0, y0, z1),
+         (x0, y1, z0), (x1, y1, z0), (x1, y1, z1), (x0, y1, z1)]
+    return ('Shape "trianglemesh" "integer indices" [0 1 2 0 2 3 4 6 5 4 7 6 0 5 1 0 4 5 '
+            '2 7 3 2 6 7 1 6 2 1 5 6 0 7 4 0 3 7]\n'
+            f'    "point3 P" [{fmt(c for p in P for c in p)}]\n')
+
+
 def write(folder: str, name: str, text: str) -> str:
     os.makedirs(folder, exist_ok=True)
     path = os.path.join(folder, name)
@@ -250,11 +259,7 @@ def many_lights(out: str, size: Size) -> PairScene:
                '"conductor" "spectrum eta" "metal-Al-eta" "spectrum k" "metal-Al-k" '
                '"float roughness" 0.2')
         text += (f"AttributeBegin Translate {x:.2f} {h / 2:.2f} {z:.2f} Material {mat}\n"
-                 f'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3 4 5 6 4 6 7 0 1 5 0 5 4 '
-                 f'2 3 7 2 7 6 1 2 6 1 6 5 0 4 7 0 7 3]\n'
-                 f'    "point3 P" [-.5 {-h / 2:.2f} -.5  .5 {-h / 2:.2f} -.5  .5 {-h / 2:.2f} .5  '
-                 f'-.5 {-h / 2:.2f} .5  -.5 {h / 2:.2f} -.5  .5 {h / 2:.2f} -.5  '
-                 f'.5 {h / 2:.2f} .5  -.5 {h / 2:.2f} .5]\nAttributeEnd\n')
+                 + box(-.5, -h / 2, -.5, .5, h / 2, .5) + 'AttributeEnd\n')
     for _ in range(n_point):
         p = (rng.uniform(-14, 14), rng.uniform(3.5, 6), rng.uniform(-8, 16))
         text += (f'LightSource "point" "point3 from" [{fmt(p)}] "blackbody I" '
@@ -264,7 +269,7 @@ def many_lights(out: str, size: Size) -> PairScene:
         text += (f'AttributeBegin AreaLightSource "diffuse" "blackbody L" '
                  f'{rng.randint(2000, 6500)} "float scale" {rng.uniform(2, 10):.2f}\n'
                  f'Translate {x:.2f} {y:.2f} {z:.2f}\n'
-                 'Shape "trianglemesh" "integer indices" [0 2 1 0 3 2]\n'
+                 'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
                  '    "point3 P" [-.2 0 -.2  .2 0 -.2  .2 0 .2  -.2 0 .2]\nAttributeEnd\n')
     path = write(folder, "scene.pbrt", text)
     return PairScene("many-lights", f"{n_point} point + {n_area} area lights", path, path,
@@ -276,7 +281,7 @@ ROOM = ('LightSource "infinite" "rgb L" [0.05 0.05 0.06]\n'
         'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
         '    "point3 P" [-6 0 -6  6 0 -6  6 0 6  -6 0 6]\n'
         'AttributeBegin AreaLightSource "diffuse" "blackbody L" 4000 "float scale" 12\n'
-        '  Shape "trianglemesh" "integer indices" [0 2 1 0 3 2]\n'
+        '  Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
         '    "point3 P" [-1 4 -1  1 4 -1  1 4 1  -1 4 1]\nAttributeEnd\n')
 
 
@@ -321,13 +326,10 @@ def medium_grid(out: str, size: Size) -> PairScene:
     text += ('MakeNamedMedium "cloud" "string type" "uniformgrid" "rgb sigma_a" [0.5 0.5 0.5] '
              '"rgb sigma_s" [6 6 6] "float g" 0.3\n'
              f'    "integer nx" {n} "integer ny" {n} "integer nz" {n} '
-             '"point3 p0" [-1.2 0 -1.2] "point3 p1" [1.2 2.4 1.2]\n'
+             '"point3 p0" [-1.2 0.02 -1.2] "point3 p1" [1.2 2.42 1.2]\n'
              f'    "float density" [{fmt(density_grid(n, "cloud"))}]\n'
              'AttributeBegin MediumInterface "cloud" "" Material "interface"\n'
-             '  Shape "trianglemesh" "integer indices" [0 2 1 0 3 2 4 5 6 4 6 7 0 1 5 0 5 4 '
-             '2 3 7 2 7 6 1 2 6 1 6 5 0 4 7 0 7 3]\n'
-             '    "point3 P" [-1.2 0 -1.2  1.2 0 -1.2  1.2 0 1.2  -1.2 0 1.2  '
-             '-1.2 2.4 -1.2  1.2 2.4 -1.2  1.2 2.4 1.2  -1.2 2.4 1.2]\nAttributeEnd\n')
+             + box(-1.2, 0.02, -1.2, 1.2, 2.42, 1.2) + 'AttributeEnd\n')
     path = write(folder, "scene.pbrt", text)
     return PairScene("medium-grid", f"{n}^3 density grid, volpath", path, path,
                      size.spp, size.ref_spp)
@@ -340,7 +342,7 @@ def coated_glass(out: str, size: Size) -> PairScene:
     text = header(size, "0 2.5 -7  0 0.8 0  0 1 0", 40, maxdepth=10)
     text += ('LightSource "infinite" "rgb L" [0.3 0.32 0.35]\n'
              'AttributeBegin AreaLightSource "diffuse" "blackbody L" 5000 "float scale" 8\n'
-             '  Shape "trianglemesh" "integer indices" [0 2 1 0 3 2]\n'
+             '  Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
              '    "point3 P" [-1.5 5 -2  1.5 5 -2  1.5 5 1  -1.5 5 1]\nAttributeEnd\n'
              'Texture "check" "spectrum" "checkerboard" "float uscale" 16 "float vscale" 16 '
              '"rgb tex1" [0.8 0.8 0.8] "rgb tex2" [0.1 0.1 0.1]\n'
