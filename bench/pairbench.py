@@ -21,6 +21,7 @@ import json
 import os
 import platform
 import re
+import shlex
 import statistics
 import subprocess
 import sys
@@ -321,7 +322,7 @@ def main():
         w.writeheader()
         w.writerows({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in row.items()}
                     for row in rows)
-    command = "bench/pairbench.py " + " ".join(sys.argv[1:])
+    command = "bench/pairbench.py " + shlex.join(sys.argv[1:])
     table = summarise(args, scenes, rows, command)
     with open(os.path.join(args.results, f"pairbench{suffix}.md"), "w") as f:
         f.write(table)
