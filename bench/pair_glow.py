@@ -46,7 +46,8 @@ def hot_glass(out: str, size: Size, photometric: Callable[[float], float]) -> Pa
                  f'  Translate {x} {r} 0 Shape "sphere" "float radius" {r}\nAttributeEnd\n')
         kiln += shape
         pbrt += shape
-    return PairScene("hot-glass", "glass balls filled with hot medium", write(folder, "kiln.pbrt", kiln),
+    return PairScene("hot-glass", "glass balls filled with hot medium",
+                     write(folder, "kiln.pbrt", kiln),
                      write(folder, "pbrt.pbrt", pbrt), size.spp, size.ref_spp)
 
 
@@ -72,7 +73,8 @@ def hot_smoke(out: str, size: Size, photometric: Callable[[float], float]) -> Pa
             f'    "float Lescale" [{" ".join([f"{photometric(T):.6g}"] * len(density))}]\n')
     box_ = ('AttributeBegin MediumInterface "smoke" "" Material "interface"\n'
             + box(-1.2, 0.02, -1.2, 1.2, 2.42, 1.2) + 'AttributeEnd\n')
-    return PairScene("hot-smoke", f"{n}^3 hot smoke grid, 1400 K", write(folder, "kiln.pbrt", kiln + box_),
+    return PairScene("hot-smoke", f"{n}^3 hot smoke grid, 1400 K",
+                     write(folder, "kiln.pbrt", kiln + box_),
                      write(folder, "pbrt.pbrt", pbrt + box_), size.spp, size.ref_spp)
 
 

@@ -114,7 +114,8 @@ def textured_mesh(out: str, size: Size) -> PairScene:
     tex = 512 if size.scale >= 1 else 64
     patterns = [
         lambda x, y: (200, 60 + 120 * (((x // 32) + (y // 32)) % 2), 40),
-        lambda x, y: (int(127 + 120 * math.sin(x * 0.09)), 150, int(127 + 120 * math.cos(y * 0.05))),
+        lambda x, y: (int(127 + 120 * math.sin(x * 0.09)), 150,
+                      int(127 + 120 * math.cos(y * 0.05))),
         lambda x, y: ((x * 7 + y * 3) % 256, (x * y) % 256, 180),
         lambda x, y: (90, y // 2, x // 2),
     ]

@@ -214,14 +214,16 @@ def cell(values, digits=2):
         return "-"
     if len(values) == 1:
         return f"{values[0]:.{digits}f}"
-    return f"{statistics.median(values):.{digits}f} ({min(values):.{digits}f}-{max(values):.{digits}f})"
+    lo, mid, hi = min(values), statistics.median(values), max(values)
+    return f"{mid:.{digits}f} ({lo:.{digits}f}-{hi:.{digits}f})"
 
 
 def summarise(args, scenes, rows, command):
     lines = [
         "# kiln against pbrt-v4 (bench/pairbench.py)", "",
         f"Command: `{command}`  ",
-        f"kiln: {args.kiln}, built from commit {args.commit}; pbrt-v4: {args.pbrt} (portable build; "
+        f"kiln: {args.kiln}, built from commit {args.commit}; pbrt-v4: {args.pbrt} "
+        "(portable build; "
         "pbrt-v4's -march=native build is 20-25 % faster)  ",
         f"Machine: {platform.machine()}, {os.cpu_count()} cores, shared; 5-minute load average "
         f"{args.load_start:.2f} at the start, {os.getloadavg()[1]:.2f} at the end "
@@ -258,12 +260,15 @@ def summarise(args, scenes, rows, command):
 
 def main():
     build = os.environ.get("KILN_BUILD_DIR", os.path.join(ROOT, "build"))
-    all_names = [g.__name__.replace("_", "-") for g in pair_scenes.GENERATORS + pair_glow.GENERATORS]
+    generators = pair_scenes.GENERATORS + pair_glow.GENERATORS
+    all_names = [g.__name__.replace("_", "-") for g in generators]
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--kiln", default=os.path.join(build, "kiln"))
     p.add_argument("--tool", default=os.path.join(build, "bench", "kiln_benchtool"))
-    p.add_argument("--pbrt", default=os.path.join(ROOT, "..", "shared", "anchors", "pbrt-v4", "pbrt"))
-    p.add_argument("--scenes", default="", help="comma-separated subset of: " + ", ".join(all_names))
+    p.add_argument("--pbrt",
+                   default=os.path.join(ROOT, "..", "shared", "anchors", "pbrt-v4", "pbrt"))
+    p.add_argument("--scenes", default="",
+                   help="comma-separated subset of: " + ", ".join(all_names))
     p.add_argument("--reps", type=int, default=None, help="repetitions (default 3, quick 1)")
     p.add_argument("--threads", type=int, default=1)
     p.add_argument("--ref-threads", type=int, default=os.cpu_count())
@@ -288,7 +293,8 @@ def main():
                                   "--format=%h", f"--before={mtime}"],
                                  capture_output=True, text=True).stdout.strip() or "?"
     stamp = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime(mtime))
-    args.commit = args.kiln_commit or f"{args.commit} (guessed: last commit before the binary's date, {stamp})"
+    args.commit = args.kiln_commit or (
+        f"{args.commit} (guessed: last commit before the binary's date, {stamp})")
     args.load_start = os.getloadavg()[1]
     wanted = args.scenes.split(",") if args.scenes else all_names
     for name in wanted:
@@ -298,7 +304,7 @@ def main():
 
     scenes = []
     photometric = None
-    for gen in pair_scenes.GENERATORS + pair_glow.GENERATORS:
+    for gen in generators:
         if gen.__name__.replace("_", "-") not in wanted:
             continue
         if gen in pair_glow.GENERATORS:
