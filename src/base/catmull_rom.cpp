@@ -99,7 +99,10 @@ Float InvertCatmullRom(std::span<const Float> nodes, std::span<const Float> f, F
     if (!(u < f.back())) return nodes.back();
     const int i = int(FindInterval(f.size(), [&](size_t k) { return f[k] <= u; }));
     auto value = [&](int k) { return f[size_t(k)]; };
-    auto [d0, d1] = Derivatives(nodes, i, value);
+    // Plain variables, not structured bindings: lambdas capture them (clang 14 cannot capture
+    // bindings)
+    const std::pair<Float, Float> d = Derivatives(nodes, i, value);
+    const Float d0 = d.first, d1 = d.second;
     Float x0 = nodes[size_t(i)], width = nodes[size_t(i) + 1] - x0;
     Float f0 = f[size_t(i)], f1 = f[size_t(i) + 1];
     auto eval = [&](Float t) -> std::pair<Float, Float> {
@@ -149,7 +152,8 @@ Float SampleCatmullRom2D(std::span<const Float> nodes1, std::span<const Float> n
     const int i = int(FindInterval(n2, [&](size_t k) { return F(int(k)) <= u; }));
     Float f0 = f(i), f1 = f(i + 1);
     Float x0 = nodes2[size_t(i)], width = nodes2[size_t(i) + 1] - x0;
-    auto [d0, d1] = Derivatives(nodes2, i, f);
+    const std::pair<Float, Float> d = Derivatives(nodes2, i, f);
+    const Float d0 = d.first, d1 = d.second;  // captured below (not bindings: clang 14)
     u = (u - F(i)) / width;
     Float fhat = 0;
     auto eval = [&](Float t) -> std::pair<Float, Float> {
