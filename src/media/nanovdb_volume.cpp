@@ -120,22 +120,8 @@ VDBVolume ReadNanoVDBVolume(const std::string& filename, const std::string& dens
     const int64_t nx = last[0] - first[0] + 1, ny = last[1] - first[1] + 1,
                   nz = last[2] - first[2] + 1;
     double voxels = double(nx) * double(ny) * double(nz);
-    if (voxels > double(maxVoxels))
-        throw SceneError(loc,
-                         filename + ": the density grid spans " + std::to_string(uint64_t(voxels)) +
-                             " voxels; kiln resamples volumes densely and allows at most " +
-                             std::to_string(maxVoxels),
-                         densityName);
-    size_t n = size_t(voxels);
-    if (budget) {
-        try {
-            budget->Charge(
-                double(n) * sizeof(Float) * (temperature ? 2 : 1),
-                "the dense grids of \"" + filename + "\" (" + std::to_string(n) + " voxels)");
-        } catch (const MemoryLimitError& e) {
-            throw SceneError(loc, e.what(), filename);
-        }
-    }
+    size_t n = ChargeDenseVolume(voxels, temperature.has_value(), filename, densityName, loc,
+                                 maxVoxels, budget);
 
     // Temperatures at the density's voxels: its own values if the maps agree
     const bool sameMap = temperature && temperature->Matrix() == density->Matrix() &&

@@ -239,23 +239,8 @@ VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityN
     if (nx <= 0 || ny <= 0 || nz <= 0) fail("the density grid has no active voxels");
     // The dense grid kiln keeps has one more layer each way (below)
     double voxels = double(nx + 1) * double(ny + 1) * double(nz + 1);
-    if (voxels > double(maxVoxels))
-        throw SceneError(loc,
-                         filename + ": the density grid spans " + std::to_string(uint64_t(voxels)) +
-                             " voxels; kiln resamples volumes densely and allows at most " +
-                             std::to_string(maxVoxels),
-                         densityName);
-    size_t n = size_t(voxels);
     const bool hasTemperature = h.hasTemperature != 0;
-    if (budget) {
-        try {
-            budget->Charge(
-                double(n) * sizeof(Float) * (hasTemperature ? 2 : 1),
-                "the dense grids of \"" + filename + "\" (" + std::to_string(n) + " voxels)");
-        } catch (const MemoryLimitError& e) {
-            throw SceneError(loc, e.what(), filename);
-        }
-    }
+    ChargeDenseVolume(voxels, hasTemperature, filename, densityName, loc, maxVoxels, budget);
     // Dense copies over the density's active box; temperatures sampled (trilinearly) at the
     // density's voxel centres
     const size_t nRead = size_t(nx * ny * nz);  // what the reader sends
@@ -288,6 +273,28 @@ VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityN
     for (int i = 0; i < 16; ++i) c[i] = Float(h.indexToWorld[i]);
     v.mediumFromIndex = Transform(SquareMatrix4(c));
     return v;
+}
+
+size_t ChargeDenseVolume(double voxels, bool withTemperature, const std::string& filename,
+                         const std::string& densityName, const FileLoc& loc, size_t maxVoxels,
+                         MemoryBudget* budget) {
+    if (voxels > double(maxVoxels))
+        throw SceneError(loc,
+                         filename + ": the density grid spans " + std::to_string(uint64_t(voxels)) +
+                             " voxels; kiln resamples volumes densely and allows at most " +
+                             std::to_string(maxVoxels),
+                         densityName);
+    size_t n = size_t(voxels);
+    if (budget) {
+        try {
+            budget->Charge(
+                double(n) * sizeof(Float) * (withTemperature ? 2 : 1),
+                "the dense grids of \"" + filename + "\" (" + std::to_string(n) + " voxels)");
+        } catch (const MemoryLimitError& e) {
+            throw SceneError(loc, e.what(), filename);
+        }
+    }
+    return n;
 }
 
 }  // namespace kiln

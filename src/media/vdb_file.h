@@ -18,11 +18,10 @@ class MemoryBudget;
 struct VDBVolume {
     SampledGrid<Float> density;
     SampledGrid<Float> temperature;  // empty if the file has no such grid
-    // The medium's box in index space (voxel centres at integer coordinates): for .vdb files
-    // the density grid's active voxels, reaching half a voxel beyond them; for .nvdb files the
-    // grid's stated world box. The box the dense samples span (half a voxel beyond the
-    // outermost; the same box for .vdb files). The grid's index-to-world transform: world is
-    // the medium's space.
+    // The medium's box in index space (voxel values at integer coordinates): for .nvdb files
+    // the grid's stated world box, for .vdb files the box their NanoVDB conversion states, the
+    // active voxels' [min, max + 1]. The box the dense samples span (half a voxel beyond the
+    // outermost). The grid's index-to-world transform: world is the medium's space.
     Bounds3f indexBounds, sampleBounds;
     Transform mediumFromIndex;
 };
@@ -37,5 +36,12 @@ struct VDBVolume {
 VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityName,
                         const std::string& temperatureName, const FileLoc& loc,
                         size_t maxVoxels = size_t(1) << 30, MemoryBudget* budget = nullptr);
+
+// For the readers: refuses a dense volume of more than maxVoxels voxels (SceneError at loc,
+// naming densityName) and charges its grids (two with a temperature) to budget, if given (a
+// SceneError naming filename beyond it). Returns the voxel count.
+size_t ChargeDenseVolume(double voxels, bool withTemperature, const std::string& filename,
+                         const std::string& densityName, const FileLoc& loc, size_t maxVoxels,
+                         MemoryBudget* budget);
 
 }  // namespace kiln
