@@ -78,8 +78,8 @@ class Material
 
     // Creates a material of pbrt-v4 type `type` ("diffuse", "conductor", "dielectric",
     // "thindielectric", "coateddiffuse", "coatedconductor", "mix", "interface", "hair",
-    // "diffusetransmission", "measured", "subsurface"; "" and "none" give interface), and kiln's polarising
-    // filters "polarizer" ("float angle", degrees) and "retarder" ("float angle", "float
+    // "diffusetransmission", "measured", "subsurface"; "" and "none" give interface), and kiln's
+    // polarising filters "polarizer" ("float angle", degrees) and "retarder" ("float angle", "float
     // retardance" in degrees, default 90: a quarter-wave plate), see
     // bxdfs/polarizing_filter_bxdf.h. Other pbrt-v4 types are replaced by diffuse with a warning at
     // loc; unknown types throw SceneError. namedMaterials resolves the components of "mix".
