@@ -14,6 +14,7 @@ Exact where the emitter is a diffuse surface (emissivity 1 - rho, the same in ev
 or a medium; a hot conductor's emissivity depends on angle and wavelength, which no pbrt-v4
 emitter can express: that scene is compared in time only.
 """
+import math
 import os
 import random
 from typing import Callable
@@ -134,4 +135,52 @@ def hot_metal_glass(out: str, size: Size, photometric: Callable[[float], float])
                      note="pbrt-v4 cannot express Kirchhoff emission of a conductor: time only")
 
 
-GENERATORS = [hot_glass, hot_smoke, hot_emitters, hot_metal_glass]
+def hot_flame(out: str, size: Size, photometric: Callable[[float], float]) -> PairScene:
+    """A small flame (a 24^3 absorbing, emitting grid, 1800 K, 10 cm across) the
+    only light of a room with a table and a faint sky through a window: the walls and table
+    are lit by a small hot medium, which tracking finds only by chance (kiln's "mediumemission"
+    "sampled" samples it as a light source). pbrt-v4: blackbody Le times Lescale
+    photometric(T) in every voxel."""
+    folder = os.path.join(out, "hot-flame")
+    n = 24 if size.scale >= 1 else 8
+    T = 1800
+    common = (header(size, "0 1.3 -3.8  0 0.9 0  0 1 0", 50, "volpath", 8, '"float iso" 400')
+              + 'LightSource "infinite" "rgb L" [0.0002 0.0002 0.0003]\n'
+              'Material "diffuse" "rgb reflectance" [0.6 0.55 0.5]\n'
+              # floor, back wall, left wall, ceiling (the camera's side and the right are open)
+              'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
+              '    "point3 P" [-3 0 -4  3 0 -4  3 0 3  -3 0 3]\n'
+              'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
+              '    "point3 P" [-3 0 3  3 0 3  3 3 3  -3 3 3]\n'
+              'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
+              '    "point3 P" [-3 0 -4  -3 0 3  -3 3 3  -3 3 -4]\n'
+              'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
+              '    "point3 P" [-3 3 -4  -3 3 3  3 3 3  3 3 -4]\n'
+              'Material "diffuse" "rgb reflectance" [0.4 0.25 0.15]\n'
+              + box(-0.8, 0.0, -0.5, 0.8, 0.6, 0.5))
+    # A teardrop of density above the table, zero on the grid's faces
+    d = []
+    for k in range(n):
+        for j in range(n):
+            for i in range(n):
+                x, y, z = (i + 0.5) / n - 0.5, (j + 0.5) / n, (k + 0.5) / n - 0.5
+                r = 0.35 * math.sin(math.pi * min(y, 1.0)) ** 0.8 * (1 - 0.5 * y)
+                v = 0.0 if 0 in (i, j, k) or n - 1 in (i, j, k) else \
+                    max(0.0, 1 - (x * x + z * z) / max(r * r, 1e-6))
+                d.append(round(v, 4))
+    lo, hi = (-0.05, 0.62, -0.05), (0.05, 0.82, 0.05)
+    grid = ('"string type" "uniformgrid" "rgb sigma_a" [60 60 60] "rgb sigma_s" [0 0 0] '
+            f'"integer nx" {n} "integer ny" {n} "integer nz" {n}\n'
+            f'    "point3 p0" [{fmt(lo)}] "point3 p1" [{fmt(hi)}]\n'
+            f'    "float density" [{fmt(d)}]\n')
+    kiln = common + f'MakeNamedMedium "flame" {grid}    "float temperature" {T}\n'
+    pbrt = (common + f'MakeNamedMedium "flame" {grid}    "blackbody Le" {T}\n'
+            f'    "float Lescale" [{" ".join([f"{photometric(T):.6g}"] * len(d))}]\n')
+    box_ = ('AttributeBegin MediumInterface "flame" "" Material "interface"\n'
+            + box(*lo, *hi) + 'AttributeEnd\n')
+    return PairScene("hot-flame", f"a small flame lighting a room ({n}^3 grid, 1800 K)",
+                     write(folder, "kiln.pbrt", kiln + box_),
+                     write(folder, "pbrt.pbrt", pbrt + box_), size.spp, size.ref_spp)
+
+
+GENERATORS = [hot_glass, hot_smoke, hot_flame, hot_emitters, hot_metal_glass]

@@ -101,6 +101,9 @@ std::string UsageText() {
            "  --emitter-sampling S  points on a hot shape whose emission varies over it: in\n"
            "                        proportion to power (default) or by the shape's own\n"
            "                        sampling (shape)\n"
+           "  --medium-emission M   emissive media: sampled as light sources by power\n"
+           "                        (sampled, default) or found by tracking alone (tracked,\n"
+           "                        as pbrt-v4)\n"
            "  --strategy S          direct light by mis (default), light or bsdf sampling\n"
            "  --wavelengths N       wavelengths per path: 4 (hero, default) or 1\n"
            "  --view NAME           display view for PNG/JPEG/TIFF outputs: Standard, Filmic,\n"
@@ -158,6 +161,7 @@ const char* const kOptions[] = {"--help",
                                 "--polarization",
                                 "--generic",
                                 "--emitter-sampling",
+                                "--medium-emission",
                                 "--strategy",
                                 "--wavelengths",
                                 "--view",
@@ -337,6 +341,10 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
             o.emitterSampling = value();
             if (*o.emitterSampling != "power" && *o.emitterSampling != "shape")
                 throw std::invalid_argument("--emitter-sampling expects power or shape");
+        } else if (a == "--medium-emission") {
+            o.mediumEmission = value();
+            if (*o.mediumEmission != "sampled" && *o.mediumEmission != "tracked")
+                throw std::invalid_argument("--medium-emission expects sampled or tracked");
         } else if (a == "--strategy") {
             o.strategy = value();
             if (*o.strategy != "mis" && *o.strategy != "light" && *o.strategy != "bsdf")

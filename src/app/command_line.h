@@ -26,6 +26,7 @@ struct CommandLineOptions {
     std::optional<std::string> lightSampler;     // bvh | power | uniform | area
     std::optional<std::string> strategy;         // mis | light | bsdf
     std::optional<std::string> emitterSampling;  // power | shape
+    std::optional<std::string> mediumEmission;   // sampled | tracked
     // --generic footprints,aovs: run those generic code paths (measuring specialisation)
     bool genericFootprints = false, genericAOVs = false, genericVolumes = false;
     std::optional<int> wavelengths;           // 1 | 4

@@ -130,6 +130,8 @@ RenderOptions RenderOptionsFor(const CommandLineOptions& options, std::optional<
     if (options.strategy) renderOptions.strategy = ParseLightStrategy(*options.strategy);
     if (options.emitterSampling)
         renderOptions.emitterPowerSampling = ParseEmitterPowerSampling(*options.emitterSampling);
+    if (options.mediumEmission)
+        renderOptions.mediumEmissionSampling = ParseMediumEmissionSampling(*options.mediumEmission);
     if (options.wavelengths) renderOptions.singleWavelength = *options.wavelengths == 1;
     return renderOptions;
 }

@@ -36,6 +36,8 @@ class CloudMedium {
     MediumEmission& Emission() { return thermal; }
     MediumProperties SamplePoint(Point3f p, const SampledWavelengths& lambda) const;
     MajorantIterator SampleRay(const Ray& ray, Float tMax, const SampledWavelengths& lambda) const;
+    // The render-space box holding the medium (nothing is outside it).
+    Bounds3f RenderBounds() const { return renderFromMedium(bounds); }
 
     // The density in [0, 1] at a point of the medium's space.
     Float Density(Point3f p) const;

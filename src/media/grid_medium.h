@@ -44,6 +44,8 @@ class GridMedium {
     MediumEmission& Emission() { return emission; }
     MediumProperties SamplePoint(Point3f p, const SampledWavelengths& lambda) const;
     MajorantIterator SampleRay(const Ray& ray, Float tMax, const SampledWavelengths& lambda) const;
+    // The render-space box holding the medium (nothing is outside it).
+    Bounds3f RenderBounds() const { return renderFromMedium(bounds); }
 
   private:
     // pMedium's place in the unit cube of box

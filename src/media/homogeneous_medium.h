@@ -1,6 +1,8 @@
 // "homogeneous" (pbrt-v4's HomogeneousMedium): the same coefficients everywhere.
 #pragma once
 
+#include <optional>
+
 #include "base/object_arena.h"
 #include "core/parser/diagnostics.h"
 #include "media/majorant_grid.h"
@@ -34,6 +36,8 @@ class HomogeneousMedium {
     MajorantIterator SampleRay(const Ray&, Float tMax, const SampledWavelengths& lambda) const {
         return MajorantIterator(0, tMax, (sigma_a.Sample(lambda) + sigma_s.Sample(lambda)) * scale);
     }
+    // Everywhere: where it is depends on the shapes bounding it.
+    std::optional<Bounds3f> RenderBounds() const { return std::nullopt; }
 
   private:
     Spectrum sigma_a, sigma_s;

@@ -52,6 +52,17 @@ class Medium : public ClosedSet<HomogeneousMedium*, GridMedium*, RGBGridMedium*,
     MajorantIterator SampleRay(const Ray& ray, Float tMax, const SampledWavelengths& lambda) const {
         return Dispatch([&](auto m) { return m->SampleRay(ray, tMax, lambda); });
     }
+    // The majorant delta tracking uses at render-space point p (0 outside the medium's box):
+    // that of the majorant segment holding p.
+    SampledSpectrum MajorantAt(Point3f p, const SampledWavelengths& lambda) const {
+        std::optional<RayMajorantSegment> seg =
+            SampleRay(Ray(p, Vector3f(1, 0, 0)), kMajorantProbe, lambda).Next();
+        return seg ? seg->sigma_maj : SampledSpectrum(0.f);
+    }
+    // A render-space box outside which the medium has no extent (nullopt: unbounded).
+    std::optional<Bounds3f> RenderBounds() const {
+        return Dispatch([](auto m) -> std::optional<Bounds3f> { return m->RenderBounds(); });
+    }
 
     // Delta-tracking distance sampling along ray up to tMax (pbrt-v4's SampleT_maj): draws
     // tentative collisions with density sigma_maj[0] exp(-sigma_maj[0] t) per majorant
@@ -100,6 +111,8 @@ class Medium : public ClosedSet<HomogeneousMedium*, GridMedium*, RGBGridMedium*,
     }
 
     static constexpr int kMaxCollisions = 1 << 20;
+    // The length of the ray MajorantAt looks along: short against any majorant voxel.
+    static constexpr Float kMajorantProbe = 1e-6f;
 
   private:
     // exp(-dt sigma) per wavelength; an infinite segment with sigma 0 transmits everything.

@@ -29,6 +29,8 @@ class RGBGridMedium {
     MediumEmission& Emission() { return thermal; }
     MediumProperties SamplePoint(Point3f p, const SampledWavelengths& lambda) const;
     MajorantIterator SampleRay(const Ray& ray, Float tMax, const SampledWavelengths& lambda) const;
+    // The render-space box holding the medium (nothing is outside it).
+    Bounds3f RenderBounds() const { return renderFromMedium(bounds); }
 
   private:
     Bounds3f bounds;

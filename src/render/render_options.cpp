@@ -23,6 +23,12 @@ std::optional<bool> ParseEmitterPowerSampling(std::string_view name) {
     return std::nullopt;
 }
 
+std::optional<bool> ParseMediumEmissionSampling(std::string_view name) {
+    if (name == "sampled") return true;
+    if (name == "tracked") return false;
+    return std::nullopt;
+}
+
 std::string RenderOptionsKey(const RenderOptions& o) {
     auto optional = [](const auto& v, auto text) { return v ? std::string(text(*v)) : ""; };
     std::string key;
@@ -40,6 +46,8 @@ std::string RenderOptionsKey(const RenderOptions& o) {
            });
     key += ";emittersampling=" +
            optional(o.emitterPowerSampling, [](bool b) { return b ? "power" : "shape"; });
+    key += ";mediumemission=" +
+           optional(o.mediumEmissionSampling, [](bool b) { return b ? "sampled" : "tracked"; });
     key += ";wavelengths=" + optional(o.singleWavelength, [](bool b) { return b ? "1" : "4"; });
     return key;
 }

@@ -27,6 +27,8 @@ std::optional<LightStrategy> ParseLightStrategy(std::string_view name);
 std::optional<LightSelection> ParseLightSelection(std::string_view name);
 // "power" (true: points on hot shapes by power) or "shape" (false: the shape's own sampling).
 std::optional<bool> ParseEmitterPowerSampling(std::string_view name);
+// "sampled" (true: emissive media are light sources sampled by power) or "tracked" (false).
+std::optional<bool> ParseMediumEmissionSampling(std::string_view name);
 
 struct RenderOptions {
     std::optional<int> samplesPerPixel;
@@ -57,18 +59,19 @@ struct RenderOptions {
     // default the machine's memory.
     std::optional<double> memoryLimitBytes;
     // The integrator's choices (Integrator "lightsampler", "strategy", "emittersampling",
-    // "wavelengths"), for comparisons
+    // "mediumemission", "wavelengths"), for comparisons
     std::optional<LightSelection> lightSelection;
     std::optional<LightStrategy> strategy;
     std::optional<bool> emitterPowerSampling;
+    std::optional<bool> mediumEmissionSampling;
     std::optional<bool> singleWavelength;  // one wavelength per path rather than four
 };
 
 // The options that change what a render's pixels are, as canonical text (unset ones empty: the
 // scene file decides, and it is identified apart): emission model, coated MIS weights, generic
-// volumetric integrator, Stokes layers, light selection, strategy, emitter sampling,
-// wavelengths per path. Two renders with different keys must not be merged or resumed from one
-// another (app/merge.h, app/checkpoint.h).
+// volumetric integrator, Stokes layers, light selection, strategy, emitter sampling, medium
+// emission sampling, wavelengths per path. Two renders with different keys must not be merged or
+// resumed from one another (app/merge.h, app/checkpoint.h).
 std::string RenderOptionsKey(const RenderOptions& options);
 
 }  // namespace kiln

@@ -26,6 +26,7 @@
 #include "materials/bxdfs/bsdf.h"
 #include "materials/material.h"
 #include "media/medium.h"
+#include "media/medium_emission_sampler.h"
 #include "render/render_options.h"
 #include "render/scene_description.h"
 #include "thermal/emission_model.h"
@@ -53,6 +54,10 @@ struct PathIntegratorSettings {
     // sampled in proportion to power ("power", default) or by the shape's own sampling
     // ("shape", for comparisons).
     bool emitterPowerSampling = true;
+    // kiln "string mediumemission": emissive media are sampled as light sources by emitted
+    // power in volpath ("sampled", default) or found by tracking alone ("tracked", pbrt-v4's
+    // way, for comparisons)
+    bool mediumEmissionSampling = true;
 };
 
 // What a scene uses and what kiln chose for it at load; every choice selects code (kiln
@@ -90,6 +95,10 @@ struct SceneFeatures {
     // (media cost nothing when absent); --generic volpath runs VolPathIntegrator whatever the scene
     // says
     int media = 0, emissiveMedia = 0, thermalMedia = 0;
+    // Emissive media volpath samples as light sources (MediumEmissionSampler), and the time
+    // estimating their emission took
+    int sampledMedia = 0;
+    double mediumSamplerSeconds = 0;
     bool volumetric = false, genericVolumes = false;
     bool unnormalizedLightSamples = false;  // Light::HasUnnormalizedSamples (pbrt-v4 compatibility)
     // Bidirectional path tracing (BDPTIntegrator) for "bdpt", "mlt" and "sppm": unless the
@@ -216,6 +225,9 @@ class Scene {
     // Participating media, identified by index (MediumInterface); the camera's (-1: none)
     std::vector<Medium> media;
     int cameraMedium = -1;
+    // Points of emissive media by emitted power for volpath's next-event estimation (nullptr:
+    // none, or Integrator "mediumemission" "tracked")
+    std::unique_ptr<MediumEmissionSampler> mediumEmission;
     PathIntegratorSettings integrator;
     bool disablePixelJitter = false;
     // Camera "float polarizer" (kiln): a linear polariser in front of the film, its

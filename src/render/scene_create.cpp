@@ -2,6 +2,7 @@
 // CreateAggregate): camera and film, textures, materials, shapes with their heat, lights (with
 // a shape-to-lights map, lights identified by index), aggregate, light sampler, features.
 #include <algorithm>
+#include <chrono>
 #include <map>
 #include <new>
 #include <set>
@@ -73,6 +74,12 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOpti
         throw SceneError(e.parameters.Loc("emittersampling"),
                          "unknown emitter sampling (expected \"power\" or \"shape\")", es);
     s.emitterPowerSampling = options.emitterPowerSampling.value_or(*byPower);
+    std::string me = e.parameters.GetOneString("mediumemission", "sampled");
+    std::optional<bool> sampled = ParseMediumEmissionSampling(me);
+    if (!sampled)
+        throw SceneError(e.parameters.Loc("mediumemission"),
+                         "unknown medium emission (expected \"sampled\" or \"tracked\")", me);
+    s.mediumEmissionSampling = options.mediumEmissionSampling.value_or(*sampled);
     std::string ls = e.parameters.GetOneString("lightsampler", "bvh");
     std::optional<LightSelection> sel = ParseLightSelection(ls);
     if (!sel)
@@ -497,6 +504,37 @@ void CreateLightSampler(Scene& scene) {
     }
 }
 
+// The emissive media volpath samples as light sources: each within its own box, or the box of
+// the shapes it fills or surrounds (outside shapes only, a medium may reach further: emission
+// there is still found by tracking), or both intersected. Media no box bounds are not
+// sampled.
+void CreateMediumEmissionSampler(Scene& scene, const std::vector<SceneShapes>& shapes) {
+    if (!scene.integrator.mediumEmissionSampling) return;
+    std::vector<MediumEmissionSampler::Region> regions;
+    for (int m = 0; m < int(scene.media.size()); ++m) {
+        if (!scene.media[size_t(m)].IsEmissive()) continue;
+        Bounds3f touching;
+        for (const SceneShapes& s : shapes)
+            if (s.media.inside == m || s.media.outside == m)
+                for (const Shape& shape : s.shapes) touching = Union(touching, shape.Bounds());
+        std::optional<Bounds3f> own = scene.media[size_t(m)].RenderBounds();
+        Bounds3f box = touching;
+        if (own && touching.IsEmpty())
+            box = *own;
+        else if (own) {
+            box.pMin = Max(own->pMin, touching.pMin);
+            box.pMax = Min(own->pMax, touching.pMax);
+        }
+        if (!box.IsEmpty()) regions.push_back({m, box});
+    }
+    if (regions.empty()) return;
+    auto start = std::chrono::steady_clock::now();
+    auto sampler = std::make_unique<MediumEmissionSampler>(scene.media, regions);
+    scene.features.mediumSamplerSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!sampler->Empty()) scene.mediumEmission = std::move(sampler);
+}
+
 // What the scene uses and what was chosen for it
 SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
                              const std::vector<SceneShapes>& shapes,
@@ -617,6 +655,8 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
     CreateLightSampler(scene);
     scene.varyingThermalLights = emitters.VaryingLights();
     scene.features = DecideFeatures(scene, desc, shapes, materials, emitters, options);
+    if (scene.features.volumetric) CreateMediumEmissionSampler(scene, shapes);
+    scene.features.sampledMedia = scene.mediumEmission ? scene.mediumEmission->Media() : 0;
     DecideBidirectional(scene, desc, diag);
     if (!scene.integrator.volumetric && !scene.media.empty())
         diag.Warn(desc.integrator.loc,
@@ -655,6 +695,9 @@ void Scene::SetAnimation(const TemperatureAnimation& next) {
     tbb::parallel_for(size_t(0), varyingThermalLights.size(),
                       [&](size_t i) { varyingThermalLights[i]->EstimatePower(bsdfAt); });
     CreateLightSampler(*this);
+    // Media whose temperatures follow the animation: their emission estimated again
+    if (mediumEmission)
+        mediumEmission = std::make_unique<MediumEmissionSampler>(media, mediumEmission->Regions());
 }
 
 std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const RenderOptions& options,

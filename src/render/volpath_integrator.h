@@ -8,7 +8,12 @@
 // (unidirectional) and r_l (light sampling) combine the wavelengths and the two strategies in
 // one spectral MIS estimate (Miller, Georgiev & Jarosz 2019). Shadow rays pass through
 // interface surfaces and estimate transmittance by ratio tracking. Media emit at every
-// tentative collision (sigma_a Le, or thermal emission: medium_emission.h). Surfaces are
+// tentative collision (sigma_a Le, or thermal emission: medium_emission.h). Where the scene has
+// a MediumEmissionSampler (emissive media, Integrator "string mediumemission" "sampled", the
+// default), every vertex that samples a light also samples a point of a hot medium by emitted
+// power (SampleMediumLd), and emission met at a tentative collision is weighted against that
+// strategy by the same spectral MIS (kiln; pbrt-v4 finds medium emission by tracking alone,
+// as "tracked" does). Surfaces are
 // handled as in PathIntegrator: emission computed from the BSDF at the hit, and thin sheets
 // crossed by shadow rays (a path straight through one keeps its MIS state and depth, as at an
 // interface). A path transmitted through a "subsurface" boundary continues from an exit point
@@ -24,6 +29,7 @@
 #include "core/camera/sampler.h"
 #include "materials/bxdfs/hg_phase_function.h"
 #include "materials/subsurface_material.h"
+#include "media/medium_emission_sampler.h"
 #include "render/radiance.h"
 #include "render/scene.h"
 #include "render/thin_sheets.h"
@@ -38,7 +44,7 @@ class VolPathIntegrator {
     using Throughput = typename Radiance::Throughput;
 
     VolPathIntegrator(const Scene& scene, PathIntegratorSettings settings)
-        : scene(scene), settings(settings) {}
+        : scene(scene), settings(settings), mediumEmission(scene.mediumEmission.get()) {}
 
     // As PathIntegrator::Li; the camera ray starts in the camera's medium.
     Spectrum Li(Ray ray, SampledWavelengths& lambda, Sampler& sampler,
@@ -69,15 +75,22 @@ class VolPathIntegrator {
                             terminated = true;
                             return false;
                         }
-                        // Emission at the tentative collision
+                        // Emission at the tentative collision, weighted against sampling
+                        // the medium's emission from the previous vertex
                         if (depth < maxDepth && mp.emission) {
                             Float pdf = sigma_maj[0] * T_maj[0];
                             SampledSpectrum r_e = r_u * sigma_maj * T_maj / pdf;
-                            if (r_e)
-                                L +=
-                                    Radiance::Apply(beta * (T_maj / pdf),
-                                                    Radiance::Unpolarized(
-                                                        mp.emission / WavelengthMean(r_e, lambda)));
+                            Float p_l = depth == 0 || specularBounce
+                                            ? 0
+                                            : MediumEmissionPDF(medium, p, prevContext.p);
+                            if (p_l > 0 && settings.strategy == LightStrategy::LightOnly)
+                                r_e = SampledSpectrum(0.f);
+                            if (r_e) {
+                                SampledSpectrum r = r_e + r_l * T_maj * (p_l / pdf);
+                                L += Radiance::Apply(
+                                    beta * (T_maj / pdf),
+                                    Radiance::Unpolarized(mp.emission / WavelengthMean(r, lambda)));
+                            }
                         }
                         // Absorption, real scattering or a null collision
                         Float pAbsorb = mp.sigma_a[0] / sigma_maj[0];
@@ -99,9 +112,14 @@ class VolPathIntegrator {
                             // Direct light at the scattering point, then a new direction
                             Vector3f wo = -ray.d;
                             HGPhaseFunction phase(mp.g);
-                            if (settings.strategy != LightStrategy::BSDFOnly)
-                                L += SampleLd(Interaction(p, Normal3f(), Point2f(), wo, ray.time),
-                                              nullptr, &phase, medium, lambda, sampler, beta, r_u);
+                            if (settings.strategy != LightStrategy::BSDFOnly) {
+                                Interaction intr(p, Normal3f(), Point2f(), wo, ray.time);
+                                L += SampleLd(intr, nullptr, &phase, medium, lambda, sampler, beta,
+                                              r_u);
+                                if (depth < maxDepth)
+                                    L += SampleMediumLd(intr, nullptr, &phase, medium, lambda,
+                                                        sampler, beta, r_u);
+                            }
                             std::optional<PhaseFunctionSample> ps =
                                 phase.Sample_p(wo, sampler.Get2D());
                             if (!ps || ps->pdf == 0) {
@@ -186,8 +204,11 @@ class VolPathIntegrator {
             if (settings.regularize && anyNonSpecularBounces) bsdf.Regularize();
 
             // Direct lighting by light sampling
-            if (IsNonSpecular(bsdf.Flags()) && settings.strategy != LightStrategy::BSDFOnly)
+            if (IsNonSpecular(bsdf.Flags()) && settings.strategy != LightStrategy::BSDFOnly) {
                 L += SampleLd(isect, &bsdf, nullptr, medium, lambda, sampler, beta, r_u);
+                if (depth < maxDepth)
+                    L += SampleMediumLd(isect, &bsdf, nullptr, medium, lambda, sampler, beta, r_u);
+            }
             prevContext = LightSampleContext(isect);
 
             // Continue by sampling the BSDF (a sheet's reflection is sampled already)
@@ -221,8 +242,12 @@ class VolPathIntegrator {
                             BxDF(NormalizedFresnelBxDF(material->Parameters().eta)), pi.n);
                     prevContext = LightSampleContext(pi);
                     anyNonSpecularBounces = true;
-                    if (settings.strategy != LightStrategy::BSDFOnly)
+                    if (settings.strategy != LightStrategy::BSDFOnly) {
                         L += SampleLd(pi, &Sw, nullptr, medium, lambda, sampler, beta, r_u);
+                        if (depth < maxDepth)
+                            L += SampleMediumLd(pi, &Sw, nullptr, medium, lambda, sampler, beta,
+                                                r_u);
+                    }
                     Float u = sampler.Get1D();
                     std::optional<BSDFSampleOf<Throughput>> es =
                         Sw.Sample_f<Throughput>(pi.wo, u, sampler.Get2D());
@@ -355,10 +380,38 @@ class VolPathIntegrator {
         if (!f_hat) return {};
 
         // Transmittance to the light, through media and thin sheets
-        Ray lightRay = intr.SpawnRayTo(ls->pLight);
+        std::optional<Transmission> tr = Transmit(intr, surface, medium, ls->pLight, lambda);
+        if (!tr) return {};
+        SampledSpectrum T_ray = tr->T_ray, r_l = tr->r_l, r_u = tr->r_u;
+        const Throughput& T_sheets = tr->T_sheets;
+
+        Spectrum Li = light.DeferredL<Spectrum>(*ls, lambda, *scene.job->shader);
+        if (!Li) return {};
+        r_l *= r_p * p_l;
+        r_u *= r_p * scatterPDF;
+        Spectrum contribution = Radiance::Apply(beta * f_hat * T_sheets, Li) * T_ray;
+        if (IsDeltaLight(light.Type()) || settings.strategy == LightStrategy::LightOnly)
+            return contribution / WavelengthMean(r_l, lambda);
+        return contribution / WavelengthMean(r_l + r_u, lambda);
+    }
+
+    // The light that reaches `to` from intr along a shadow ray, through media (ratio tracking,
+    // with the rescaled probabilities r_l and r_u of its null collisions) and thin sheets
+    // (T_sheets), across interface surfaces; `medium` is the medium the ray ends in. nullopt
+    // if something opaque is in the way or the estimate is 0.
+    struct Transmission {
+        SampledSpectrum T_ray, r_l, r_u;
+        Throughput T_sheets;
+        int medium;
+    };
+    std::optional<Transmission> Transmit(const Interaction& intr, const SurfaceInteraction* surface,
+                                         int medium, const Interaction& to,
+                                         const SampledWavelengths& lambda) const {
+        Ray lightRay = intr.SpawnRayTo(to);
         if (surface) medium = surface->MediumAfter(lightRay.d, medium);
-        SampledSpectrum T_ray(1.f), r_l(1.f), r_u(1.f);
-        Throughput T_sheets = Radiance::One();
+        Transmission tr{SampledSpectrum(1.f), SampledSpectrum(1.f), SampledSpectrum(1.f),
+                        Radiance::One(), medium};
+        SampledSpectrum &T_ray = tr.T_ray, &r_l = tr.r_l, &r_u = tr.r_u;
         RNG rng(Hash(lightRay.o), Hash(lightRay.d));
         for (int crossings = 0;; ++crossings) {
             std::optional<ShapeIntersection> si =
@@ -366,12 +419,12 @@ class VolPathIntegrator {
             if (si && si->intr.material && !si->intr.material->IsInterface()) {
                 std::optional<Throughput> T =
                     SheetTransmittance<Throughput>(scene, si->intr, lambda);
-                if (!T) return {};
-                T_sheets = T_sheets * *T;
+                if (!T) return std::nullopt;
+                tr.T_sheets = tr.T_sheets * *T;
             }
-            if (medium >= 0) {
+            if (tr.medium >= 0) {
                 Float tMax = si ? si->tHit : 1 - ShadowEpsilon;
-                SampledSpectrum T_maj = scene.media[size_t(medium)].SampleT_maj(
+                SampledSpectrum T_maj = scene.media[size_t(tr.medium)].SampleT_maj(
                     lightRay, tMax, rng.UniformFloat(), rng, lambda,
                     [&](Point3f, const MediumProperties& mp, const SampledSpectrum& sigma_maj,
                         const SampledSpectrum& T_maj) {
@@ -390,25 +443,73 @@ class VolPathIntegrator {
                         }
                         return bool(T_ray);
                     });
-                if (T_maj[0] == 0) return {};
+                if (T_maj[0] == 0) return std::nullopt;
                 T_ray *= T_maj / T_maj[0];
                 r_l *= T_maj / T_maj[0];
                 r_u *= T_maj / T_maj[0];
             }
-            if (!T_ray) return {};
+            if (!T_ray) return std::nullopt;
             if (!si) break;
             // Past an interface surface; a path through thousands of them is treated as blocked
-            if (crossings == kMaxInterfaceCrossings) return {};
-            medium = si->intr.MediumAfter(lightRay.d, medium);
-            lightRay = si->intr.SpawnRayTo(ls->pLight);
+            if (crossings == kMaxInterfaceCrossings) return std::nullopt;
+            tr.medium = si->intr.MediumAfter(lightRay.d, tr.medium);
+            lightRay = si->intr.SpawnRayTo(to);
         }
+        return tr;
+    }
 
-        Spectrum Li = light.DeferredL<Spectrum>(*ls, lambda, *scene.job->shader);
-        if (!Li) return {};
-        r_l *= r_p * p_l;
-        r_u *= r_p * scatterPDF;
-        Spectrum contribution = Radiance::Apply(beta * f_hat * T_sheets, Li) * T_ray;
-        if (IsDeltaLight(light.Type()) || settings.strategy == LightStrategy::LightOnly)
+    // The density per unit solid angle and distance (dV / t^2) with which SampleMediumLd at
+    // `from` would draw point p of `medium` (0 without medium sampling).
+    Float MediumEmissionPDF(int medium, Point3f p, Point3f from) const {
+        if (!mediumEmission || medium < 0 || settings.strategy == LightStrategy::BSDFOnly) return 0;
+        Float pdf = mediumEmission->PDF(medium, p);
+        return pdf > 0 ? pdf * DistanceSquared(from, p) : 0;
+    }
+
+    // Next-event estimation of medium emission: a point of a hot medium drawn by emitted
+    // power (MediumEmissionSampler), its emission sigma_a Le through the shadow ray's
+    // transmittance, weighted by spectral MIS against meeting it at a tentative collision of
+    // the path (whose density there is the scattering pdf times sigma_maj at the point, in
+    // the same measure). Nothing if the shadow ray ends in another medium.
+    Spectrum SampleMediumLd(const Interaction& intr, const BSDF* bsdf, const HGPhaseFunction* phase,
+                            int medium, const SampledWavelengths& lambda, Sampler& sampler,
+                            const Throughput& beta, const SampledSpectrum& r_p) const {
+        if (!mediumEmission) return {};
+        Float u = sampler.Get1D();
+        Point2f u2 = sampler.Get2D();
+        Float u1 = sampler.Get1D();
+        std::optional<MediumEmissionSampler::PointSample> ps =
+            mediumEmission->Sample(u, Point3f(u2.x, u2.y, u1));
+        if (!ps) return {};
+        Vector3f toPoint = ps->p - intr.p;
+        Float dist2 = LengthSquared(toPoint);
+        if (!(dist2 > 0)) return {};
+        Vector3f wo = intr.wo, wi = Normalize(toPoint);
+        const auto* surface = bsdf ? static_cast<const SurfaceInteraction*>(&intr) : nullptr;
+        Throughput f_hat;
+        Float scatterPDF;
+        if (bsdf) {
+            Float cosTheta = AbsDot(wi, surface->shading.n);
+            if (cosTheta == 0) return {};
+            f_hat = bsdf->f<Throughput>(wo, wi) * cosTheta;
+            scatterPDF = bsdf->PDF(wo, wi);
+        } else {
+            f_hat = Radiance::Depolarizing(SampledSpectrum(phase->p(wo, wi)));
+            scatterPDF = phase->PDF(wo, wi);
+        }
+        if (!f_hat) return {};
+        Interaction target(ps->p, Normal3f(), Point2f(), Vector3f(), intr.time);
+        std::optional<Transmission> tr = Transmit(intr, surface, medium, target, lambda);
+        if (!tr || tr->medium != ps->medium) return {};
+        const Medium& emitter = scene.media[size_t(ps->medium)];
+        MediumProperties mp = emitter.SamplePoint(ps->p, lambda);
+        if (!mp.emission) return {};
+        SampledSpectrum r_l = tr->r_l * r_p * (ps->pdf * dist2);
+        SampledSpectrum r_u = tr->r_u * r_p * scatterPDF * emitter.MajorantAt(ps->p, lambda);
+        Spectrum contribution =
+            Radiance::Apply(beta * f_hat * tr->T_sheets, Radiance::Unpolarized(mp.emission)) *
+            tr->T_ray;
+        if (settings.strategy == LightStrategy::LightOnly)
             return contribution / WavelengthMean(r_l, lambda);
         return contribution / WavelengthMean(r_l + r_u, lambda);
     }
@@ -416,6 +517,8 @@ class VolPathIntegrator {
     static constexpr int kMaxInterfaceCrossings = 1024;
     const Scene& scene;
     PathIntegratorSettings settings;
+    // Points of hot media by emitted power (nullptr: medium emission is found by tracking)
+    const MediumEmissionSampler* mediumEmission;
 };
 
 }  // namespace kiln

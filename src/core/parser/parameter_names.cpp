@@ -121,6 +121,7 @@ constexpr std::string_view kNames[] = {
     "maxdistance",
     "maxnodeprims",
     "maxprims",
+    "mediumemission",
     "mfp",
     "min",
     "msereferenceimage",
