@@ -26,7 +26,7 @@
 #include "materials/bxdfs/bsdf.h"
 #include "materials/material.h"
 #include "media/medium.h"
-#include "media/medium_emission_sampler.h"
+#include "render/medium_emission_sampler.h"
 #include "render/render_options.h"
 #include "render/scene_description.h"
 #include "thermal/emission_model.h"

@@ -504,35 +504,21 @@ void CreateLightSampler(Scene& scene) {
     }
 }
 
-// The emissive media volpath samples as light sources: each within its own box, or the box of
-// the shapes it fills or surrounds (outside shapes only, a medium may reach further: emission
-// there is still found by tracking), or both intersected. Media no box bounds are not
-// sampled.
-void CreateMediumEmissionSampler(Scene& scene, const std::vector<SceneShapes>& shapes) {
+// The emissive media volpath samples as light sources (scene_media.h), from the shapes that
+// bound them
+void CreateMediumEmitters(Scene& scene, const std::vector<SceneShapes>& shapes) {
     if (!scene.integrator.mediumEmissionSampling) return;
-    std::vector<MediumEmissionSampler::Region> regions;
-    for (int m = 0; m < int(scene.media.size()); ++m) {
-        if (!scene.media[size_t(m)].IsEmissive()) continue;
-        Bounds3f touching;
-        for (const SceneShapes& s : shapes)
-            if (s.media.inside == m || s.media.outside == m)
-                for (const Shape& shape : s.shapes) touching = Union(touching, shape.Bounds());
-        std::optional<Bounds3f> own = scene.media[size_t(m)].RenderBounds();
-        Bounds3f box = touching;
-        if (own && touching.IsEmpty())
-            box = *own;
-        else if (own) {
-            box.pMin = Max(own->pMin, touching.pMin);
-            box.pMax = Min(own->pMax, touching.pMax);
-        }
-        if (!box.IsEmpty()) regions.push_back({m, box});
+    std::vector<MediumBoundary> boundaries;
+    for (const SceneShapes& s : shapes) {
+        if (s.media.inside < 0 && s.media.outside < 0) continue;
+        Bounds3f box;
+        for (const Shape& shape : s.shapes) box = Union(box, shape.Bounds());
+        boundaries.push_back({s.media, box, s.heat.material});
     }
-    if (regions.empty()) return;
     auto start = std::chrono::steady_clock::now();
-    auto sampler = std::make_unique<MediumEmissionSampler>(scene.media, regions);
+    scene.mediumEmission = CreateMediumEmissionSampler(scene.media, boundaries);
     scene.features.mediumSamplerSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!sampler->Empty()) scene.mediumEmission = std::move(sampler);
 }
 
 // What the scene uses and what was chosen for it
@@ -655,8 +641,8 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
     CreateLightSampler(scene);
     scene.varyingThermalLights = emitters.VaryingLights();
     scene.features = DecideFeatures(scene, desc, shapes, materials, emitters, options);
-    if (scene.features.volumetric) CreateMediumEmissionSampler(scene, shapes);
-    scene.features.sampledMedia = scene.mediumEmission ? scene.mediumEmission->Media() : 0;
+    if (scene.features.volumetric) CreateMediumEmitters(scene, shapes);
+    scene.features.sampledMedia = scene.mediumEmission ? scene.mediumEmission->Emitters() : 0;
     DecideBidirectional(scene, desc, diag);
     if (!scene.integrator.volumetric && !scene.media.empty())
         diag.Warn(desc.integrator.loc,

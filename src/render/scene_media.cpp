@@ -49,4 +49,35 @@ int MediumIndex(const std::string& name, const MediumIndices& media, const FileL
     return it->second;
 }
 
+std::unique_ptr<MediumEmissionSampler> CreateMediumEmissionSampler(
+    std::span<const Medium> media, std::span<const MediumBoundary> boundaries) {
+    std::vector<MediumEmissionSampler::Region> regions;
+    for (int m = 0; m < int(media.size()); ++m) {
+        if (!media[size_t(m)].IsEmissive()) continue;
+        Bounds3f touching;
+        bool onlyDielectrics = true;
+        for (const MediumBoundary& b : boundaries)
+            if (b.media.inside == m || b.media.outside == m) {
+                touching = Union(touching, b.bounds);
+                onlyDielectrics &= b.material && !b.material->IsInterface() &&
+                                   !b.material->MayPassLightStraightThrough() &&
+                                   b.material->InteriorEta().has_value();
+            }
+        if (onlyDielectrics && !touching.IsEmpty()) continue;
+        std::optional<Bounds3f> own = media[size_t(m)].RenderBounds();
+        Bounds3f box = touching;
+        if (own && touching.IsEmpty()) {
+            box = *own;
+        } else if (own) {
+            box.pMin = Max(own->pMin, touching.pMin);
+            box.pMax = Min(own->pMax, touching.pMax);
+        }
+        if (!box.IsEmpty()) regions.push_back({m, box});
+    }
+    if (regions.empty()) return nullptr;
+    auto sampler = std::make_unique<MediumEmissionSampler>(media, regions);
+    if (sampler->Emitters() == 0) return nullptr;
+    return sampler;
+}
+
 }  // namespace kiln

@@ -5,13 +5,16 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "base/interaction.h"
 #include "materials/material.h"
 #include "media/medium.h"
+#include "render/medium_emission_sampler.h"
 #include "render/scene_description.h"
 #include "textures/texture_parameter_dictionary.h"
 
@@ -37,5 +40,21 @@ inline MediumInterface ShapeMedia(const ShapeSceneEntity& s, const MediumIndices
     return MediumInterface(MediumIndex(s.insideMedium, media, s.loc),
                            MediumIndex(s.outsideMedium, media, s.loc));
 }
+
+// One shape directive's part in bounding media: the media it separates, its render-space box
+// and its material.
+struct MediumBoundary {
+    MediumInterface media;
+    Bounds3f bounds;
+    const Material* material = nullptr;
+};
+
+// The emissive media volpath samples as light sources (nullptr: none): each within its own
+// box, or the box of the shapes it fills or surrounds (outside shapes only, a medium may reach
+// further: emission there is still found by tracking), or both intersected. Not sampled: media
+// no box bounds, and media whose every boundary is a dielectric (hot glass), since shadow rays
+// do not pass dielectrics and volpath does not sample a medium from inside itself.
+std::unique_ptr<MediumEmissionSampler> CreateMediumEmissionSampler(
+    std::span<const Medium> media, std::span<const MediumBoundary> boundaries);
 
 }  // namespace kiln

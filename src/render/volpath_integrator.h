@@ -29,7 +29,7 @@
 #include "core/camera/sampler.h"
 #include "materials/bxdfs/hg_phase_function.h"
 #include "materials/subsurface_material.h"
-#include "media/medium_emission_sampler.h"
+#include "render/medium_emission_sampler.h"
 #include "render/radiance.h"
 #include "render/scene.h"
 #include "render/thin_sheets.h"
@@ -57,6 +57,7 @@ class VolPathIntegrator {
         Float etaScale = 1;
         int sheetCrossings = 0;
         LightSampleContext prevContext;
+        int prevScatterMedium = -1;  // the medium prevContext scattered in (-1: a surface)
         int medium = scene.cameraMedium;
         const int maxDepth = settings.maxDepth;
 
@@ -82,7 +83,8 @@ class VolPathIntegrator {
                             SampledSpectrum r_e = r_u * sigma_maj * T_maj / pdf;
                             Float p_l = depth == 0 || specularBounce
                                             ? 0
-                                            : MediumEmissionPDF(medium, p, prevContext.p);
+                                            : MediumEmissionPDF(medium, p, prevContext.p,
+                                                                prevScatterMedium);
                             if (p_l > 0 && settings.strategy == LightStrategy::LightOnly)
                                 r_e = SampledSpectrum(0.f);
                             if (r_e) {
@@ -129,6 +131,7 @@ class VolPathIntegrator {
                             beta = beta * Radiance::Depolarizing(SampledSpectrum(ps->p / ps->pdf));
                             r_l = r_u / ps->pdf;
                             prevContext = LightSampleContext(Interaction(p, Normal3f(), Point2f()));
+                            prevScatterMedium = medium;
                             scattered = true;
                             ray = Ray(p, ps->wi, ray.time);
                             specularBounce = false;
@@ -210,6 +213,7 @@ class VolPathIntegrator {
                     L += SampleMediumLd(isect, &bsdf, nullptr, medium, lambda, sampler, beta, r_u);
             }
             prevContext = LightSampleContext(isect);
+            prevScatterMedium = -1;
 
             // Continue by sampling the BSDF (a sheet's reflection is sampled already)
             Vector3f wo = isect.wo;
@@ -241,6 +245,7 @@ class VolPathIntegrator {
                     BSDF Sw(pi.shading.n, pi.shading.dpdu,
                             BxDF(NormalizedFresnelBxDF(material->Parameters().eta)), pi.n);
                     prevContext = LightSampleContext(pi);
+                    prevScatterMedium = -1;
                     anyNonSpecularBounces = true;
                     if (settings.strategy != LightStrategy::BSDFOnly) {
                         L += SampleLd(pi, &Sw, nullptr, medium, lambda, sampler, beta, r_u);
@@ -459,10 +464,12 @@ class VolPathIntegrator {
     }
 
     // The density per unit solid angle and distance (dV / t^2) with which SampleMediumLd at
-    // `from` would draw point p of `medium` (0 without medium sampling).
-    Float MediumEmissionPDF(int medium, Point3f p, Point3f from) const {
-        if (!mediumEmission || medium < 0 || settings.strategy == LightStrategy::BSDFOnly) return 0;
-        Float pdf = mediumEmission->PDF(medium, p);
+    // `from` would draw point p of `medium` (0 without medium sampling, and from a point
+    // scattering in that medium itself: fromMedium).
+    Float MediumEmissionPDF(int medium, Point3f p, Point3f from, int fromMedium) const {
+        if (!mediumEmission || settings.strategy == LightStrategy::BSDFOnly || medium == fromMedium)
+            return 0;
+        Float pdf = mediumEmission->PDF(from, mediumEmission->EmitterOf(medium), p);
         return pdf > 0 ? pdf * DistanceSquared(from, p) : 0;
     }
 
@@ -470,7 +477,10 @@ class VolPathIntegrator {
     // power (MediumEmissionSampler), its emission sigma_a Le through the shadow ray's
     // transmittance, weighted by spectral MIS against meeting it at a tentative collision of
     // the path (whose density there is the scattering pdf times sigma_maj at the point, in
-    // the same measure). Nothing if the shadow ray ends in another medium.
+    // the same measure). Nothing if the shadow ray ends in another medium, or from a point
+    // scattering in the chosen medium itself (phase and `medium`): there the path finds the
+    // emission around it by tracking, and a shadow ray into the same medium rarely pays for
+    // itself (a 40^3 plume: 1.4 times the time for no gain).
     Spectrum SampleMediumLd(const Interaction& intr, const BSDF* bsdf, const HGPhaseFunction* phase,
                             int medium, const SampledWavelengths& lambda, Sampler& sampler,
                             const Throughput& beta, const SampledSpectrum& r_p) const {
@@ -479,8 +489,10 @@ class VolPathIntegrator {
         Point2f u2 = sampler.Get2D();
         Float u1 = sampler.Get1D();
         std::optional<MediumEmissionSampler::PointSample> ps =
-            mediumEmission->Sample(u, Point3f(u2.x, u2.y, u1));
+            mediumEmission->Sample(intr.p, u, Point3f(u2.x, u2.y, u1));
         if (!ps) return {};
+        int emitterMedium = mediumEmission->MediumOf(ps->emitter);
+        if (phase && emitterMedium == medium) return {};
         Vector3f toPoint = ps->p - intr.p;
         Float dist2 = LengthSquared(toPoint);
         if (!(dist2 > 0)) return {};
@@ -500,12 +512,12 @@ class VolPathIntegrator {
         if (!f_hat) return {};
         Interaction target(ps->p, Normal3f(), Point2f(), Vector3f(), intr.time);
         std::optional<Transmission> tr = Transmit(intr, surface, medium, target, lambda);
-        if (!tr || tr->medium != ps->medium) return {};
-        const Medium& emitter = scene.media[size_t(ps->medium)];
-        MediumProperties mp = emitter.SamplePoint(ps->p, lambda);
+        if (!tr || tr->medium != emitterMedium) return {};
+        const Medium& m = scene.media[size_t(emitterMedium)];
+        MediumProperties mp = m.SamplePoint(ps->p, lambda);
         if (!mp.emission) return {};
         SampledSpectrum r_l = tr->r_l * r_p * (ps->pdf * dist2);
-        SampledSpectrum r_u = tr->r_u * r_p * scatterPDF * emitter.MajorantAt(ps->p, lambda);
+        SampledSpectrum r_u = tr->r_u * r_p * scatterPDF * m.MajorantAt(ps->p, lambda);
         Spectrum contribution =
             Radiance::Apply(beta * f_hat * tr->T_sheets, Radiance::Unpolarized(mp.emission)) *
             tr->T_ray;
