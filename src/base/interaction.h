@@ -30,6 +30,11 @@ struct Interaction {
     Point2f uv;      // surface parameterisation
     Vector3f wo;     // outgoing direction (towards where the path came from), unit
     Float time = 0;  // shutter time in [0, 1]
+    // How far off the surface spawned rays start, beyond kiln's integer-ULP offset: the
+    // half-extent per axis of the box around p the surface may pass through (pbrt-v4's pError;
+    // only curves set it, to their hit width, since their ray-facing surface turns with every
+    // ray and a ray leaving one would meet the same curve again).
+    Float originError = 0;
 
     Interaction() = default;
     Interaction(Point3f p, Normal3f n, Point2f uv, Vector3f wo = {}, Float time = 0)
@@ -37,7 +42,7 @@ struct Interaction {
     bool IsSurfaceInteraction() const { return n != Normal3f(0, 0, 0); }
 
     Point3f OffsetRayOrigin(Vector3f w) const {
-        return IsSurfaceInteraction() ? kiln::OffsetRayOrigin(p, n, w) : p;
+        return IsSurfaceInteraction() ? kiln::OffsetRayOrigin(p, n, w, originError) : p;
     }
     Ray SpawnRay(Vector3f d) const { return Ray(OffsetRayOrigin(d), d, time); }
     // Ray towards p2 whose direction is (p2 - origin), so t in [0, 1 - ShadowEpsilon] covers

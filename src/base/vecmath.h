@@ -419,8 +419,12 @@ inline Float FloatBitsOffset(Float p, Float nComponent) {
     std::memcpy(&pi, &bits, sizeof(pi));
     return std::abs(p) < origin ? p + floatScale * nComponent : pi;
 }
-inline Point3f OffsetRayOrigin(Point3f p, Normal3f n, Vector3f w) {
+// error: the half-extent, in every axis, of a box around p that the surface may pass through
+// (pbrt-v4's pError where it is more than rounding: a curve's hit width); p first moves
+// Dot(|n|, (error, error, error)) along n towards w, as pbrt-v4's OffsetRayOrigin.
+inline Point3f OffsetRayOrigin(Point3f p, Normal3f n, Vector3f w, Float error = 0) {
     Normal3f nf = Dot(n, w) < 0 ? -n : n;
+    if (error > 0) p = p + error * (std::abs(n.x) + std::abs(n.y) + std::abs(n.z)) * Vector3f(nf);
     return {FloatBitsOffset(p.x, nf.x), FloatBitsOffset(p.y, nf.y), FloatBitsOffset(p.z, nf.z)};
 }
 

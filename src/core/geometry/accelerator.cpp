@@ -1,5 +1,6 @@
 #include "core/geometry/accelerator.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -70,6 +71,15 @@ Ray RayFromEmbree(const RTCRay& r) {
     return Ray(Point3f(r.org_x, r.org_y, r.org_z), Vector3f(r.dir_x, r.dir_y, r.dir_z), r.time);
 }
 
+// The query ray as the caller gave it: in scenes with curves rays start tnear back along their
+// direction (Impl::curveBackoff, set by Accelerator::Commit), and kiln's own shapes see them
+// from tnear on.
+Ray QueryRayFromEmbree(const RTCRay& r) {
+    Ray ray = RayFromEmbree(r);
+    if (r.tnear > 0) ray.o = ray.o + r.tnear * ray.d;
+    return ray;
+}
+
 // The closest hit of a user-geometry shape beyond which alpha does not cut out (pbrt-v4's
 // GeometricPrimitive::Intersect: a cut-out hit continues the ray from there); the uniform
 // number of the stochastic test is a hash of the ray from each hit on. A shape has at most a few
@@ -100,8 +110,10 @@ void UserIntersect(const RTCIntersectFunctionNArguments* args) {
     if (args->N != 1 || !args->valid[0]) return;
     auto* rec = static_cast<const GeomRecord*>(args->geometryUserPtr);
     auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
-    auto si = UserHit(*rec, args->primID, RayFromEmbree(rh->ray), rh->ray.tfar);
-    if (!si || si->tHit <= rh->ray.tnear) return;
+    Float tnear = rh->ray.tnear;
+    auto si = UserHit(*rec, args->primID, QueryRayFromEmbree(rh->ray), rh->ray.tfar - tnear);
+    if (!si || !(si->tHit > 0)) return;
+    si->tHit += tnear;  // in the units of the Embree ray
     rh->ray.tfar = si->tHit;
     rh->hit.Ng_x = si->intr.n.x, rh->hit.Ng_y = si->intr.n.y, rh->hit.Ng_z = si->intr.n.z;
     rh->hit.u = si->intr.uv.x, rh->hit.v = si->intr.uv.y;
@@ -116,9 +128,10 @@ void UserOccluded(const RTCOccludedFunctionNArguments* args) {
     if (args->N != 1 || !args->valid[0]) return;
     auto* rec = static_cast<const GeomRecord*>(args->geometryUserPtr);
     auto* r = reinterpret_cast<RTCRay*>(args->ray);
-    Ray ray = RayFromEmbree(*r);
-    bool hit = rec->alpha ? UserHit(*rec, args->primID, ray, r->tfar).has_value()
-                          : rec->shapes[args->primID].IntersectP(ray, r->tfar);
+    Ray ray = QueryRayFromEmbree(*r);
+    Float tMax = r->tfar - r->tnear;
+    bool hit = rec->alpha ? UserHit(*rec, args->primID, ray, tMax).has_value()
+                          : rec->shapes[args->primID].IntersectP(ray, tMax);
     if (hit) r->tfar = -std::numeric_limits<float>::infinity();
 }
 
@@ -284,6 +297,30 @@ struct Accelerator::Impl {
     };
     std::vector<PlacedInstance> instances;
     bool committed = false;
+    // Defeating Embree's curve self-intersection avoidance (see Commit): the largest curve radius
+    // at the top level and in instance definitions (their own space), the largest stretch of any
+    // instance's transform (Frobenius norm of its linear part, at least its largest singular
+    // value), whether motion instances are nested in definitions (two levels of stretch), and
+    // the render-space distance rays start back by (set by Commit).
+    Float topCurveRadius = 0, definitionCurveRadius = 0, instanceStretch = 1;
+    bool nestedInstances = false;
+    Float curveBackoff = 0;
+    void NoteStretch(const Transform& t) {
+        const SquareMatrix4& m = t.Matrix();
+        Float f2 = 0;
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) f2 += m.m[r][c] * m.m[r][c];
+        instanceStretch = std::max(instanceStretch, std::sqrt(f2));
+    }
+    // The ray as Embree traces it: from curveBackoff back along d, hits counted from tnear.
+    void BackOff(const Ray& ray, Float tMax, Point3f* o, Float* tnear, Float* tfar) const {
+        *o = ray.o, *tnear = 0, *tfar = tMax;
+        Float len = Length(ray.d);
+        if (!(curveBackoff > 0) || !(len > 0)) return;
+        *tnear = curveBackoff / len;
+        *o = ray.o - *tnear * ray.d;
+        *tfar = tMax + *tnear;
+    }
 
     SceneBVH NewScene() {
         SceneBVH s;
@@ -442,6 +479,7 @@ void Accelerator::AddInstance(int definition, const Transform& renderFromInstanc
     // Every call gets an entry, so that Commit can name instances by their call order
     impl->instances.push_back({RTC_INVALID_GEOMETRY_ID, renderFromInstance, def.bounds});
     if (def.records.empty()) return;
+    impl->NoteStretch(renderFromInstance);
     impl->instances.back().geomID = unsigned(impl->top.records.size());
     auto rec = std::make_unique<GeomRecord>();
     rec->kind = GeomRecord::Kind::Instance;
@@ -466,6 +504,9 @@ void Accelerator::AddAnimatedInstance(int definition, const AnimatedTransform& r
     auto rec = std::make_unique<GeomRecord>();
     rec->kind = GeomRecord::Kind::Motion;
     rec->motion = std::make_unique<MotionInstance>(MotionInstance{renderFromInstance, &def});
+    impl->NoteStretch(renderFromInstance.Interpolate(0));
+    impl->NoteStretch(renderFromInstance.Interpolate(1));
+    impl->nestedInstances |= parent >= 0;
     s.bounds = Union(s.bounds, renderFromInstance.MotionBounds(def.bounds));
     RTCGeometry g = rtcNewGeometry(impl->device, RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(g, 1);
@@ -483,6 +524,10 @@ void Accelerator::AddCurves(const CurveSet& curves, const Material* material,
     if (n == 0) return;
     impl->primitives += size_t(n);
     s.bounds = Union(s.bounds, curves.Bounds());
+    Float radius = 0;
+    for (const auto& v : curves.Vertices()) radius = std::max<Float>(radius, v[3]);
+    Float& r = definition < 0 ? impl->topCurveRadius : impl->definitionCurveRadius;
+    r = std::max(r, radius);
     auto rec = std::make_unique<GeomRecord>();
     rec->kind = GeomRecord::Kind::Curves;
     rec->curves = &curves;
@@ -524,6 +569,16 @@ std::vector<int> Accelerator::Commit() {
     }
     for (SceneBVH& d : impl->definitions) rtcCommitScene(d.scene);
     rtcCommitScene(impl->top.scene);
+    // Embree ignores hits on flat curves closer to the ray origin than twice the curve's radius
+    // (its EMBREE_CURVE_SELF_INTERSECTION_AVOIDANCE_FACTOR, 2 in its default build), measured
+    // in the space the curve is traced in; pbrt-v4 ignores none, and rays leaving a curve start
+    // off it by its width already (Interaction::originError). Starting every ray 2.5 largest
+    // radii back (twice, and a margin for rounding), hits counted from the true origin on,
+    // keeps every hit beyond the true origin.
+    Float stretch = impl->nestedInstances ? impl->instanceStretch * impl->instanceStretch
+                                          : impl->instanceStretch;
+    impl->curveBackoff =
+        2.5f * std::max(impl->topCurveRadius, impl->definitionCurveRadius * stretch);
     impl->committed = true;
     return skipped;
 }
@@ -602,25 +657,30 @@ RTCRayHit MakeEmbreeRayHit(const Ray& ray, Float tMax) {
 
 std::optional<ShapeIntersection> Accelerator::Intersect(const Ray& ray, Float tMax) const {
     KilnContext ctx;
-    RTCRayHit rh = MakeEmbreeRayHit(ray, tMax);
+    Point3f o;
+    Float tnear, tfar;
+    impl->BackOff(ray, tMax, &o, &tnear, &tfar);
+    RTCRayHit rh = MakeEmbreeRayHit(Ray(o, ray.d, ray.time), tfar);
+    rh.ray.tnear = tnear;
     rtcIntersect1(impl->top.scene, &ctx.context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
 
+    // Hits are found and completed along the ray Embree traced; tHit is the caller's
     const GeomRecord* rec;
     const Transform* renderFromInstance = nullptr;
     Vector3f d = ray.d;
-    Point3f o = ray.o;
     if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
         const GeomRecord* inst = impl->top.records[rh.hit.instID[0]].get();
         renderFromInstance = &inst->renderFromInstance;
         rec = impl->definitions[size_t(inst->triIndices[0])].records[rh.hit.geomID].get();
         d = renderFromInstance->ApplyInverse(ray.d);
-        o = renderFromInstance->ApplyInverse(ray.o);
+        o = renderFromInstance->ApplyInverse(o);
     } else {
         rec = impl->top.records[rh.hit.geomID].get();
     }
     std::optional<ShapeIntersection> si = RecordHit(*rec, rh, ctx, o, d, ray.time);
     if (si && renderFromInstance) si->intr = TransformInteraction(*renderFromInstance, si->intr);
+    if (si) si->tHit -= tnear;
     return si;
 }
 
@@ -628,11 +688,14 @@ bool Accelerator::IntersectP(const Ray& ray, Float tMax) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     CheckRayForEmbree(ray, tMax);
+    Point3f o;
+    Float tnear, tfar;
+    impl->BackOff(ray, tMax, &o, &tnear, &tfar);
     RTCRay r;
-    r.org_x = ray.o.x, r.org_y = ray.o.y, r.org_z = ray.o.z;
+    r.org_x = o.x, r.org_y = o.y, r.org_z = o.z;
     r.dir_x = ray.d.x, r.dir_y = ray.d.y, r.dir_z = ray.d.z;
-    r.tnear = 0;
-    r.tfar = tMax;
+    r.tnear = tnear;
+    r.tfar = tfar;
     r.time = ray.time;
     r.mask = ~0u;
     r.id = 0;

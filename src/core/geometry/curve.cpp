@@ -166,8 +166,16 @@ SurfaceInteraction CurveSet::InteractionAt(int segment, Float u, Point3f o, Vect
         CoordinateSystem(-dn, &a, &b);
         dpdu = a, dpdv = b;
     }
-    return SurfaceInteraction(pHit, Point2f(u, v), -dn, dpdu, dpdv, Normal3f(0, 0, 0),
-                              Normal3f(0, 0, 0), time, flipNormal);
+    SurfaceInteraction si(pHit, Point2f(u, v), -dn, dpdu, dpdv, Normal3f(0, 0, 0),
+                          Normal3f(0, 0, 0), time, flipNormal);
+    // pbrt-v4's error bounds for curve hits: the hit width in every axis. The ray-facing
+    // surface turns with the ray, so a ray leaving the hit point with a ULP offset passes within
+    // the curve's radius of its centre line and meets the same curve again wherever its
+    // direction is within about 30 degrees of the tangent (Embree only skips hits closer than
+    // the curve's width); from hitWidth * |n|_1 off the surface it passes at least 0.67 widths
+    // away.
+    si.originError = hitWidth;
+    return si;
 }
 
 // Creation (pbrt-v4's Curve::Create)

@@ -15,7 +15,9 @@
 // cubic Bezier: kiln's passes through the slerp at u = 0, 1/3, 2/3, 1, and its direction stays
 // within 0.08 degrees of the slerp for a quarter turn per segment, 1.6 degrees for 170 degrees).
 // u runs from 0 to 1 along each segment, v from 0 to 1 across the width (0.5 on the centre
-// line), as pbrt-v4's hair material expects; the geometric normal is the shading normal.
+// line), as pbrt-v4's hair material expects; the geometric normal is the shading normal. Rays
+// leaving a hit start hitWidth * |n|_1 off it (pbrt-v4's error bounds for curve hits,
+// Interaction::originError), clear of the curve they leave.
 #pragma once
 
 #include <array>

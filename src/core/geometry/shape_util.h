@@ -52,6 +52,11 @@ inline SurfaceInteraction TransformInteraction(const Transform& t, const Surface
     r.shading.dpdu = t(si.shading.dpdu), r.shading.dpdv = t(si.shading.dpdv);
     r.shading.dndu = t(si.shading.dndu), r.shading.dndv = t(si.shading.dndv);
     r.dpdx = t(si.dpdx), r.dpdy = t(si.dpdy);
+    if (si.originError > 0) {
+        // Scaled as a length: by the cube root of the volume scale
+        Vector3f ax = t(Vector3f(1, 0, 0)), ay = t(Vector3f(0, 1, 0)), az = t(Vector3f(0, 0, 1));
+        r.originError = si.originError * std::cbrt(std::abs(Dot(ax, Cross(ay, az))));
+    }
     return r;
 }
 
