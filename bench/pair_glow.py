@@ -135,6 +135,25 @@ def hot_metal_glass(out: str, size: Size, photometric: Callable[[float], float])
                      note="pbrt-v4 cannot express Kirchhoff emission of a conductor: time only")
 
 
+def flame_room(size: Size) -> str:
+    """A room (floor, back and left walls, ceiling; the camera's side and the right open) with
+    a table, lit only by a faint sky: the setting of hot-flame and hot-gob."""
+    return (header(size, "0 1.3 -3.8  0 0.9 0  0 1 0", 50, "volpath", 8, '"float iso" 400')
+            + 'LightSource "infinite" "rgb L" [0.0002 0.0002 0.0003]\n'
+            'Material "diffuse" "rgb reflectance" [0.6 0.55 0.5]\n'
+            # floor, back wall, left wall, ceiling (the camera's side and the right are open)
+            'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
+            '    "point3 P" [-3 0 -4  3 0 -4  3 0 3  -3 0 3]\n'
+            'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
+            '    "point3 P" [-3 0 3  3 0 3  3 3 3  -3 3 3]\n'
+            'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
+            '    "point3 P" [-3 0 -4  -3 0 3  -3 3 3  -3 3 -4]\n'
+            'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
+            '    "point3 P" [-3 3 -4  -3 3 3  3 3 3  3 3 -4]\n'
+            'Material "diffuse" "rgb reflectance" [0.4 0.25 0.15]\n'
+            + box(-0.8, 0.0, -0.5, 0.8, 0.6, 0.5))
+
+
 def hot_flame(out: str, size: Size, photometric: Callable[[float], float]) -> PairScene:
     """A small flame (a 24^3 absorbing, emitting grid, 1800 K, 10 cm across) the
     only light of a room with a table and a faint sky through a window: the walls and table
@@ -144,20 +163,7 @@ def hot_flame(out: str, size: Size, photometric: Callable[[float], float]) -> Pa
     folder = os.path.join(out, "hot-flame")
     n = 24 if size.scale >= 1 else 8
     T = 1800
-    common = (header(size, "0 1.3 -3.8  0 0.9 0  0 1 0", 50, "volpath", 8, '"float iso" 400')
-              + 'LightSource "infinite" "rgb L" [0.0002 0.0002 0.0003]\n'
-              'Material "diffuse" "rgb reflectance" [0.6 0.55 0.5]\n'
-              # floor, back wall, left wall, ceiling (the camera's side and the right are open)
-              'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
-              '    "point3 P" [-3 0 -4  3 0 -4  3 0 3  -3 0 3]\n'
-              'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
-              '    "point3 P" [-3 0 3  3 0 3  3 3 3  -3 3 3]\n'
-              'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
-              '    "point3 P" [-3 0 -4  -3 0 3  -3 3 3  -3 3 -4]\n'
-              'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]\n'
-              '    "point3 P" [-3 3 -4  -3 3 3  3 3 3  3 3 -4]\n'
-              'Material "diffuse" "rgb reflectance" [0.4 0.25 0.15]\n'
-              + box(-0.8, 0.0, -0.5, 0.8, 0.6, 0.5))
+    common = flame_room(size)
     # A teardrop of density above the table, zero on the grid's faces
     d = []
     for k in range(n):
@@ -183,4 +189,25 @@ def hot_flame(out: str, size: Size, photometric: Callable[[float], float]) -> Pa
                      write(folder, "pbrt.pbrt", pbrt + box_), size.spp, size.ref_spp)
 
 
-GENERATORS = [hot_glass, hot_smoke, hot_flame, hot_emitters, hot_metal_glass]
+def hot_gob(out: str, size: Size, photometric: Callable[[float], float]) -> PairScene:
+    """A molten glass gob (a glass ball of radius 0.12 filled with a hot absorbing, scattering
+    melt at 1400 K) above the table of hot-flame's room: the room is lit through the glass,
+    which shadow rays cannot cross (kiln samples the melt through its glass, "glasswindows").
+    pbrt-v4: medium Le with Lescale n^2 photometric(T), as hot-glass."""
+    folder = os.path.join(out, "hot-gob")
+    T = 1400
+    medium = '"rgb sigma_a" [3 5 9] "rgb sigma_s" [0.3 0.3 0.3]'
+    ball = ('AttributeBegin MediumInterface "melt" "" '
+            f'Material "dielectric" "float eta" {ETA}\n'
+            '  Translate 0 0.72 0 Shape "sphere" "float radius" 0.12\nAttributeEnd\n')
+    common = flame_room(size)
+    kiln = (common + f'MakeNamedMedium "melt" "string type" "homogeneous" {medium} '
+            f'"float temperature" {T}\n' + ball)
+    pbrt = (common + f'MakeNamedMedium "melt" "string type" "homogeneous" {medium} '
+            f'"blackbody Le" {T} "float Lescale" {ETA * ETA * photometric(T):.6g}\n' + ball)
+    return PairScene("hot-gob", "a molten glass gob lighting a room, 1400 K",
+                     write(folder, "kiln.pbrt", kiln),
+                     write(folder, "pbrt.pbrt", pbrt), size.spp, size.ref_spp)
+
+
+GENERATORS = [hot_glass, hot_smoke, hot_flame, hot_gob, hot_emitters, hot_metal_glass]

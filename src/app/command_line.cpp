@@ -104,6 +104,8 @@ std::string UsageText() {
            "  --medium-emission M   emissive media: sampled as light sources by power\n"
            "                        (sampled, default) or found by tracking alone (tracked,\n"
            "                        as pbrt-v4)\n"
+           "  --glass-windows W     media glowing inside glass: sampled through the glass\n"
+           "                        (on, default) or found by chance refractions (off)\n"
            "  --strategy S          direct light by mis (default), light or bsdf sampling\n"
            "  --wavelengths N       wavelengths per path: 4 (hero, default) or 1\n"
            "  --view NAME           display view for PNG/JPEG/TIFF outputs: Standard, Filmic,\n"
@@ -162,6 +164,7 @@ const char* const kOptions[] = {"--help",
                                 "--generic",
                                 "--emitter-sampling",
                                 "--medium-emission",
+                                "--glass-windows",
                                 "--strategy",
                                 "--wavelengths",
                                 "--view",
@@ -345,6 +348,10 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
             o.mediumEmission = value();
             if (*o.mediumEmission != "sampled" && *o.mediumEmission != "tracked")
                 throw std::invalid_argument("--medium-emission expects sampled or tracked");
+        } else if (a == "--glass-windows") {
+            o.glassWindows = value();
+            if (*o.glassWindows != "on" && *o.glassWindows != "off")
+                throw std::invalid_argument("--glass-windows expects on or off");
         } else if (a == "--strategy") {
             o.strategy = value();
             if (*o.strategy != "mis" && *o.strategy != "light" && *o.strategy != "bsdf")

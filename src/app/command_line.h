@@ -27,6 +27,7 @@ struct CommandLineOptions {
     std::optional<std::string> strategy;         // mis | light | bsdf
     std::optional<std::string> emitterSampling;  // power | shape
     std::optional<std::string> mediumEmission;   // sampled | tracked
+    std::optional<std::string> glassWindows;     // on | off
     // --generic footprints,aovs: run those generic code paths (measuring specialisation)
     bool genericFootprints = false, genericAOVs = false, genericVolumes = false;
     std::optional<int> wavelengths;           // 1 | 4

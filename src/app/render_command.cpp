@@ -132,6 +132,7 @@ RenderOptions RenderOptionsFor(const CommandLineOptions& options, std::optional<
         renderOptions.emitterPowerSampling = ParseEmitterPowerSampling(*options.emitterSampling);
     if (options.mediumEmission)
         renderOptions.mediumEmissionSampling = ParseMediumEmissionSampling(*options.mediumEmission);
+    if (options.glassWindows) renderOptions.glassWindows = *options.glassWindows == "on";
     if (options.wavelengths) renderOptions.singleWavelength = *options.wavelengths == 1;
     return renderOptions;
 }

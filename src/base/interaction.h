@@ -72,6 +72,9 @@ struct SurfaceInteraction : Interaction {
     // shapes that are not lights (inside object instances)
     int lightIndex = -1;
     const ThermalEmission* thermal = nullptr;
+    // The index the scene gave this surface among the glass windows light sampling looks
+    // through into a hot medium (render/glass_windows.h), -1 if none
+    int windowIndex = -1;
     // Screen-space footprint (for texture filtering); zero when unknown.
     Vector3f dpdx, dpdy;
     Float dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;

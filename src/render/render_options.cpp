@@ -48,6 +48,7 @@ std::string RenderOptionsKey(const RenderOptions& o) {
            optional(o.emitterPowerSampling, [](bool b) { return b ? "power" : "shape"; });
     key += ";mediumemission=" +
            optional(o.mediumEmissionSampling, [](bool b) { return b ? "sampled" : "tracked"; });
+    key += ";glasswindows=" + optional(o.glassWindows, [](bool b) { return b ? "1" : "0"; });
     key += ";wavelengths=" + optional(o.singleWavelength, [](bool b) { return b ? "1" : "4"; });
     return key;
 }

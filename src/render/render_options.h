@@ -59,19 +59,20 @@ struct RenderOptions {
     // default the machine's memory.
     std::optional<double> memoryLimitBytes;
     // The integrator's choices (Integrator "lightsampler", "strategy", "emittersampling",
-    // "mediumemission", "wavelengths"), for comparisons
+    // "mediumemission", "glasswindows", "wavelengths"), for comparisons
     std::optional<LightSelection> lightSelection;
     std::optional<LightStrategy> strategy;
     std::optional<bool> emitterPowerSampling;
     std::optional<bool> mediumEmissionSampling;
+    std::optional<bool> glassWindows;      // Integrator "glasswindows"
     std::optional<bool> singleWavelength;  // one wavelength per path rather than four
 };
 
 // The options that change what a render's pixels are, as canonical text (unset ones empty: the
 // scene file decides, and it is identified apart): emission model, coated MIS weights, generic
 // volumetric integrator, Stokes layers, light selection, strategy, emitter sampling, medium
-// emission sampling, wavelengths per path. Two renders with different keys must not be merged or
-// resumed from one another (app/merge.h, app/checkpoint.h).
+// emission sampling, glass windows, wavelengths per path. Two renders with different keys must not
+// be merged or resumed from one another (app/merge.h, app/checkpoint.h).
 std::string RenderOptionsKey(const RenderOptions& options);
 
 }  // namespace kiln

@@ -26,6 +26,7 @@
 #include "materials/bxdfs/bsdf.h"
 #include "materials/material.h"
 #include "media/medium.h"
+#include "render/glass_windows.h"
 #include "render/medium_emission_sampler.h"
 #include "render/render_options.h"
 #include "render/scene_description.h"
@@ -58,6 +59,10 @@ struct PathIntegratorSettings {
     // power in volpath ("sampled", default) or found by tracking alone ("tracked", pbrt-v4's
     // way, for comparisons)
     bool mediumEmissionSampling = true;
+    // kiln "bool glasswindows": media glowing inside glass are sampled through their glass
+    // (render/glass_windows.h; true, default, with "mediumemission" "sampled") or found by
+    // chance refractions alone (false, for comparisons)
+    bool glassWindows = true;
 };
 
 // What a scene uses and what kiln chose for it at load; every choice selects code (kiln
@@ -97,7 +102,7 @@ struct SceneFeatures {
     int media = 0, emissiveMedia = 0, thermalMedia = 0;
     // Emissive media volpath samples as light sources (MediumEmissionSampler), and the time
     // estimating their emission took
-    int sampledMedia = 0;
+    int sampledMedia = 0, glassWindows = 0;
     double mediumSamplerSeconds = 0;
     bool volumetric = false, genericVolumes = false;
     bool unnormalizedLightSamples = false;  // Light::HasUnnormalizedSamples (pbrt-v4 compatibility)
@@ -228,6 +233,9 @@ class Scene {
     // Points of emissive media by emitted power for volpath's next-event estimation (nullptr:
     // none, or Integrator "mediumemission" "tracked")
     std::unique_ptr<MediumEmissionSampler> mediumEmission;
+    // The glass windows of media glowing inside dielectrics (SurfaceInteraction::windowIndex;
+    // nullptr: none, or "mediumemission" "tracked")
+    std::unique_ptr<GlassWindows> glassWindows;
     PathIntegratorSettings integrator;
     bool disablePixelJitter = false;
     // Camera "float polarizer" (kiln): a linear polariser in front of the film, its

@@ -80,6 +80,7 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOpti
         throw SceneError(e.parameters.Loc("mediumemission"),
                          "unknown medium emission (expected \"sampled\" or \"tracked\")", me);
     s.mediumEmissionSampling = options.mediumEmissionSampling.value_or(*sampled);
+    s.glassWindows = options.glassWindows.value_or(e.parameters.GetOneBool("glasswindows", true));
     std::string ls = e.parameters.GetOneString("lightsampler", "bvh");
     std::optional<LightSelection> sel = ParseLightSelection(ls);
     if (!sel)
@@ -417,8 +418,46 @@ void PreprocessLights(Scene& scene) {
 }
 
 // The aggregate: shapes with their materials, lights and thermal emission, then instances
+// The glass windows of hot melts (glass_windows.h): the shapes of every directive touching a
+// medium that glows inside dielectrics, when their dielectric is non-dispersive and they
+// neither move nor have cut-outs; per directive, each shape's window index (or none).
+std::vector<std::vector<int>> CreateGlassWindows(Scene& scene, const SceneDescription& desc,
+                                                 const std::vector<SceneShapes>& shapes) {
+    std::vector<std::vector<int>> windowIndices(shapes.size());
+    if (!scene.integrator.volumetric || !scene.integrator.mediumEmissionSampling ||
+        !scene.integrator.glassWindows)
+        return windowIndices;
+    std::vector<MediumBoundary> boundaries;
+    for (const SceneShapes& s : shapes)
+        boundaries.push_back({s.media, Bounds3f(), s.heat.material});
+    std::vector<bool> inGlass = GlowingInsideDielectrics(scene.media, boundaries);
+    std::vector<GlassWindows::Window> windows;
+    for (size_t i = 0; i < shapes.size(); ++i) {
+        const SceneShapes& s = shapes[i];
+        int hot = s.media.inside >= 0 && inGlass[size_t(s.media.inside)]     ? s.media.inside
+                  : s.media.outside >= 0 && inGlass[size_t(s.media.outside)] ? s.media.outside
+                                                                             : -1;
+        if (hot < 0 || desc.shapes[i].motion || s.alpha || !s.heat.material) continue;
+        std::optional<Spectrum> eta = s.heat.material->InteriorEta();
+        if (!eta || (*eta)(400) != (*eta)(550) || (*eta)(700) != (*eta)(550)) continue;
+        for (const Shape& shape : s.shapes) {
+            windowIndices[i].push_back(int(windows.size()));
+            windows.push_back({shape, s.heat.material, s.media, hot});
+        }
+    }
+    if (!windows.empty()) {
+        scene.glassWindows = std::make_unique<GlassWindows>(std::move(windows));
+        if (scene.glassWindows->Count() == 0) {
+            scene.glassWindows.reset();
+            windowIndices.assign(shapes.size(), {});
+        }
+    }
+    return windowIndices;
+}
+
 void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<SceneShapes>& shapes,
                      const std::vector<std::vector<int>>& shapeLights,
+                     const std::vector<std::vector<int>>& shapeWindows,
                      const NamedTextures& textures, const SceneMaterials& materials,
                      const MediumIndices& media, ThermalEmitters& emitters, Diagnostics& diag) {
     scene.aggregate = std::make_unique<kiln::Accelerator>();
@@ -426,7 +465,7 @@ void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<Sce
     // One directive's shapes into `definition` (-1: the top level, with their lights); a
     // moving directive gets a definition of its own, placed at each ray's time
     auto add = [&](const ShapeSceneEntity& s, const SceneShapes& made, std::span<const int> lights,
-                   int definition) {
+                   std::span<const int> windows, int definition) {
         int target = definition;
         if (s.motion) target = aggregate.NewInstanceDefinition();
         if (made.curves)
@@ -435,7 +474,7 @@ void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<Sce
         if (!made.shapes.empty()) {
             if (target < 0)
                 aggregate.Add(made.shapes, made.heat.material, lights, made.heat.emission,
-                              made.media, made.alpha);
+                              made.media, made.alpha, windows);
             else
                 aggregate.AddToInstanceDefinition(target, made.shapes, made.heat.material,
                                                   made.heat.emission, made.media, made.alpha);
@@ -443,7 +482,7 @@ void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<Sce
         if (s.motion) aggregate.AddAnimatedInstance(target, *s.motion, definition);
     };
     for (size_t i = 0; i < desc.shapes.size(); ++i) {
-        add(desc.shapes[i], shapes[i], shapeLights[i], -1);
+        add(desc.shapes[i], shapes[i], shapeLights[i], shapeWindows[i], -1);
         scene.shapeCount += int(shapes[i].shapes.size());
     }
     std::map<std::string, int> definitionIds;
@@ -456,7 +495,7 @@ void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<Sce
             int id = aggregate.NewInstanceDefinition();
             for (ShapeSceneEntity& s : def.shapes)
                 add(s, CreateShapes(s, textures, materials, media, emitters, scene.arena, diag), {},
-                    id);
+                    {}, id);
             it = definitionIds.emplace(inst.name, id).first;
         }
         if (inst.motion) {
@@ -636,13 +675,16 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
     for (ShapeSceneEntity& s : desc.shapes)
         shapes.push_back(CreateShapes(s, textures, materials, media, emitters, scene.arena, diag));
     std::vector<std::vector<int>> shapeLights = CreateLights(scene, desc, shapes, emitters, diag);
-    CreateAggregate(scene, desc, shapes, shapeLights, textures, materials, media, emitters, diag);
+    std::vector<std::vector<int>> shapeWindows = CreateGlassWindows(scene, desc, shapes);
+    CreateAggregate(scene, desc, shapes, shapeLights, shapeWindows, textures, materials, media,
+                    emitters, diag);
     PreprocessLights(scene);
     CreateLightSampler(scene);
     scene.varyingThermalLights = emitters.VaryingLights();
     scene.features = DecideFeatures(scene, desc, shapes, materials, emitters, options);
     if (scene.features.volumetric) CreateMediumEmitters(scene, shapes);
     scene.features.sampledMedia = scene.mediumEmission ? scene.mediumEmission->Emitters() : 0;
+    scene.features.glassWindows = scene.glassWindows ? scene.glassWindows->Count() : 0;
     DecideBidirectional(scene, desc, diag);
     if (!scene.integrator.volumetric && !scene.media.empty())
         diag.Warn(desc.integrator.loc,

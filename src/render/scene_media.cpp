@@ -49,21 +49,33 @@ int MediumIndex(const std::string& name, const MediumIndices& media, const FileL
     return it->second;
 }
 
-std::unique_ptr<MediumEmissionSampler> CreateMediumEmissionSampler(
-    std::span<const Medium> media, std::span<const MediumBoundary> boundaries) {
-    std::vector<MediumEmissionSampler::Region> regions;
+std::vector<bool> GlowingInsideDielectrics(std::span<const Medium> media,
+                                           std::span<const MediumBoundary> boundaries) {
+    std::vector<bool> inside(media.size(), false);
     for (int m = 0; m < int(media.size()); ++m) {
         if (!media[size_t(m)].IsEmissive()) continue;
-        Bounds3f touching;
-        bool onlyDielectrics = true;
+        bool touched = false, onlyDielectrics = true;
         for (const MediumBoundary& b : boundaries)
             if (b.media.inside == m || b.media.outside == m) {
-                touching = Union(touching, b.bounds);
+                touched = true;
                 onlyDielectrics &= b.material && !b.material->IsInterface() &&
                                    !b.material->MayPassLightStraightThrough() &&
                                    b.material->InteriorEta().has_value();
             }
-        if (onlyDielectrics && !touching.IsEmpty()) continue;
+        inside[size_t(m)] = touched && onlyDielectrics;
+    }
+    return inside;
+}
+
+std::unique_ptr<MediumEmissionSampler> CreateMediumEmissionSampler(
+    std::span<const Medium> media, std::span<const MediumBoundary> boundaries) {
+    std::vector<MediumEmissionSampler::Region> regions;
+    std::vector<bool> inGlass = GlowingInsideDielectrics(media, boundaries);
+    for (int m = 0; m < int(media.size()); ++m) {
+        if (!media[size_t(m)].IsEmissive() || inGlass[size_t(m)]) continue;
+        Bounds3f touching;
+        for (const MediumBoundary& b : boundaries)
+            if (b.media.inside == m || b.media.outside == m) touching = Union(touching, b.bounds);
         std::optional<Bounds3f> own = media[size_t(m)].RenderBounds();
         Bounds3f box = touching;
         if (own && touching.IsEmpty()) {

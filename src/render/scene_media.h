@@ -49,6 +49,11 @@ struct MediumBoundary {
     const Material* material = nullptr;
 };
 
+// Per medium: whether it is emissive and every shape touching it has a dielectric material
+// (a melt in glass), so that shadow rays from outside cannot reach it.
+std::vector<bool> GlowingInsideDielectrics(std::span<const Medium> media,
+                                           std::span<const MediumBoundary> boundaries);
+
 // The emissive media volpath samples as light sources (nullptr: none): each within its own
 // box, or the box of the shapes it fills or surrounds (outside shapes only, a medium may reach
 // further: emission there is still found by tracking), or both intersected. Not sampled: media

@@ -58,6 +58,10 @@ class VolPathIntegrator {
         int sheetCrossings = 0;
         LightSampleContext prevContext;
         int prevScatterMedium = -1;  // the medium prevContext scattered in (-1: a surface)
+        // On the first chord inside a hot medium after refracting into it through one of its
+        // glass windows: the rescaled probability r_n of window sampling making the path
+        bool windowChord = false;
+        SampledSpectrum r_n(0.f);
         int medium = scene.cameraMedium;
         const int maxDepth = settings.maxDepth;
 
@@ -85,10 +89,12 @@ class VolPathIntegrator {
                                             ? 0
                                             : MediumEmissionPDF(medium, p, prevContext.p,
                                                                 prevScatterMedium);
-                            if (p_l > 0 && settings.strategy == LightStrategy::LightOnly)
+                            if ((p_l > 0 || windowChord) &&
+                                settings.strategy == LightStrategy::LightOnly)
                                 r_e = SampledSpectrum(0.f);
                             if (r_e) {
                                 SampledSpectrum r = r_e + r_l * T_maj * (p_l / pdf);
+                                if (windowChord) r += r_n * sigma_maj * T_maj / pdf;
                                 L += Radiance::Apply(
                                     beta * (T_maj / pdf),
                                     Radiance::Unpolarized(mp.emission / WavelengthMean(r, lambda)));
@@ -114,13 +120,13 @@ class VolPathIntegrator {
                             // Direct light at the scattering point, then a new direction
                             Vector3f wo = -ray.d;
                             HGPhaseFunction phase(mp.g);
+                            windowChord = false;
                             if (settings.strategy != LightStrategy::BSDFOnly) {
                                 Interaction intr(p, Normal3f(), Point2f(), wo, ray.time);
                                 L += SampleLd(intr, nullptr, &phase, medium, lambda, sampler, beta,
                                               r_u);
-                                if (depth < maxDepth)
-                                    L += SampleMediumLd(intr, nullptr, &phase, medium, lambda,
-                                                        sampler, beta, r_u);
+                                L += SampleEmittersLd(intr, nullptr, &phase, medium, depth, lambda,
+                                                      sampler, beta, r_u);
                             }
                             std::optional<PhaseFunctionSample> ps =
                                 phase.Sample_p(wo, sampler.Get2D());
@@ -148,6 +154,7 @@ class VolPathIntegrator {
                         beta = beta * (T_maj * sigma_n / pdf);
                         r_u *= T_maj * sigma_n / pdf;
                         r_l *= T_maj * sigma_maj / pdf;
+                        if (windowChord) r_n *= T_maj * sigma_maj / pdf;
                         return bool(beta) && bool(r_u);
                     });
                 if (terminated || !beta || !r_u) return L;
@@ -157,6 +164,7 @@ class VolPathIntegrator {
                 r_u *= T_maj / T_maj[0];
                 r_l *= T_maj / T_maj[0];
             }
+            windowChord = false;  // a chord ends at the first surface
 
             // Escaped rays: emission from infinite lights
             if (!si) {
@@ -209,9 +217,10 @@ class VolPathIntegrator {
             // Direct lighting by light sampling
             if (IsNonSpecular(bsdf.Flags()) && settings.strategy != LightStrategy::BSDFOnly) {
                 L += SampleLd(isect, &bsdf, nullptr, medium, lambda, sampler, beta, r_u);
-                if (depth < maxDepth)
-                    L += SampleMediumLd(isect, &bsdf, nullptr, medium, lambda, sampler, beta, r_u);
+                L += SampleEmittersLd(isect, &bsdf, nullptr, medium, depth, lambda, sampler, beta,
+                                      r_u);
             }
+            LightSampleContext sampledFrom = prevContext;  // the vertex before this one
             prevContext = LightSampleContext(isect);
             prevScatterMedium = -1;
 
@@ -223,6 +232,19 @@ class VolPathIntegrator {
                 bs = bsdf.Sample_f<Throughput>(wo, u, sampler.Get2D());
             }
             if (!bs || bs->pdf == 0 || !bs->f) break;
+            // Refracting into a hot medium through its glass window after a vertex that
+            // sampled lights: the chord inside is weighted against window sampling
+            if (isect.windowIndex >= 0 && WindowsActive() && depth > 1 && !specularBounce &&
+                bs->IsSpecular() && bs->IsTransmission() && !IsNonSpecular(bsdf.Flags())) {
+                const GlassWindows::Window& w = (*scene.glassWindows)[isect.windowIndex];
+                if (medium != w.hot && isect.MediumAfter(bs->wi, medium) == w.hot) {
+                    ShapeSampleContext ctx(sampledFrom.p, sampledFrom.n, sampledFrom.ns, ray.time);
+                    Float q = scene.glassWindows->PMF(isect.windowIndex, sampledFrom.p) *
+                              w.shape.PDF(ctx, Normalize(ray.d));
+                    r_n = r_l * (q / bs->pdf);
+                    windowChord = q > 0;
+                }
+            }
             beta = beta * (bs->f * (AbsDot(bs->wi, isect.shading.n) / bs->pdf));
             r_l = r_u / (bs->pdfIsProportional ? bsdf.PDF(wo, bs->wi) : bs->pdf);
             specularBounce = bs->IsSpecular();
@@ -249,9 +271,8 @@ class VolPathIntegrator {
                     anyNonSpecularBounces = true;
                     if (settings.strategy != LightStrategy::BSDFOnly) {
                         L += SampleLd(pi, &Sw, nullptr, medium, lambda, sampler, beta, r_u);
-                        if (depth < maxDepth)
-                            L += SampleMediumLd(pi, &Sw, nullptr, medium, lambda, sampler, beta,
-                                                r_u);
+                        L += SampleEmittersLd(pi, &Sw, nullptr, medium, depth, lambda, sampler,
+                                              beta, r_u);
                     }
                     Float u = sampler.Get1D();
                     std::optional<BSDFSampleOf<Throughput>> es =
@@ -524,6 +545,125 @@ class VolPathIntegrator {
         if (settings.strategy == LightStrategy::LightOnly)
             return contribution / WavelengthMean(r_l, lambda);
         return contribution / WavelengthMean(r_l + r_u, lambda);
+    }
+
+    // Whether glass windows are sampled: the scene has them, light sampling is on, the
+    // unpolarised variant (the window's transmission would need its Mueller matrix) and no
+    // regularisation (which would roughen the path's window but not the sampled one).
+    bool WindowsActive() const {
+        return scene.glassWindows && !Radiance::Polarized && !settings.regularize &&
+               settings.strategy != LightStrategy::BSDFOnly;
+    }
+
+    // The emitters light sampling looks for besides lights, at a vertex whose path has made
+    // `depth` scattering events: hot media (if the path could still count medium emission
+    // found by its next segment, depth < maxDepth) and hot media through their glass windows
+    // (if the chord after the refraction could still count it, depth + 1 < maxDepth).
+    Spectrum SampleEmittersLd(const Interaction& intr, const BSDF* bsdf,
+                              const HGPhaseFunction* phase, int medium, int depth,
+                              const SampledWavelengths& lambda, Sampler& sampler,
+                              const Throughput& beta, const SampledSpectrum& r_p) const {
+        Spectrum L{};
+        if (depth < settings.maxDepth)
+            L += SampleMediumLd(intr, bsdf, phase, medium, lambda, sampler, beta, r_p);
+        if (depth + 1 < settings.maxDepth && WindowsActive())
+            L += SampleWindowLd(intr, bsdf, phase, medium, lambda, sampler, beta, r_p);
+        return L;
+    }
+
+    // Light sampling of a medium glowing inside glass (glass_windows.h): a point s on one of
+    // its windows, the window's specular transmission there (f cos of its transmission
+    // sample, P_T its probability in a path), and the emission along the refracted chord
+    // inside by ratio tracking. Each emission point is weighted by spectral MIS against the
+    // path that refracts at s itself, whose density is the scattering pdf times P_T (in the
+    // same measure: directions at intr) and whose null collisions have sigma_n's density
+    // rather than sigma_maj's.
+    Spectrum SampleWindowLd(const Interaction& intr, const BSDF* bsdf, const HGPhaseFunction* phase,
+                            int medium, const SampledWavelengths& lambda, Sampler& sampler,
+                            const Throughput& beta, const SampledSpectrum& r_p) const {
+        if constexpr (Radiance::Polarized) {
+            return {};
+        } else {
+            Float uWindow = sampler.Get1D();
+            Point2f uPoint = sampler.Get2D();
+            Float pmf = 0;
+            int k = scene.glassWindows->Choose(uWindow, intr.p, &pmf);
+            if (k < 0) return {};
+            const GlassWindows::Window& w = (*scene.glassWindows)[k];
+            const auto* surface = bsdf ? static_cast<const SurfaceInteraction*>(&intr) : nullptr;
+            ShapeSampleContext ctx =
+                surface ? ShapeSampleContext(*surface)
+                        : ShapeSampleContext(intr.p, Normal3f(), Normal3f(), intr.time);
+            std::optional<ShapeSample> ss = w.shape.Sample(ctx, uPoint);
+            if (!ss || !(ss->pdf > 0)) return {};
+            Vector3f toWindow = ss->intr.p - intr.p;
+            if (LengthSquared(toWindow) == 0) return {};
+            Vector3f wo = intr.wo, wi = Normalize(toWindow);
+            Float q = pmf * ss->pdf;
+            // The scattering towards the window
+            Throughput f_hat;
+            Float scatterPDF;
+            if (bsdf) {
+                Float cosTheta = AbsDot(wi, surface->shading.n);
+                if (cosTheta == 0) return {};
+                f_hat = bsdf->f<Throughput>(wo, wi) * cosTheta;
+                scatterPDF = bsdf->PDF(wo, wi);
+            } else {
+                f_hat = Radiance::Depolarizing(SampledSpectrum(phase->p(wo, wi)));
+                scatterPDF = phase->PDF(wo, wi);
+            }
+            if (!f_hat) return {};
+            // The window point as a ray arriving from intr finds it, and its transmission
+            SurfaceInteraction si = w.shape.InteractionAt(ss->intr.p, intr.time, -wi);
+            si.material = w.material;
+            si.mediumInterface = w.media;
+            si.windowIndex = k;
+            SampledWavelengths windowLambda = lambda;  // non-dispersive: left as it is
+            BSDF windowBSDF = scene.GetBSDF(si, windowLambda);
+            if (!windowBSDF || IsNonSpecular(windowBSDF.Flags())) return {};
+            std::optional<BSDFSampleOf<Throughput>> bt =
+                windowBSDF.Sample_f<Throughput>(si.wo, OneMinusEpsilon, Point2f(0.5f, 0.5f));
+            if (!bt || !bt->IsSpecular() || !bt->IsTransmission() || !(bt->pdf > 0) ||
+                si.MediumAfter(bt->wi, -1) != w.hot)
+                return {};
+            Throughput F = bt->f * AbsDot(bt->wi, si.shading.n);
+            // Unoccluded up to the window, arriving from its cold side
+            std::optional<Transmission> tr = Transmit(intr, surface, medium, si, lambda);
+            if (!tr || tr->medium == w.hot || si.MediumAfter(-wi, -2) != tr->medium) return {};
+            // The chord inside, by ratio tracking with emission at every tentative collision
+            Ray chord = si.SpawnRay(bt->wi);
+            std::optional<ShapeIntersection> end = scene.aggregate->Intersect(chord, Infinity);
+            SampledSpectrum Rl = tr->r_l * r_p * q, Ru = tr->r_u * r_p * (scatterPDF * bt->pdf);
+            SampledSpectrum Tr(1.f), emitted(0.f);
+            RNG rng(Hash(chord.o), Hash(chord.d));
+            scene.media[size_t(w.hot)].SampleT_maj(
+                chord, end ? end->tHit : Infinity, rng.UniformFloat(), rng, lambda,
+                [&](Point3f, const MediumProperties& mp, const SampledSpectrum& sigma_maj,
+                    const SampledSpectrum& T_maj) {
+                    Float pdf = T_maj[0] * sigma_maj[0];
+                    if (mp.emission) {
+                        SampledSpectrum rl = Rl * T_maj * sigma_maj / pdf;
+                        SampledSpectrum ru = Ru * T_maj * sigma_maj / pdf;
+                        Float denom = settings.strategy == LightStrategy::LightOnly
+                                          ? WavelengthMean(rl, lambda)
+                                          : WavelengthMean(rl + ru, lambda);
+                        emitted += Tr * T_maj * mp.emission / (pdf * denom);
+                    }
+                    SampledSpectrum sigma_n = ClampZero(sigma_maj - mp.sigma_a - mp.sigma_s);
+                    Tr *= T_maj * sigma_n / pdf;
+                    Rl *= T_maj * sigma_maj / pdf;
+                    Ru *= T_maj * sigma_n / pdf;
+                    // Russian roulette on small transmittance
+                    if (Tr.MaxComponentValue() < 0.05f) {
+                        if (rng.UniformFloat() < 0.75f)
+                            Tr = SampledSpectrum(0.f);
+                        else
+                            Tr /= 0.25f;
+                    }
+                    return bool(Tr);
+                });
+            return beta * f_hat * tr->T_sheets * tr->T_ray * F * emitted;
+        }
     }
 
     static constexpr int kMaxInterfaceCrossings = 1024;

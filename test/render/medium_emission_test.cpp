@@ -1,7 +1,8 @@
 // Hot media as light sources (Integrator "mediumemission" "sampled"): a small hot, chromatic,
 // scattering grid lighting a floor renders the same image whether its emission is sampled
 // with MIS, by light sampling alone, by path sampling alone or by tracking alone (pbrt-v4's
-// way), and sampling it makes the floor far less noisy than tracking does.
+// way), and sampling it makes the floor far less noisy than tracking does. The same for a
+// hot melt inside a glass ball, sampled through the glass (glass windows) or not.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,22 +14,33 @@
 namespace kiln {
 namespace {
 
-std::string SmallFlame(const std::string& strategy, const std::string& emission, int seed) {
+// A glass ball (eta 1.5) holding a hot absorbing, scattering melt above the floor
+std::string GlassBall() {
+    return "MakeNamedMedium \"melt\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [2 3 5] "
+           "\"rgb sigma_s\" [0.5 0.5 0.5] \"float temperature\" 1500\n"
+           "AttributeBegin\nMediumInterface \"melt\" \"\"\nMaterial \"dielectric\" \"float eta\" "
+           "1.5\nTranslate 0 0.35 0\nShape \"sphere\" \"float radius\" 0.1\nAttributeEnd\n";
+}
+
+std::string SmallFlame(const std::string& strategy, const std::string& emission, int seed,
+                       bool glass = false, bool windows = true) {
     std::ostringstream s;
     s << "Film \"rgb\" \"integer xresolution\" 16 \"integer yresolution\" 16\n"
       << "Sampler \"zsobol\" \"integer pixelsamples\" 256 \"integer seed\" " << seed << "\n"
       << "Integrator \"volpath\" \"integer maxdepth\" 4 \"string strategy\" \"" << strategy
-      << "\" \"string mediumemission\" \"" << emission
-      << "\"\n"
+      << "\" \"string mediumemission\" \"" << emission << "\" \"bool glasswindows\" "
+      << (windows ? "true" : "false")
+      << "\n"
       // The floor in front of the flame, the flame itself out of view
       << "LookAt 0 1.2 -2.5  0 0 -1  0 1 0\nCamera \"perspective\" \"float fov\" 30\n"
       << "WorldBegin\n"
       << "Material \"diffuse\" \"rgb reflectance\" [0.5 0.5 0.5]\n"
       << "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] \"point3 P\" "
-         "[-3 0 -3 3 0 -3 3 0 3 -3 0 3]\n"
-      // A 4^3 grid 0.3 across, uneven density (majorant voxels above sigma_t: null
-      // collisions), absorbing more in blue, scattering
-      << "MakeNamedMedium \"flame\" \"string type\" \"uniformgrid\" \"integer nx\" 4 "
+         "[-3 0 -3 3 0 -3 3 0 3 -3 0 3]\n";
+    if (glass) return s.str() + GlassBall();
+    // A 4^3 grid 0.3 across, uneven density (majorant voxels above sigma_t: null
+    // collisions), absorbing more in blue, scattering
+    s << "MakeNamedMedium \"flame\" \"string type\" \"uniformgrid\" \"integer nx\" 4 "
          "\"integer ny\" 4 \"integer nz\" 4 \"float density\" [";
     for (int i = 0; i < 64; ++i) s << (i % 5 == 0 ? 0.1 : 1.0 + 0.5 * (i % 3)) << " ";
     s << "] \"point3 p0\" [-0.15 0.3 -0.15] \"point3 p1\" [0.15 0.6 0.15] "
@@ -48,9 +60,13 @@ struct Image {
     }
 };
 
-Image Render(const std::string& strategy, const std::string& emission, int seed) {
-    testing::RenderedScene r = testing::RenderText(SmallFlame(strategy, emission, seed));
-    EXPECT_EQ(r.scene->features.sampledMedia, emission == "sampled" ? 1 : 0);
+Image Render(const std::string& strategy, const std::string& emission, int seed, bool glass = false,
+             bool windows = true) {
+    testing::RenderedScene r =
+        testing::RenderText(SmallFlame(strategy, emission, seed, glass, windows));
+    bool sampled = emission == "sampled";
+    EXPECT_EQ(r.scene->features.sampledMedia, sampled && !glass ? 1 : 0);
+    EXPECT_EQ(r.scene->features.glassWindows > 0, sampled && glass && windows);
     Image image;
     Bounds2i b = r.scene->job->film->PixelBounds();
     for (int y = b.pMin.y; y < b.pMax.y; ++y)
@@ -71,8 +87,10 @@ double NoiseVariance(const Image& a, const Image& b) {
 struct Kind {
     double mean, se, variance;
 };
-Kind RenderKind(const std::string& strategy, const std::string& emission, int seed) {
-    Image a = Render(strategy, emission, seed), b = Render(strategy, emission, seed + 1);
+Kind RenderKind(const std::string& strategy, const std::string& emission, int seed,
+                bool glass = false, bool windows = true) {
+    Image a = Render(strategy, emission, seed, glass, windows),
+          b = Render(strategy, emission, seed + 1, glass, windows);
     double variance = NoiseVariance(a, b);
     return {(a.Mean() + b.Mean()) / 2, std::sqrt(variance / (2.0 * double(a.Y.size()))), variance};
 }
@@ -91,6 +109,24 @@ TEST(MediumEmission, SampledAndTrackedEmissionRenderTheSameImage) {
     double ratio = mis.variance / tracked.variance;
     std::printf("per-pixel variance, sampled / tracked: %.4f\n", ratio);
     EXPECT_LT(ratio, 0.25);
+}
+
+TEST(MediumEmission, HotMeltInGlassRendersTheSameImageThroughItsWindows) {
+    Kind mis = RenderKind("mis", "sampled", 11, true),
+         off = RenderKind("mis", "sampled", 13, true, false);
+    Kind light = RenderKind("light", "sampled", 15, true),
+         bsdf = RenderKind("bsdf", "sampled", 17, true);
+    ASSERT_GT(mis.mean, 0);
+    for (const auto& [name, k] : {std::pair{"windows", &mis}, std::pair{"off", &off},
+                                  std::pair{"light", &light}, std::pair{"bsdf", &bsdf}})
+        std::printf("%-8s image mean %.5f of the windows', standard error %.5f\n", name,
+                    k->mean / mis.mean, k->se / mis.mean);
+    for (const Kind* k : {&off, &light, &bsdf})
+        EXPECT_NEAR(k->mean, mis.mean, 5 * std::hypot(k->se, mis.se));
+    // The floor lit through the glass: sampling the windows beats chance refractions
+    double ratio = mis.variance / off.variance;
+    std::printf("per-pixel variance, windows / off: %.4f\n", ratio);
+    EXPECT_LT(ratio, 0.5);
 }
 
 }  // namespace

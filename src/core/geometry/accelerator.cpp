@@ -36,7 +36,8 @@ struct GeomRecord {
     std::vector<int> triIndices;  // primID -> triangle index; empty when the identity
     std::vector<Shape> shapes;    // User: primID -> shape
     const Material* material = nullptr;
-    std::vector<int> lights;  // primID -> index of the light in the scene's list; empty: none
+    std::vector<int> lights;   // primID -> index of the light in the scene's list; empty: none
+    std::vector<int> windows;  // primID -> SurfaceInteraction::windowIndex; empty: none
     const ThermalEmission* thermal = nullptr;
     MediumInterface media;
     const AlphaMask* alpha = nullptr;        // cut-outs; nullptr: opaque
@@ -204,6 +205,7 @@ std::optional<ShapeIntersection> RecordHit(const GeomRecord& rec, const RTCRayHi
     }
     si.intr.material = rec.material;
     si.intr.lightIndex = rec.lights.empty() ? -1 : rec.lights[prim];
+    si.intr.windowIndex = rec.windows.empty() ? -1 : rec.windows[prim];
     si.intr.thermal = rec.thermal;
     si.intr.mediumInterface = rec.media;
     return si;
@@ -338,7 +340,8 @@ struct Accelerator::Impl {
     }
     void AddShapes(SceneBVH& s, std::span<const Shape> shapes, const Material* material,
                    std::span<const int> areaLights, const ThermalEmission* thermal,
-                   MediumInterface media, const AlphaMask* alpha);
+                   MediumInterface media, const AlphaMask* alpha,
+                   std::span<const int> windows = {});
     std::vector<int> RemoveUntraceableInstances();
 };
 
@@ -346,7 +349,7 @@ struct Accelerator::Impl {
 void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
                                   const Material* material, std::span<const int> areaLights,
                                   const ThermalEmission* thermal, MediumInterface media,
-                                  const AlphaMask* alpha) {
+                                  const AlphaMask* alpha, std::span<const int> windows) {
     primitives += shapes.size();
     for (const Shape& shape : shapes) s.bounds = Union(s.bounds, shape.Bounds());
     bool haveLights = !areaLights.empty();
@@ -388,6 +391,10 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
             rec->lights.reserve(idx.size());
             for (uint32_t i : idx) rec->lights.push_back(areaLights[i]);
         }
+        if (!windows.empty()) {
+            rec->windows.reserve(idx.size());
+            for (uint32_t i : idx) rec->windows.push_back(windows[i]);
+        }
         idx = {};  // released before the BVH build
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
         rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh->p.data(),
@@ -421,6 +428,7 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
         for (size_t i : others) {
             rec->shapes.push_back(shapes[i]);
             if (haveLights) rec->lights.push_back(areaLights[i]);
+            if (!windows.empty()) rec->windows.push_back(windows[i]);
         }
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(g, unsigned(rec->shapes.size()));
@@ -457,10 +465,14 @@ Accelerator::~Accelerator() {
 
 void Accelerator::Add(std::span<const Shape> shapes, const Material* material,
                       std::span<const int> lightIndices, const ThermalEmission* thermal,
-                      MediumInterface media, const AlphaMask* alpha) {
+                      MediumInterface media, const AlphaMask* alpha,
+                      std::span<const int> windowIndices) {
     if (!lightIndices.empty() && lightIndices.size() != shapes.size())
         throw std::invalid_argument("Accelerator::Add: need one light per shape or none");
-    impl->AddShapes(impl->top, shapes, material, lightIndices, thermal, media, alpha);
+    if (!windowIndices.empty() && windowIndices.size() != shapes.size())
+        throw std::invalid_argument("Accelerator::Add: need one window index per shape or none");
+    impl->AddShapes(impl->top, shapes, material, lightIndices, thermal, media, alpha,
+                    windowIndices);
 }
 
 int Accelerator::NewInstanceDefinition() {

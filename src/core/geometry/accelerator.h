@@ -49,9 +49,11 @@ class Accelerator {
     // materials and emission must outlive the accelerator; hits report them in
     // SurfaceInteraction. alpha (nullptr: opaque) cuts the shapes out where it is below 1, for
     // closest hits and shadow rays alike (alpha_mask.h); it must outlive the accelerator.
+    // windowIndices: empty, or one per shape, reported as SurfaceInteraction::windowIndex.
     void Add(std::span<const Shape> shapes, const Material* material,
              std::span<const int> lightIndices, const ThermalEmission* thermal,
-             MediumInterface media = {}, const AlphaMask* alpha = nullptr);
+             MediumInterface media = {}, const AlphaMask* alpha = nullptr,
+             std::span<const int> windowIndices = {});
     // Object instancing: a definition's shapes are given in the definition's own space (they
     // can glow, but are no lights).
     int NewInstanceDefinition();

@@ -86,6 +86,7 @@ constexpr std::string_view kNames[] = {
     "function",
     "g",
     "gain",
+    "glasswindows",
     "gridname",
     "h",
     "height",
