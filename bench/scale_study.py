@@ -445,12 +445,19 @@ def main():
                        and r["status"] == "ok" and r.get("cores") in (None, os.cpu_count())]
                 if sel:
                     pts.append((th, med(sel, "paths") / min(r["render_s"] for r in sel) / 1e6))
-            if pts:
-                series.append({"label": scene, "points": pts})
-                series.append({"label": f"{scene} ideal", "dash": True,
-                               "points": [(th, pts[0][1] * th) for th in threads]})
+            if len(pts) >= 2:  # measured, and extended to 64 threads: ideal and Amdahl
+                t2, p2 = pts[-1]
+                serial = min(1.0, max(0.0, (t2 * pts[0][1] / p2 - 1) / (t2 - 1)))
+                ahead = [1, 2, 4, 8, 16, 32, 64]
+                name = scene.replace(".pbrt", "")
+                series.append({"label": f"{name} measured", "points": pts})
+                series.append({"label": f"{name} ideal", "dash": True,
+                               "points": [(th, pts[0][1] * th) for th in ahead]})
+                series.append({"label": f"{name} Amdahl s={serial:.3f}", "dash": True,
+                               "points": [(th, pts[0][1] / (serial + (1 - serial) / th))
+                                          for th in ahead]})
         scale_svg.plot(os.path.join(args.results, "threads.svg"),
-                       "render throughput against threads (fastest run)", [
+                       "render throughput against threads: measured (fastest run) and projected", [
                            {"title": "camera paths per second", "xlabel": "threads",
                             "ylabel": "Mpaths/s", "series": series}])
         spp_t = rows[0]["spp"]
