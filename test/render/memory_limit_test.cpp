@@ -70,6 +70,43 @@ TEST(MemoryLimit, MeshesAndCurvesAreChargedBeforeTheyAreMade) {
     EXPECT_EQ(ErrorUnderLimit(curve, 10e6), "");
 }
 
+TEST(MemoryLimit, PlyTrianglesAreChargedOnceAndQuadsTwice) {
+    // 20000 separate triangles (4 MB at MemoryBudget::kBytesPerTriangle, 1.9 MB of vertices):
+    // created under 7.5 MB, which two triangles per face (a quad allowance) would exceed; the
+    // same faces as 20000 quads are 40000 triangles and are refused
+    auto write = [](const std::string& path, int corners) {
+        std::ofstream f(path, std::ios::binary);
+        const int n = 20000;
+        f << "ply\nformat binary_little_endian 1.0\nelement vertex " << n * corners
+          << "\nproperty float x\nproperty float y\nproperty float z\nelement face " << n
+          << "\nproperty list uchar int vertex_indices\nend_header\n";
+        for (int i = 0; i < n; ++i)
+            for (int c = 0; c < corners; ++c) {
+                float v[3] = {float(i % 100) + (c == 1 || c == 2), float(i / 100) + (c >= 2), 0};
+                f.write(reinterpret_cast<const char*>(v), sizeof v);
+            }
+        for (int i = 0; i < n; ++i) {
+            unsigned char k = (unsigned char)corners;
+            f.write(reinterpret_cast<const char*>(&k), 1);
+            for (int c = 0; c < corners; ++c) {
+                int index = i * corners + c;
+                f.write(reinterpret_cast<const char*>(&index), sizeof index);
+            }
+        }
+    };
+    std::string tris = ::testing::TempDir() + "/kiln_tris.ply",
+                quads = ::testing::TempDir() + "/kiln_quads.ply";
+    write(tris, 3);
+    write(quads, 4);
+    auto scene = [](const std::string& ply) {
+        return kSmallFilm + "Shape \"plymesh\" \"string filename\" \"" + ply + "\"\n";
+    };
+    EXPECT_EQ(ErrorUnderLimit(scene(tris), 7.5e6), "");
+    std::string e = ErrorUnderLimit(scene(quads), 7.5e6);
+    EXPECT_NE(e.find("(40000 triangles) needs"), std::string::npos) << e;
+    EXPECT_EQ(ErrorUnderLimit(scene(quads), 12e6), "");
+}
+
 TEST(MemoryLimit, ImagesAreChargedFromTheirHeader) {
     // A PPM header (read by OpenImageIO) claiming 30000 x 30000 RGB pixels (2.7 GB at 8 bits)
     // over 12 bytes of data

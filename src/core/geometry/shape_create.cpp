@@ -237,10 +237,13 @@ std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverse
         params.GetOneFloat("edgelength", 1);
     }
     TriQuadMesh ply;
-    // A header may claim any size: its counts are charged before the data are read (a face
-    // may be a quad: two triangles' worth)
+    // A header may claim any size: its counts are charged before the data are read, a face as
+    // one triangle; quads (two triangles each) are charged once read, which the file's size
+    // bounds
+    double chargedTriangles = 0;
     auto charge = [&](double vertices, double faces) {
-        arena.Budget().Charge(MeshBytes(2 * faces, vertices),
+        chargedTriangles = faces;
+        arena.Budget().Charge(MeshBytes(faces, vertices),
                               "PLY mesh \"" + filename + "\" (" +
                                   std::to_string(int64_t(vertices)) + " vertices, " +
                                   std::to_string(int64_t(faces)) + " faces)");
@@ -256,6 +259,12 @@ std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverse
         throw SceneError(LocOf(params, "filename", loc), e.Loc().ToString() + ": " + e.Message(),
                          filename);
     }
+    double readTriangles = double(ply.triIndices.size() / 3 + ply.quadIndices.size() / 2);
+    if (readTriangles > chargedTriangles)
+        Charge(arena, MeshBytes(readTriangles - chargedTriangles, 0),
+               "PLY mesh \"" + filename + "\" (" + std::to_string(int64_t(readTriangles)) +
+                   " triangles)",
+               LocOf(params, "filename", loc), filename);
     if (auto t = ply.vertexAttributes.find("temperature"); t != ply.vertexAttributes.end())
         CheckTemperatures(t->second, LocOf(params, "filename", loc), filename);
     if (displacement) {
