@@ -6,7 +6,7 @@
 // manifold search is needed: a point s sampled on the window fixes, by refraction, the ray
 // into the medium, and the emission along that first inner chord is estimated by ratio
 // tracking. volpath weighs this against the path's own refraction by MIS over the direction
-// to s (VolPathIntegrator::SampleWindowLd). Windows are chosen in proportion to their area;
+// to s (VolPathLightSampling::SampleWindowLd). Windows are chosen in proportion to their area;
 // from a point where the bounding sphere of all windows onto the same medium subtends a solid
 // angle Omega above kSolidAngleBudget, the choice is kept only with probability
 // kSolidAngleBudget / Omega (paths refract into so large a body often by themselves); the

@@ -417,7 +417,6 @@ void PreprocessLights(Scene& scene) {
     }
 }
 
-// The aggregate: shapes with their materials, lights and thermal emission, then instances
 // The glass windows of hot melts (glass_windows.h): the shapes of every directive touching a
 // medium that glows inside dielectrics, when their dielectric is non-dispersive and they
 // neither move nor have cut-outs; per directive, each shape's window index (or none).
@@ -455,6 +454,8 @@ std::vector<std::vector<int>> CreateGlassWindows(Scene& scene, const SceneDescri
     return windowIndices;
 }
 
+// The aggregate: shapes with their materials, lights, thermal emission and glass windows, then
+// instances
 void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<SceneShapes>& shapes,
                      const std::vector<std::vector<int>>& shapeLights,
                      const std::vector<std::vector<int>>& shapeWindows,
