@@ -77,7 +77,7 @@ const Case kCases[] = {
     {"glass, scattering melt", "\"dielectric\" \"float eta\" 1.5",
      "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.3 0.2 0.1] \"rgb sigma_s\" [2 1 3] "
      "\"float g\" 0.5",
-     "", 768},
+     "", 1024},
     {"glass, thin melt", "\"dielectric\" \"float eta\" 1.7",
      "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.05 0.05 0.05] \"rgb sigma_s\" [0 0 0]", "",
      512},
