@@ -106,6 +106,9 @@ std::string UsageText() {
            "                        as pbrt-v4)\n"
            "  --glass-windows W     media glowing inside glass: sampled through the glass\n"
            "                        (on, default) or found by chance refractions (off)\n"
+           "  --exact-medium-emission E  emission of uniform media along each ray segment:\n"
+           "                        integrated exactly (on, default) or met at collisions\n"
+           "                        (off, as pbrt-v4)\n"
            "  --strategy S          direct light by mis (default), light or bsdf sampling\n"
            "  --wavelengths N       wavelengths per path: 4 (hero, default) or 1\n"
            "  --view NAME           display view for PNG/JPEG/TIFF outputs: Standard, Filmic,\n"
@@ -165,6 +168,7 @@ const char* const kOptions[] = {"--help",
                                 "--emitter-sampling",
                                 "--medium-emission",
                                 "--glass-windows",
+                                "--exact-medium-emission",
                                 "--strategy",
                                 "--wavelengths",
                                 "--view",
@@ -352,6 +356,10 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
             o.glassWindows = value();
             if (*o.glassWindows != "on" && *o.glassWindows != "off")
                 throw std::invalid_argument("--glass-windows expects on or off");
+        } else if (a == "--exact-medium-emission") {
+            o.exactMediumEmission = value();
+            if (*o.exactMediumEmission != "on" && *o.exactMediumEmission != "off")
+                throw std::invalid_argument("--exact-medium-emission expects on or off");
         } else if (a == "--strategy") {
             o.strategy = value();
             if (*o.strategy != "mis" && *o.strategy != "light" && *o.strategy != "bsdf")

@@ -133,6 +133,8 @@ RenderOptions RenderOptionsFor(const CommandLineOptions& options, std::optional<
     if (options.mediumEmission)
         renderOptions.mediumEmissionSampling = ParseMediumEmissionSampling(*options.mediumEmission);
     if (options.glassWindows) renderOptions.glassWindows = *options.glassWindows == "on";
+    if (options.exactMediumEmission)
+        renderOptions.exactMediumEmission = *options.exactMediumEmission == "on";
     if (options.wavelengths) renderOptions.singleWavelength = *options.wavelengths == 1;
     return renderOptions;
 }

@@ -33,6 +33,7 @@ class CloudMedium {
                                ObjectArena& arena, Diagnostics& diag);
 
     bool IsEmissive() const { return thermal.IsEmissive(); }
+    bool IsUniform() const { return false; }
     MediumEmission& Emission() { return thermal; }
     MediumProperties SamplePoint(Point3f p, const SampledWavelengths& lambda) const;
     MajorantIterator SampleRay(const Ray& ray, Float tMax, const SampledWavelengths& lambda) const;

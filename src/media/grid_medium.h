@@ -41,6 +41,7 @@ class GridMedium {
                                      ObjectArena& arena, Diagnostics& diag);
 
     bool IsEmissive() const { return emission.IsEmissive(); }
+    bool IsUniform() const { return false; }
     MediumEmission& Emission() { return emission; }
     MediumProperties SamplePoint(Point3f p, const SampledWavelengths& lambda) const;
     MajorantIterator SampleRay(const Ray& ray, Float tMax, const SampledWavelengths& lambda) const;

@@ -26,6 +26,7 @@ class HomogeneousMedium {
                                      ObjectArena& arena, Diagnostics& diag);
 
     bool IsEmissive() const { return emission.IsEmissive(); }
+    bool IsUniform() const { return emission.IsUniform(); }
     MediumEmission& Emission() { return emission; }
     MediumProperties SamplePoint(Point3f p, const SampledWavelengths& lambda) const {
         MediumProperties mp{sigma_a.Sample(lambda) * scale, sigma_s.Sample(lambda) * scale, g, {}};

@@ -42,11 +42,39 @@ class Medium : public ClosedSet<HomogeneousMedium*, GridMedium*, RGBGridMedium*,
     void SetRefractiveIndex(const Spectrum& eta) {
         Dispatch([&](auto m) { m->Emission().SetRefractiveIndex(eta); });
     }
+    // Coefficients and emission the same everywhere (UniformSegmentEmission is exact).
+    bool IsUniform() const {
+        return Dispatch([](auto m) { return m->IsUniform(); });
+    }
     bool IsThermal() const {
         return Dispatch([](auto m) { return m->Emission().IsThermal(); });
     }
     MediumProperties SamplePoint(Point3f p, const SampledWavelengths& lambda) const {
         return Dispatch([&](auto m) { return m->SamplePoint(p, lambda); });
+    }
+    // The emission reaching a ray's origin from its first `distance` (render-space units; may
+    // be infinite) inside the medium: the integral of T(t) sigma_a Le over [0, distance], per
+    // wavelength, W m^-2 sr^-1 nm^-1. Computed exactly where the medium and its emission are
+    // the same everywhere, (1 - exp(-sigma_t d)) sigma_a Le / sigma_t (homogeneous media
+    // with constant emission); nullopt elsewhere (grids, textured temperatures).
+    std::optional<SampledSpectrum> UniformSegmentEmission(Float distance,
+                                                          const SampledWavelengths& lambda) const {
+        return Dispatch([&](auto m) -> std::optional<SampledSpectrum> {
+            if (!m->IsUniform()) return std::nullopt;
+            MediumProperties mp = m->SamplePoint(Point3f(0, 0, 0), lambda);
+            SampledSpectrum E;
+            for (int i = 0; i < NSpectrumSamples; ++i) {
+                Float sigma_t = mp.sigma_a[i] + mp.sigma_s[i];
+                if (mp.emission[i] == 0 || !(sigma_t > 0))
+                    continue;  // every model emits
+                               // on extinction
+                Float x = sigma_t * distance;
+                // 1 - exp(-x) over sigma_t, to distance where x is small
+                E[i] = mp.emission[i] *
+                       (x > Float(1e-4) ? -std::expm1(-x) / sigma_t : distance * (1 - x / 2));
+            }
+            return E;
+        });
     }
     // The majorant segments of ray (render space, unit direction) over [0, tMax].
     MajorantIterator SampleRay(const Ray& ray, Float tMax, const SampledWavelengths& lambda) const {

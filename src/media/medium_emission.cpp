@@ -47,6 +47,20 @@ MediumEmission MediumEmission::Thermal(SampledGrid<Float> temperature, Float off
     return e;
 }
 
+bool MediumEmission::IsUniform() const {
+    switch (kind) {
+        case Kind::None:
+            return true;
+        case Kind::Radiance:
+            return LeScale.Empty();
+        case Kind::NormalizedBlackbody:
+            return false;
+        case Kind::Thermal:
+            return temperatureTexture && temperatureTexture->ConstantValue().has_value();
+    }
+    return false;
+}
+
 void MediumEmission::Apply(MediumProperties& mp, Point3f pRender, Point3f pUnit,
                            const SampledWavelengths& lambda) const {
     switch (kind) {

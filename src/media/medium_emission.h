@@ -44,6 +44,9 @@ class MediumEmission {
 
     bool IsEmissive() const { return kind != Kind::None; }
     bool IsThermal() const { return kind == Kind::Thermal; }
+    // Whether Apply sets the same emission (and moves the same scattering to absorption) at
+    // every point: no emission, Le without a per-voxel scale, or a constant temperature.
+    bool IsUniform() const;
     // The refractive index of the body the medium fills (thermal emission only).
     void SetRefractiveIndex(Spectrum eta) { this->eta = eta; }
     // Sets mp.emission (and for the "diffuse" model moves scattering to absorption) at the

@@ -26,6 +26,7 @@ class RGBGridMedium {
                                  ObjectArena& arena, Diagnostics& diag);
 
     bool IsEmissive() const { return (!Le.Empty() && LeScale > 0) || thermal.IsEmissive(); }
+    bool IsUniform() const { return false; }
     MediumEmission& Emission() { return thermal; }
     MediumProperties SamplePoint(Point3f p, const SampledWavelengths& lambda) const;
     MajorantIterator SampleRay(const Ray& ray, Float tMax, const SampledWavelengths& lambda) const;

@@ -49,6 +49,8 @@ std::string RenderOptionsKey(const RenderOptions& o) {
     key += ";mediumemission=" +
            optional(o.mediumEmissionSampling, [](bool b) { return b ? "sampled" : "tracked"; });
     key += ";glasswindows=" + optional(o.glassWindows, [](bool b) { return b ? "1" : "0"; });
+    key += ";exactmediumemission=" +
+           optional(o.exactMediumEmission, [](bool b) { return b ? "1" : "0"; });
     key += ";wavelengths=" + optional(o.singleWavelength, [](bool b) { return b ? "1" : "4"; });
     return key;
 }

@@ -20,7 +20,7 @@ std::string SceneFeatures::ToString() const {
         "light sampler %s; area lights %s, environment light %s, dispersion %s; shadow rays "
         "cross %d sheet material%s; subsurface materials %d (%d BSSRDF tables in %.3f s); "
         "polarisation %s; media %d (%d emissive, %d thermal, %d sampled as lights in %.3f s, "
-        "%d glass windows onto hot media), "
+        "%d glass windows onto hot media, %d uniform ones integrated exactly along rays), "
         "integrator %s%s%s%s",
         onOff(thermalEmission), thermalLights, emissivityTables, emissivitySeconds,
         varyingTemperatures ? ", varying temperatures" : "", footprintMaterials, materials,
@@ -34,7 +34,7 @@ std::string SceneFeatures::ToString() const {
         onOff(areaLights), onOff(environmentLight), onOff(dispersion), sheets,
         sheets == 1 ? "" : "s", subsurface, bssrdfTables, bssrdfSeconds,
         polarized ? "on (Stokes vectors, Mueller matrices)" : "off", media, emissiveMedia,
-        thermalMedia, sampledMedia, mediumSamplerSeconds, glassWindows,
+        thermalMedia, sampledMedia, mediumSamplerSeconds, glassWindows, exactEmissionMedia,
         bidirectional ? "bdpt"
         : volumetric  ? "volpath"
                       : "path",

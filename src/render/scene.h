@@ -63,6 +63,10 @@ struct PathIntegratorSettings {
     // (render/glass_windows.h; true, default, with "mediumemission" "sampled") or found by
     // chance refractions alone (false, for comparisons)
     bool glassWindows = true;
+    // kiln "bool exactmediumemission": the emission of a uniform medium (homogeneous, constant
+    // emission) along a ray segment no light sampling strategy could have found is integrated
+    // exactly (true, default) rather than met at tentative collisions (false, pbrt-v4's way)
+    bool exactMediumEmission = true;
 };
 
 // What a scene uses and what kiln chose for it at load; every choice selects code (kiln
@@ -103,6 +107,9 @@ struct SceneFeatures {
     // Emissive media volpath samples as light sources (MediumEmissionSampler), and the time
     // estimating their emission took
     int sampledMedia = 0, glassWindows = 0;
+    // Emissive media whose emission volpath integrates exactly along ray segments
+    // (Scene::exactEmissionMedia)
+    int exactEmissionMedia = 0;
     double mediumSamplerSeconds = 0;
     bool volumetric = false, genericVolumes = false;
     bool unnormalizedLightSamples = false;  // Light::HasUnnormalizedSamples (pbrt-v4 compatibility)
@@ -236,6 +243,9 @@ class Scene {
     // The glass windows of media glowing inside dielectrics (SurfaceInteraction::windowIndex;
     // nullptr: none, or "mediumemission" "tracked")
     std::unique_ptr<GlassWindows> glassWindows;
+    // Per medium: whether it is emissive and uniform, its emission then integrated exactly along
+    // ray segments (Medium::UniformSegmentEmission; empty: none, or "exactmediumemission" false)
+    std::vector<char> exactEmissionMedia;
     PathIntegratorSettings integrator;
     bool disablePixelJitter = false;
     // Camera "float polarizer" (kiln): a linear polariser in front of the film, its

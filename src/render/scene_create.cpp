@@ -81,6 +81,8 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOpti
                          "unknown medium emission (expected \"sampled\" or \"tracked\")", me);
     s.mediumEmissionSampling = options.mediumEmissionSampling.value_or(*sampled);
     s.glassWindows = options.glassWindows.value_or(e.parameters.GetOneBool("glasswindows", true));
+    s.exactMediumEmission =
+        options.exactMediumEmission.value_or(e.parameters.GetOneBool("exactmediumemission", true));
     std::string ls = e.parameters.GetOneString("lightsampler", "bvh");
     std::optional<LightSelection> sel = ParseLightSelection(ls);
     if (!sel)
@@ -686,6 +688,10 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
     if (scene.features.volumetric) CreateMediumEmitters(scene, shapes);
     scene.features.sampledMedia = scene.mediumEmission ? scene.mediumEmission->Emitters() : 0;
     scene.features.glassWindows = scene.glassWindows ? scene.glassWindows->Count() : 0;
+    if (scene.features.volumetric && scene.integrator.exactMediumEmission)
+        scene.exactEmissionMedia = ExactEmissionMedia(scene.media);
+    scene.features.exactEmissionMedia =
+        int(std::count(scene.exactEmissionMedia.begin(), scene.exactEmissionMedia.end(), 1));
     DecideBidirectional(scene, desc, diag);
     if (!scene.integrator.volumetric && !scene.media.empty())
         diag.Warn(desc.integrator.loc,

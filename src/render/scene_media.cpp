@@ -49,6 +49,13 @@ int MediumIndex(const std::string& name, const MediumIndices& media, const FileL
     return it->second;
 }
 
+std::vector<char> ExactEmissionMedia(std::span<const Medium> media) {
+    std::vector<char> exact(media.size(), 0);
+    for (size_t i = 0; i < media.size(); ++i)
+        exact[i] = media[i].IsEmissive() && media[i].IsUniform();
+    return exact;
+}
+
 std::vector<bool> GlowingInsideDielectrics(std::span<const Medium> media,
                                            std::span<const MediumBoundary> boundaries) {
     std::vector<bool> inside(media.size(), false);

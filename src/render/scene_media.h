@@ -54,6 +54,10 @@ struct MediumBoundary {
 std::vector<bool> GlowingInsideDielectrics(std::span<const Medium> media,
                                            std::span<const MediumBoundary> boundaries);
 
+// Per medium: 1 where it is emissive and uniform (Medium::IsUniform), so that volpath
+// integrates its emission along each ray segment exactly (Scene::exactEmissionMedia).
+std::vector<char> ExactEmissionMedia(std::span<const Medium> media);
+
 // The emissive media volpath samples as light sources (nullptr: none): each within its own
 // box, or the box of the shapes it fills or surrounds (outside shapes only, a medium may reach
 // further: emission there is still found by tracking), or both intersected. Not sampled: media

@@ -8,7 +8,9 @@
 // (unidirectional) and r_l (light sampling) combine the wavelengths and the two strategies in
 // one spectral MIS estimate (Miller, Georgiev & Jarosz 2019). Shadow rays pass through
 // interface surfaces and estimate transmittance by ratio tracking. Media emit at every
-// tentative collision (sigma_a Le, or thermal emission: medium_emission.h). Light sampling
+// tentative collision (sigma_a Le, or thermal emission: medium_emission.h), except where a
+// uniform medium's emission along the whole segment is integrated exactly (Integrator "bool
+// exactmediumemission", on segments no light sampling could have found). Light sampling
 // (volpath_light_sampling.h) also samples kiln's emitters besides lights, by default
 // (Integrator "string mediumemission" "sampled"): a point of a hot medium by emitted power,
 // and a hot medium inside glass through its glass ("bool glasswindows"); emission the path
@@ -41,6 +43,7 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
     using Base::EmissionWeight;
     using Base::kMaxInterfaceCrossings;
     using Base::MediumEmissionPDF;
+    using Base::MediumEmissionSampled;
     using Base::SampleEmittersLd;
     using Base::SampleLd;
     using Base::scene;
@@ -81,6 +84,24 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
                 // Sample the medium up to the surface hit (or forever)
                 bool scattered = false, terminated = false;
                 Float tMax = si ? si->tHit : Infinity;
+                // A uniform medium's emission along the whole segment, integrated exactly
+                // where no light sampling strategy could have found it (MIS would weigh it
+                // point by point): camera rays, after specular bounces, from a point
+                // scattering in the medium itself, or a medium not sampled as a light
+                bool emissionDone = false;
+                if (depth < maxDepth && !windowChord && !scene.exactEmissionMedia.empty() &&
+                    scene.exactEmissionMedia[size_t(medium)] &&
+                    (depth == 0 || specularBounce ||
+                     !MediumEmissionSampled(medium, prevScatterMedium))) {
+                    if (std::optional<SampledSpectrum> E =
+                            scene.media[size_t(medium)].UniformSegmentEmission(tMax * Length(ray.d),
+                                                                               lambda)) {
+                        emissionDone = true;
+                        if (*E)
+                            L += Radiance::Apply(
+                                beta, Radiance::Unpolarized(*E / WavelengthMean(r_u, lambda)));
+                    }
+                }
                 RNG rng(Hash(sampler.Get1D()), Hash(sampler.Get1D()));
                 SampledSpectrum T_maj = scene.media[size_t(medium)].SampleT_maj(
                     ray, tMax, sampler.Get1D(), rng, lambda,
@@ -92,7 +113,7 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
                         }
                         // Emission at the tentative collision, weighted against sampling
                         // the medium's emission from the previous vertex
-                        if (depth < maxDepth && mp.emission) {
+                        if (depth < maxDepth && !emissionDone && mp.emission) {
                             Float pdf = sigma_maj[0] * T_maj[0];
                             SampledSpectrum r_e = r_u * sigma_maj * T_maj / pdf;
                             Float p_l = depth == 0 || specularBounce

@@ -206,6 +206,13 @@ class VolPathLightSampling {
         return pdf > 0 ? pdf * DistanceSquared(from, p) : 0;
     }
 
+    // Whether a vertex (scattering in fromMedium, or a surface: -1) samples medium's emission as
+    // a light, so that emission met in it is weighted against that (MediumEmissionPDF > 0).
+    bool MediumEmissionSampled(int medium, int fromMedium) const {
+        return mediumEmission && settings.strategy != LightStrategy::BSDFOnly &&
+               medium != fromMedium && mediumEmission->EmitterOf(medium) >= 0;
+    }
+
     // Next-event estimation of medium emission: a point of a hot medium drawn by emitted
     // power (MediumEmissionSampler), its emission sigma_a Le through the shadow ray's
     // transmittance, weighted by spectral MIS against meeting it at a tentative collision of

@@ -1,5 +1,7 @@
 #include "textures/texture.h"
 
+#include <type_traits>
+
 #include "core/parser/suggestions.h"
 #include "textures/basic_textures.h"
 #include "textures/checkerboard_texture.h"
@@ -114,6 +116,15 @@ SpectrumTexture CreateSpectrumTexture(const std::string& name, const Transform& 
 // Footprint use: every class says (one without UsesFootprint does not compile)
 bool FloatTexture::UsesFootprint() const {
     return Dispatch([](auto t) { return t->UsesFootprint(); });
+}
+
+std::optional<Float> FloatTexture::ConstantValue() const {
+    return Dispatch([](auto t) -> std::optional<Float> {
+        if constexpr (std::is_same_v<std::decay_t<decltype(*t)>, FloatConstantTexture>)
+            return t->Value();
+        else
+            return std::nullopt;
+    });
 }
 
 bool SpectrumTexture::UsesFootprint() const {

@@ -66,6 +66,8 @@ class FloatTexture
     // textures filter with it, checkerboards and noise antialias with it. Shading computes
     // footprints only for surfaces that need them.
     bool UsesFootprint() const;
+    // The value when it is the same everywhere (a constant texture), else nullopt.
+    std::optional<Float> ConstantValue() const;
 };
 
 // SpectrumTexture Definition

@@ -70,6 +70,7 @@ constexpr std::string_view kNames[] = {
     "encoding",
     "eta",
     "eumelanin",
+    "exactmediumemission",
     "exposure",
     "extrapolate",
     "faceIndices",
