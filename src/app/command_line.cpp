@@ -109,6 +109,9 @@ std::string UsageText() {
            "  --exact-medium-emission E  emission of uniform media along each ray segment:\n"
            "                        integrated exactly (on, default) or met at collisions\n"
            "                        (off, as pbrt-v4)\n"
+           "  --wavelength-sampling W  wavelengths in scenes with hot matter: partly by the\n"
+           "                        spectrum it radiates (emission, default) or by the\n"
+           "                        visible density alone (visible, as pbrt-v4)\n"
            "  --strategy S          direct light by mis (default), light or bsdf sampling\n"
            "  --wavelengths N       wavelengths per path: 4 (hero, default) or 1\n"
            "  --view NAME           display view for PNG/JPEG/TIFF outputs: Standard, Filmic,\n"
@@ -169,6 +172,7 @@ const char* const kOptions[] = {"--help",
                                 "--medium-emission",
                                 "--glass-windows",
                                 "--exact-medium-emission",
+                                "--wavelength-sampling",
                                 "--strategy",
                                 "--wavelengths",
                                 "--view",
@@ -360,6 +364,10 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
             o.exactMediumEmission = value();
             if (*o.exactMediumEmission != "on" && *o.exactMediumEmission != "off")
                 throw std::invalid_argument("--exact-medium-emission expects on or off");
+        } else if (a == "--wavelength-sampling") {
+            o.wavelengthSampling = value();
+            if (*o.wavelengthSampling != "emission" && *o.wavelengthSampling != "visible")
+                throw std::invalid_argument("--wavelength-sampling expects emission or visible");
         } else if (a == "--strategy") {
             o.strategy = value();
             if (*o.strategy != "mis" && *o.strategy != "light" && *o.strategy != "bsdf")

@@ -24,6 +24,20 @@ std::optional<LightBounds> Light::Bounds() const {
     return lb;
 }
 
+std::optional<Light::ThermalOutput> Light::Thermal() const {
+    return Dispatch([](auto l) -> std::optional<ThermalOutput> {
+#if KILN_THERMAL_EMISSION
+        using T = std::remove_cv_t<std::remove_pointer_t<decltype(l)>>;
+        if constexpr (std::is_same_v<T, ThermalAreaLight>) {
+            if (l->MeanTemperature() > 0 && l->VisiblePower() > 0)
+                return ThermalOutput{l->MeanTemperature(), l->VisiblePower()};
+        }
+#endif
+        (void)l;
+        return std::nullopt;
+    });
+}
+
 Float Light::Power() const {
     SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.5f);
     Float p = SafeDiv(Phi(lambda), lambda.PDF()).Average();

@@ -178,6 +178,13 @@ class Light
     // The light's weight for light selection: its power over 360-830 nm, W (pbrt-v4: Phi /
     // pdf averaged over the four wavelengths SampleVisible(0.5) gives); 0 if not finite.
     Float Power() const;
+    // What a hot surface radiates, for the film's choice of wavelengths
+    // (spectral/wavelength_distribution.h): nullopt for lights other than thermal ones.
+    struct ThermalOutput {
+        Float temperature;   // K, the power-weighted mean over the surface
+        Float visiblePower;  // W over 360-830 nm
+    };
+    std::optional<ThermalOutput> Thermal() const;
     // Spatial and directional bounds of the emission (lights at infinity: none), with phi =
     // Power().
     std::optional<LightBounds> Bounds() const;

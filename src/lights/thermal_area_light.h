@@ -118,6 +118,8 @@ class ThermalAreaLight {
     // Emitted power over 360-830 nm, W (both sides), as estimated at creation (or by the last
     // EstimatePower).
     Float VisiblePower() const { return visiblePower; }
+    // Its power-weighted mean temperature, K, as estimated with the power.
+    Float MeanTemperature() const { return meanTemperature; }
     // Spectral power, W nm^-1, for light selection: VisiblePower() distributed over wavelength
     // like a blackbody at the light's power-weighted mean temperature (an estimate: the
     // emissivity's spectral shape is not kept).

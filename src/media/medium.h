@@ -46,6 +46,10 @@ class Medium : public ClosedSet<HomogeneousMedium*, GridMedium*, RGBGridMedium*,
     bool IsUniform() const {
         return Dispatch([](auto m) { return m->IsUniform(); });
     }
+    // MediumEmission::RepresentativeTemperature.
+    std::optional<Float> EmissionTemperature() const {
+        return Dispatch([](auto m) { return m->Emission().RepresentativeTemperature(); });
+    }
     bool IsThermal() const {
         return Dispatch([](auto m) { return m->Emission().IsThermal(); });
     }

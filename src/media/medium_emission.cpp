@@ -1,5 +1,8 @@
 #include "media/medium_emission.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "spectral/cie.h"
 #include "spectral/planck.h"
 #include "textures/texture_eval_context.h"
@@ -59,6 +62,31 @@ bool MediumEmission::IsUniform() const {
             return temperatureTexture && temperatureTexture->ConstantValue().has_value();
     }
     return false;
+}
+
+std::optional<Float> MediumEmission::RepresentativeTemperature() const {
+    if (kind != Kind::Thermal) return std::nullopt;
+    if (temperatureTexture) {
+        std::optional<Float> T = temperatureTexture->ConstantValue();
+        return T && *T > 0 ? T : std::nullopt;
+    }
+    // At most 32 voxels per axis, evenly strided
+    auto stride = [](int n) { return std::max(1, n / 32); };
+    int sx = stride(temperatureGrid.XSize()), sy = stride(temperatureGrid.YSize()),
+        sz = stride(temperatureGrid.ZSize());
+    double weighted = 0, weights = 0;
+    for (int z = 0; z < temperatureGrid.ZSize(); z += sz)
+        for (int y = 0; y < temperatureGrid.YSize(); y += sy)
+            for (int x = 0; x < temperatureGrid.XSize(); x += sx) {
+                double T =
+                    (double(temperatureGrid.At(x, y, z)) - temperatureOffset) * temperatureScale;
+                if (!(T > 0) || !std::isfinite(T)) continue;
+                double w = planck_band_radiance(Lambda_min, Lambda_max, T);
+                weighted += w * T;
+                weights += w;
+            }
+    if (!(weights > 0)) return std::nullopt;
+    return Float(weighted / weights);
 }
 
 void MediumEmission::Apply(MediumProperties& mp, Point3f pRender, Point3f pUnit,

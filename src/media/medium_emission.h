@@ -47,6 +47,10 @@ class MediumEmission {
     // Whether Apply sets the same emission (and moves the same scattering to absorption) at
     // every point: no emission, Le without a per-voxel scale, or a constant temperature.
     bool IsUniform() const;
+    // A temperature for the spectrum of thermal emission (K): a constant one, or the mean of a
+    // grid's voxels weighted by their visible blackbody radiance; nullopt for other emission
+    // and temperature textures that vary.
+    std::optional<Float> RepresentativeTemperature() const;
     // The refractive index of the body the medium fills (thermal emission only).
     void SetRefractiveIndex(Spectrum eta) { this->eta = eta; }
     // Sets mp.emission (and for the "diffuse" model moves scattering to absorption) at the

@@ -12,7 +12,12 @@ Scene::~Scene() = default;
 
 std::string SceneFeatures::ToString() const {
     auto onOff = [](bool b) { return b ? "on" : "off"; };
-    char buf[1024];
+    char wavelengths[96] = "by the visible density";
+    if (wavelengthVisibleShare < 1)
+        std::snprintf(wavelengths, sizeof(wavelengths),
+                      "%.0f %% by the visible density, the rest by hot matter's spectrum",
+                      100 * wavelengthVisibleShare);
+    char buf[1200];
     std::snprintf(
         buf, sizeof(buf),
         "thermal emission %s (%d lights, %d emissivity tables in %.2f s%s); texture footprints "
@@ -20,7 +25,8 @@ std::string SceneFeatures::ToString() const {
         "light sampler %s; area lights %s, environment light %s, dispersion %s; shadow rays "
         "cross %d sheet material%s; subsurface materials %d (%d BSSRDF tables in %.3f s); "
         "polarisation %s; media %d (%d emissive, %d thermal, %d sampled as lights in %.3f s, "
-        "%d glass windows onto hot media, %d uniform ones integrated exactly along rays), "
+        "%d glass windows onto hot media, %d uniform ones integrated exactly along rays); "
+        "wavelengths %s, "
         "integrator %s%s%s%s",
         onOff(thermalEmission), thermalLights, emissivityTables, emissivitySeconds,
         varyingTemperatures ? ", varying temperatures" : "", footprintMaterials, materials,
@@ -35,6 +41,7 @@ std::string SceneFeatures::ToString() const {
         sheets == 1 ? "" : "s", subsurface, bssrdfTables, bssrdfSeconds,
         polarized ? "on (Stokes vectors, Mueller matrices)" : "off", media, emissiveMedia,
         thermalMedia, sampledMedia, mediumSamplerSeconds, glassWindows, exactEmissionMedia,
+        wavelengths,
         bidirectional ? "bdpt"
         : volumetric  ? "volpath"
                       : "path",

@@ -67,6 +67,10 @@ struct PathIntegratorSettings {
     // emission) along a ray segment no light sampling strategy could have found is integrated
     // exactly (true, default) rather than met at tentative collisions (false, pbrt-v4's way)
     bool exactMediumEmission = true;
+    // kiln "string wavelengthsampling": in scenes with hot matter, the film draws wavelengths
+    // partly by the spectrum it radiates ("emission", default; render/scene_wavelengths.h)
+    // or by pbrt-v4's visible density alone ("visible", for comparisons)
+    bool emissionWavelengths = true;
 };
 
 // What a scene uses and what kiln chose for it at load; every choice selects code (kiln
@@ -110,6 +114,9 @@ struct SceneFeatures {
     // Emissive media whose emission volpath integrates exactly along ray segments
     // (Scene::exactEmissionMedia)
     int exactEmissionMedia = 0;
+    // The share of the visible density in the film's wavelength distribution (1: visible
+    // density alone; less where hot matter's spectrum makes the rest: scene_wavelengths.h)
+    Float wavelengthVisibleShare = 1;
     double mediumSamplerSeconds = 0;
     bool volumetric = false, genericVolumes = false;
     bool unnormalizedLightSamples = false;  // Light::HasUnnormalizedSamples (pbrt-v4 compatibility)
@@ -246,6 +253,8 @@ class Scene {
     // Per medium: whether it is emissive and uniform, its emission then integrated exactly along
     // ray segments (Medium::UniformSegmentEmission; empty: none, or "exactmediumemission" false)
     std::vector<char> exactEmissionMedia;
+    // The wavelengths every job's film draws (render/scene_wavelengths.h)
+    WavelengthDistribution wavelengths;
     PathIntegratorSettings integrator;
     bool disablePixelJitter = false;
     // Camera "float polarizer" (kiln): a linear polariser in front of the film, its

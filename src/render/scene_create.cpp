@@ -20,6 +20,7 @@
 #include "render/scene.h"
 #include "render/scene_emitters.h"
 #include "render/scene_media.h"
+#include "render/scene_wavelengths.h"
 #include "spectral/color.h"
 #include "textures/basic_textures.h"
 #include "textures/texture_alpha_mask.h"
@@ -83,6 +84,11 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOpti
     s.glassWindows = options.glassWindows.value_or(e.parameters.GetOneBool("glasswindows", true));
     s.exactMediumEmission =
         options.exactMediumEmission.value_or(e.parameters.GetOneBool("exactmediumemission", true));
+    std::string ws = e.parameters.GetOneString("wavelengthsampling", "emission");
+    if (ws != "emission" && ws != "visible")
+        throw SceneError(e.parameters.Loc("wavelengthsampling"),
+                         "unknown wavelength sampling (expected \"emission\" or \"visible\")", ws);
+    s.emissionWavelengths = options.emissionWavelengths.value_or(ws == "emission");
     std::string ls = e.parameters.GetOneString("lightsampler", "bvh");
     std::optional<LightSelection> sel = ParseLightSelection(ls);
     if (!sel)
@@ -105,6 +111,7 @@ void CreateJobFilm(Scene& scene, RenderJob& job, const RenderOptions& options, D
     job.film = RGBFilm::Create(r.film.name, r.film.parameters, r.exposureTime, *scene.filter,
                                r.colorSpace, r.film.loc, job.arena, diag, request);
     job.chargedBytes = job.arena.Budget().Committed() - before;
+    job.film->SetWavelengths(scene.wavelengths);
 }
 
 // The render job's sampler (the options' samples per pixel and seed) and shader
@@ -692,6 +699,8 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
         scene.exactEmissionMedia = ExactEmissionMedia(scene.media);
     scene.features.exactEmissionMedia =
         int(std::count(scene.exactEmissionMedia.begin(), scene.exactEmissionMedia.end(), 1));
+    scene.wavelengths = CreateWavelengthDistribution(scene, &scene.features.wavelengthVisibleShare);
+    scene.job->film->SetWavelengths(scene.wavelengths);
     DecideBidirectional(scene, desc, diag);
     if (!scene.integrator.volumetric && !scene.media.empty())
         diag.Warn(desc.integrator.loc,
@@ -733,6 +742,9 @@ void Scene::SetAnimation(const TemperatureAnimation& next) {
     // Media whose temperatures follow the animation: their emission estimated again
     if (mediumEmission)
         mediumEmission = std::make_unique<MediumEmissionSampler>(media, mediumEmission->Regions());
+    // The film's wavelengths follow what now glows, as a fresh load of this frame would draw them
+    wavelengths = CreateWavelengthDistribution(*this, &features.wavelengthVisibleShare);
+    if (job) job->film->SetWavelengths(wavelengths);
 }
 
 std::unique_ptr<Scene> Scene::Create(SceneDescription& desc, const RenderOptions& options,

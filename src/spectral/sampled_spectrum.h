@@ -165,6 +165,15 @@ class SampledWavelengths {
         return 538 - 138.888889f * std::atanh(0.85691062f - 1.82750197f * u);
     }
 
+    // Wavelengths (nm) drawn by some other density, with their densities (per nm).
+    static SampledWavelengths FromSamples(const std::array<Float, NSpectrumSamples>& lambda,
+                                          const std::array<Float, NSpectrumSamples>& pdf) {
+        SampledWavelengths swl;
+        swl.lambda = lambda;
+        swl.pdf = pdf;
+        return swl;
+    }
+
     // All samples at one wavelength (nm) with density 1: for evaluating spectra and BSDFs
     // at chosen wavelengths (tables, tests), not for Monte Carlo estimates.
     static SampledWavelengths FromWavelength(Float lambda_nm) {

@@ -29,6 +29,7 @@
 #include "spectral/color.h"
 #include "spectral/polarization.h"
 #include "spectral/sampled_spectrum.h"
+#include "spectral/wavelength_distribution.h"
 
 namespace kiln {
 
@@ -153,9 +154,10 @@ class RGBFilm {
     // Whether the film records the Stokes components (film "stokes").
     bool WritesStokes() const { return opts.stokes; }
 
-    SampledWavelengths SampleWavelengths(Float u) const {
-        return SampledWavelengths::SampleVisible(u);
-    }
+    // The wavelengths of one path sample, drawn by the distribution scene creation chose
+    // (the visible density unless set).
+    SampledWavelengths SampleWavelengths(Float u) const { return wavelengths.Sample(u); }
+    void SetWavelengths(WavelengthDistribution d) { wavelengths = std::move(d); }
 
     // Adds a radiance sample L (W m^-2 sr^-1 nm^-1 at lambda) to pixel pPixel (inside the
     // pixel bounds) with filter weight `weight` (f / pdf of the importance-sampled filter).
@@ -219,6 +221,7 @@ class RGBFilm {
     bool LoadState(std::string_view state);
 
   private:
+    WavelengthDistribution wavelengths;
     // RGBFilm Private Members
     struct Pixel {
         double rgbSum[3] = {0, 0, 0};  // sensor RGB, weighted

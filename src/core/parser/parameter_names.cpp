@@ -221,6 +221,7 @@ constexpr std::string_view kNames[] = {
     "vscale",
     "wavefront",
     "wavelengths",
+    "wavelengthsampling",
     "whitebalance",
     "width",
     "width0",

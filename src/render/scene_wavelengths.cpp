@@ -1,0 +1,59 @@
+#include "render/scene_wavelengths.h"
+
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include "render/scene.h"
+#include "spectral/planck.h"
+
+namespace kiln {
+
+WavelengthDistribution CreateWavelengthDistribution(const Scene& scene, Float* visibleShare) {
+    *visibleShare = 1;
+    if (!scene.integrator.emissionWavelengths) return {};
+    // Temperatures in bins 1 % wide, with their power over 360-830 nm (W), so that a mesh of a
+    // million hot triangles costs one pass over its lights
+    std::map<int, double> binPower;
+    auto binOf = [](double T) { return int(std::lround(std::log(T) / std::log(1.01))); };
+    double lightPower = 0;
+    bool others = false;
+    for (const Light& light : scene.lights) {
+        if (std::optional<Light::ThermalOutput> t = light.Thermal()) {
+            binPower[binOf(t->temperature)] += t->visiblePower;
+            lightPower += t->visiblePower;
+        } else {
+            others = true;
+        }
+    }
+    if (scene.features.volumetric) {
+        std::vector<Float> mediumTemperatures;
+        for (const Medium& m : scene.media) {
+            if (!m.IsEmissive()) continue;
+            if (std::optional<Float> T = m.EmissionTemperature())
+                mediumTemperatures.push_back(*T);
+            else
+                others = true;
+        }
+        double each = mediumTemperatures.empty()
+                          ? 0
+                          : (lightPower > 0 ? lightPower : double(mediumTemperatures.size())) /
+                                double(mediumTemperatures.size());
+        for (Float T : mediumTemperatures) binPower[binOf(T)] += each;
+    }
+    if (binPower.empty()) return {};
+    // Each bin's spectrum scaled to its power over 360-830 nm
+    std::vector<Float> emitted(WavelengthDistribution::kBins, 0.f);
+    for (const auto& [bin, power] : binPower) {
+        double T = std::pow(1.01, bin), visible = planck_band_radiance(Lambda_min, Lambda_max, T);
+        if (!(power > 0) || !(visible > 0)) continue;
+        for (int i = 0; i < WavelengthDistribution::kBins; ++i)
+            emitted[size_t(i)] += Float(power * planck_radiance(Lambda_min + i + 0.5, T) / visible);
+    }
+    Float share = others ? 0.75f : 0.5f;
+    WavelengthDistribution d(emitted, share);
+    if (!d.IsVisible()) *visibleShare = share;
+    return d;
+}
+
+}  // namespace kiln

@@ -1,0 +1,42 @@
+// How the wavelengths of a path are drawn (the hero wavelength and its NSpectrumSamples - 1
+// companions, stratified in the distribution's CDF as SampledWavelengths::SampleVisible does).
+//
+// By default pbrt-v4's visible density (Radziszewski et al. 2009). For scenes with hot matter,
+// a mixture: a share of the visible density plus the rest in proportion to the spectrum the
+// hot matter radiates times each CIE colour matching function, each normalised to the same
+// integral (X, Y and Z of the glow each get a third), so that the steep red end of a glow at
+// 1000-2000 K is sampled where its colour comes from and its small Z keeps samples too. The mixture
+// is tabulated over 1-nm bins from 360 to 830 nm (piecewise constant, sampled and evaluated
+// from the same table, so estimates stay unbiased whatever the spectrum).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "base/sampling.h"
+#include "spectral/sampled_spectrum.h"
+
+namespace kiln {
+
+class WavelengthDistribution {
+  public:
+    WavelengthDistribution() = default;  // the visible density
+    // visibleShare of the visible density plus (1 - visibleShare) of the density proportional
+    // to emitted(lambda) (xbar / X + ybar / Y + zbar / Z)(lambda), X, Y, Z the integrals of
+    // emitted times each; emitted: non-negative values at the centres of kBins 1-nm bins from
+    // Lambda_min. All zero: the visible density.
+    WavelengthDistribution(std::span<const Float> emitted, Float visibleShare);
+    static constexpr int kBins = int(Lambda_max - Lambda_min);
+
+    // Whether this is the visible density (no table).
+    bool IsVisible() const { return table.Size() == 0; }
+    // The wavelengths for a path from one uniform sample.
+    SampledWavelengths Sample(Float u) const;
+    // The density per nm at lambda.
+    Float PDF(Float lambda) const;
+
+  private:
+    PiecewiseConstant1D table;
+};
+
+}  // namespace kiln
