@@ -80,35 +80,14 @@ TEST(ExactMediumEmission, OnlyUniformMediaAreIntegratedExactly) {
     EXPECT_TRUE(off.scene->exactEmissionMedia.empty());
 }
 
-// Per-pixel luminance of a render, the image mean and the per-pixel variance from two seeds
-struct Kind {
-    double mean, se, variance;
-};
-Kind RenderKind(bool exact, int seed, const std::string& emission) {
-    std::vector<double> a, b;
-    for (auto [image, s] : {std::pair{&a, seed}, std::pair{&b, seed + 1}}) {
-        testing::RenderedScene r = testing::RenderText(HotBall(exact, s, 64, emission));
-        EXPECT_EQ(r.scene->features.exactEmissionMedia, exact ? 1 : 0);
-        Bounds2i bounds = r.scene->job->film->PixelBounds();
-        for (int y = bounds.pMin.y; y < bounds.pMax.y; ++y)
-            for (int x = bounds.pMin.x; x < bounds.pMax.x; ++x)
-                image->push_back(testing::PixelY(*r.scene, {x, y}));
-    }
-    double sumA = 0, sumB = 0, sq = 0;
-    for (size_t i = 0; i < a.size(); ++i) {
-        sumA += a[i];
-        sumB += b[i];
-        sq += (a[i] - b[i]) * (a[i] - b[i]);
-    }
-    double n = double(a.size()), variance = sq / (2 * n);
-    return {(sumA + sumB) / (2 * n), std::sqrt(variance / (2 * n)), variance};
-}
-
 TEST(ExactMediumEmission, RendersTheSameImageAsCollisionsWithLessNoise) {
     // A flat emission spectrum, so that the noise left is mostly that of the emission
     // estimate rather than of the wavelengths drawn
     const std::string flat = "\"spectrum Le\" [360 1 830 1]";
-    Kind exact = RenderKind(true, 1, flat), collisions = RenderKind(false, 3, flat);
+    auto render = [&](bool exact, int seed) {
+        return testing::RenderTwoSeeds([&](int s) { return HotBall(exact, s, 64, flat); }, seed);
+    };
+    testing::TwoSeedNoise exact = render(true, 1), collisions = render(false, 3);
     ASSERT_GT(exact.mean, 0);
     std::printf("collisions: image mean %.5f of exact's, standard errors %.5f and %.5f\n",
                 collisions.mean / exact.mean, collisions.se / exact.mean, exact.se / exact.mean);

@@ -9,6 +9,8 @@
 #include <sstream>
 #include <string>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 #include "base/statistics.h"
 #include "core/parser/parser.h"
@@ -130,6 +132,32 @@ inline void ExpectBlackbodyImage(const RenderedScene& r, double T, const std::st
                 s.Mean(), se);
     EXPECT_LT(4 * se, 0.005);
     EXPECT_NEAR(s.Mean(), 1, 4 * se + 1e-3);
+}
+
+// A render's noise from two seeds: the image's mean luminance over both, its standard error, and
+// the per-pixel variance (half the mean squared difference of the two renders). sceneText(seed)
+// gives the scene; seeds seed and seed + 1.
+struct TwoSeedNoise {
+    double mean, se, variance;
+};
+template <typename SceneText>
+TwoSeedNoise RenderTwoSeeds(SceneText sceneText, int seed) {
+    std::vector<double> a, b;
+    for (auto [image, s] : {std::pair{&a, seed}, std::pair{&b, seed + 1}}) {
+        RenderedScene r = RenderText(sceneText(s));
+        Bounds2i bounds = r.scene->job->film->PixelBounds();
+        for (int y = bounds.pMin.y; y < bounds.pMax.y; ++y)
+            for (int x = bounds.pMin.x; x < bounds.pMax.x; ++x)
+                image->push_back(PixelY(*r.scene, {x, y}));
+    }
+    double sumA = 0, sumB = 0, sq = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+        sumA += a[i];
+        sumB += b[i];
+        sq += (a[i] - b[i]) * (a[i] - b[i]);
+    }
+    double n = double(a.size()), variance = sq / (2 * n);
+    return {(sumA + sumB) / (2 * n), std::sqrt(variance / (2 * n)), variance};
 }
 
 }  // namespace kiln::testing

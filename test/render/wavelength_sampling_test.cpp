@@ -41,30 +41,11 @@ TEST(WavelengthSampling, ChosenOnlyWhereHotMatterGlows) {
     EXPECT_EQ(testing::RenderText(cold).scene->features.wavelengthVisibleShare, 1.f);
 }
 
-struct Kind {
-    double mean, se, variance;
-};
-Kind RenderKind(const std::string& sampling, int seed) {
-    std::vector<double> a, b;
-    for (auto [image, s] : {std::pair{&a, seed}, std::pair{&b, seed + 1}}) {
-        testing::RenderedScene r = testing::RenderText(HotSphere(sampling, s));
-        Bounds2i bounds = r.scene->job->film->PixelBounds();
-        for (int y = bounds.pMin.y; y < bounds.pMax.y; ++y)
-            for (int x = bounds.pMin.x; x < bounds.pMax.x; ++x)
-                image->push_back(testing::PixelY(*r.scene, {x, y}));
-    }
-    double sumA = 0, sumB = 0, sq = 0;
-    for (size_t i = 0; i < a.size(); ++i) {
-        sumA += a[i];
-        sumB += b[i];
-        sq += (a[i] - b[i]) * (a[i] - b[i]);
-    }
-    double n = double(a.size()), variance = sq / (2 * n);
-    return {(sumA + sumB) / (2 * n), std::sqrt(variance / (2 * n)), variance};
-}
-
 TEST(WavelengthSampling, HotBodyRendersTheSameImageWithLessNoise) {
-    Kind emission = RenderKind("emission", 1), visible = RenderKind("visible", 3);
+    auto render = [](const std::string& sampling, int seed) {
+        return testing::RenderTwoSeeds([&](int s) { return HotSphere(sampling, s); }, seed);
+    };
+    testing::TwoSeedNoise emission = render("emission", 1), visible = render("visible", 3);
     ASSERT_GT(emission.mean, 0);
     std::printf("visible density: image mean %.5f of emission's, standard errors %.5f, %.5f\n",
                 visible.mean / emission.mean, visible.se / emission.mean,
