@@ -17,6 +17,7 @@
 #include "core/parser/suggestions.h"
 #include "lights/thermal_area_light.h"
 #include "materials/subsurface_material.h"
+#include "render/integrator_settings.h"
 #include "render/scene.h"
 #include "render/scene_emitters.h"
 #include "render/scene_media.h"
@@ -30,75 +31,6 @@
 namespace kiln {
 
 namespace {
-
-// Camera, film, filter, sampler and the integrator's settings (the scene's Integrator, then
-// the render's options)
-PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOptions& options,
-                                                Diagnostics& diag) {
-    PathIntegratorSettings s;
-    // pbrt-v4's other integrators render with volpath (a warning); a name pbrt-v4 does not know
-    // either is an error, as in pbrt-v4
-    static constexpr std::string_view kIntegrators[] = {
-        "path",       "volpath",    "ambientocclusion", "bdpt", "lightpath", "mlt",
-        "randomwalk", "simplepath", "simplevolpath",    "sppm", "function"};
-    if (std::find(std::begin(kIntegrators), std::end(kIntegrators), e.name) ==
-        std::end(kIntegrators))
-        throw SceneError(e.loc,
-                         "unknown integrator \"" + e.name + "\"" + DidYouMean(e.name, kIntegrators),
-                         e.name);
-    // mlt and sppm converge to the image bdpt renders: rendered with bdpt (which may still
-    // fall back to volpath: DecideFeatures)
-    s.bidirectional = e.name == "bdpt" || e.name == "mlt" || e.name == "sppm";
-    if (e.name == "mlt" || e.name == "sppm")
-        diag.Warn(e.loc, "integrator \"" + e.name + "\" is not supported; rendered with \"bdpt\"");
-    else if (e.name != "path" && e.name != "volpath" && e.name != "bdpt")
-        diag.Warn(e.loc, "integrator \"" + e.name + "\" is not supported; using \"volpath\"");
-    s.volumetric = e.name != "path";
-    s.maxDepth = e.parameters.GetOneInt("maxdepth", 5);
-    if (s.maxDepth < 0) throw SceneError(e.parameters.Loc("maxdepth"), "maxdepth must be >= 0");
-    s.regularize = e.parameters.GetOneBool("regularize", false);
-    int wavelengths = e.parameters.GetOneInt("wavelengths", NSpectrumSamples);
-    if (wavelengths != 1 && wavelengths != NSpectrumSamples)
-        throw SceneError(e.parameters.Loc("wavelengths"),
-                         "\"wavelengths\" must be 1 or " + std::to_string(NSpectrumSamples),
-                         std::to_string(wavelengths));
-    s.singleWavelength = options.singleWavelength.value_or(wavelengths == 1);
-    std::string strategy = e.parameters.GetOneString("strategy", "mis");
-    std::optional<LightStrategy> st = ParseLightStrategy(strategy);
-    if (!st)
-        throw SceneError(e.parameters.Loc("strategy"),
-                         "unknown strategy (expected \"mis\", \"light\" or \"bsdf\")", strategy);
-    s.strategy = options.strategy.value_or(*st);
-    std::string es = e.parameters.GetOneString("emittersampling", "power");
-    std::optional<bool> byPower = ParseEmitterPowerSampling(es);
-    if (!byPower)
-        throw SceneError(e.parameters.Loc("emittersampling"),
-                         "unknown emitter sampling (expected \"power\" or \"shape\")", es);
-    s.emitterPowerSampling = options.emitterPowerSampling.value_or(*byPower);
-    std::string me = e.parameters.GetOneString("mediumemission", "sampled");
-    std::optional<bool> sampled = ParseMediumEmissionSampling(me);
-    if (!sampled)
-        throw SceneError(e.parameters.Loc("mediumemission"),
-                         "unknown medium emission (expected \"sampled\" or \"tracked\")", me);
-    s.mediumEmissionSampling = options.mediumEmissionSampling.value_or(*sampled);
-    s.glassWindows = options.glassWindows.value_or(e.parameters.GetOneBool("glasswindows", true));
-    s.exactMediumEmission =
-        options.exactMediumEmission.value_or(e.parameters.GetOneBool("exactmediumemission", true));
-    std::string ws = e.parameters.GetOneString("wavelengthsampling", "emission");
-    if (ws != "emission" && ws != "visible")
-        throw SceneError(e.parameters.Loc("wavelengthsampling"),
-                         "unknown wavelength sampling (expected \"emission\" or \"visible\")", ws);
-    s.emissionWavelengths = options.emissionWavelengths.value_or(ws == "emission");
-    std::string ls = e.parameters.GetOneString("lightsampler", "bvh");
-    std::optional<LightSelection> sel = ParseLightSelection(ls);
-    if (!sel)
-        throw SceneError(e.parameters.Loc("lightsampler"),
-                         "unknown light sampler (expected \"bvh\", \"power\", \"uniform\" or "
-                         "\"area\")",
-                         ls);
-    s.lightSelection = options.lightSelection.value_or(*sel);
-    return s;
-}
 
 // The render job's film (from the recipe and the options' crop window and pixel bounds), its
 // charge to the scene's budget recorded
