@@ -345,6 +345,17 @@ const CurveSet* CurveSet::Create(const Transform& renderFromObject, bool reverse
         else
             set->AddSegment(bez, w0, w1);
     }
+    // Split segments: Embree's vertex buffer of the parts (4 vertices of 16 bytes each) and
+    // their segment ranges, beyond the segments' own charge
+    if (!set->parts.empty()) {
+        try {
+            arena.Budget().Charge(
+                double(set->parts.size()) * (64 + sizeof(Part)),
+                "a curve's " + std::to_string(set->parts.size()) + " Embree primitives");
+        } catch (const MemoryLimitError& e) {
+            throw SceneError(at("P"), e.what(), "P");
+        }
+    }
     // Width included: Embree traces curves as the tubes or ribbons the widths make
     if (!InRenderRange(set->Bounds()))
         throw SceneError(at("P"),
