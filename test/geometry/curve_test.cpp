@@ -249,6 +249,48 @@ TEST(Curve, RaysLeavingACurveMissIt) {
     EXPECT_EQ(rays, 90);
 }
 
+TEST(Curve, AcrossCoordinateIsUniformOverTheSurfaceHit) {
+    // A thin S-bend needing more straight pieces than Embree's largest tessellation (16): its
+    // flat-curve surface runs up to about a width off the curve. v is measured across the
+    // surface hit, so hits spread evenly over 0 ... 1; measured from the curve, v came out
+    // beyond 0 or 1 for many hits near one edge (clamped: hair at grazing incidence).
+    ObjectArena arena;
+    Diagnostics diag(nullptr);
+    const Float width = 0.01f;
+    for (const char* type : {"flat", "cylinder"}) {
+        SCOPED_TRACE(type);
+        const CurveSet* c =
+            Create(arena, diag,
+                   {Floats("point3", "P", {-1, 0, 0, -0.3f, 1.5f, 0, 0.3f, -1.5f, 0, 1, 0, 0}),
+                    test::Float1("width", width), String1("type", type)});
+        EXPECT_EQ(c->TessellationRate(), 16);
+        Accelerator accel;
+        accel.AddCurves(*c, nullptr, nullptr);
+        accel.Commit();
+        // Rays down -z at stratified points within a width of the curve, across its tangent
+        int hits = 0, atEdge = 0, quarter[4] = {0, 0, 0, 0};
+        const int nu = 400, ns = 40;
+        for (int i = 0; i < nu; ++i)
+            for (int k = 0; k < ns; ++k) {
+                Float u = (i + 0.5f) / nu, s = ((k + 0.5f) / ns * 2 - 1) * width;
+                Vector3f side = Normalize(Cross(c->Tangent(0, u), Vector3f(0, 0, 1)));
+                Point3f p = c->Position(0, u) + s * side;
+                auto si = accel.Intersect(Ray(Point3f(p.x, p.y, 1), Vector3f(0, 0, -1)));
+                if (!si) continue;
+                ++hits;
+                Float v = si->intr.uv.y;
+                atEdge += v < 0.01f || v > 0.99f;
+                ++quarter[std::min(int(v * 4), 3)];
+            }
+        // About half the points lie on the surface (it is a width wide, the points two)
+        EXPECT_GT(hits, nu * ns / 3);
+        // Uniform v puts 2 % of hits within 0.01 of an edge, a quarter in each quarter (the
+        // bend makes the inner side of each piece denser by less than 1 %)
+        EXPECT_LT(atEdge, 0.03 * hits) << atEdge << " of " << hits;
+        for (int q = 0; q < 4; ++q) EXPECT_NEAR(quarter[q], 0.25 * hits, 0.03 * hits) << q;
+    }
+}
+
 TEST(Curve, AcceleratorFindsCurvesNearTheRayOrigin) {
     // Embree (EMBREE_CURVE_SELF_INTERSECTION_AVOIDANCE_FACTOR 2) skips flat-curve hits closer
     // than twice the radius (0.2 here); pbrt-v4 skips none

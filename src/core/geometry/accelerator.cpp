@@ -532,12 +532,12 @@ void Accelerator::AddCurves(const CurveSet& curves, const Material* material,
                             const ThermalEmission* thermal, MediumInterface media,
                             const AlphaMask* alpha, int definition) {
     SceneBVH& s = definition < 0 ? impl->top : impl->definitions.at(size_t(definition));
-    int n = curves.NumSegments();
+    int n = curves.NumPrimitives();
     if (n == 0) return;
     impl->primitives += size_t(n);
     s.bounds = Union(s.bounds, curves.Bounds());
     Float radius = 0;
-    for (const auto& v : curves.Vertices()) radius = std::max<Float>(radius, v[3]);
+    for (const auto& v : curves.EmbreeVertices()) radius = std::max<Float>(radius, v[3]);
     Float& r = definition < 0 ? impl->topCurveRadius : impl->definitionCurveRadius;
     r = std::max(r, radius);
     auto rec = std::make_unique<GeomRecord>();
@@ -552,7 +552,7 @@ void Accelerator::AddCurves(const CurveSet& curves, const Material* material,
         rtcNewGeometry(impl->device, ribbon ? RTC_GEOMETRY_TYPE_NORMAL_ORIENTED_BEZIER_CURVE
                                             : RTC_GEOMETRY_TYPE_FLAT_BEZIER_CURVE);
     rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
-                               curves.Vertices().data(), 0, 4 * sizeof(float), 4 * size_t(n));
+                               curves.EmbreeVertices().data(), 0, 4 * sizeof(float), 4 * size_t(n));
     auto* index = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
         g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned), size_t(n)));
     for (int i = 0; i < n; ++i) index[i] = unsigned(4 * i);

@@ -1,5 +1,6 @@
 #include "core/geometry/curve.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -40,10 +41,53 @@ void CurveSet::AddSegment(const std::array<Point3f, 4>& cp, Float width0, Float 
         Float w = Lerp(Float(i) / 3, width0, width1);
         vertices.push_back({cp[i].x, cp[i].y, cp[i].z, 0.5f * w});
     }
+    // pbrt-v4's refinement depth: the control polygon's largest second difference against 5 %
+    // of the segment's widest width
+    Float L0 = 0;
+    for (int i = 0; i < 2; ++i) {
+        Vector3f dd = (cp[i] - cp[i + 1]) - (cp[i + 1] - cp[i + 2]);
+        L0 = std::max({L0, std::abs(dd.x), std::abs(dd.y), std::abs(dd.z)});
+    }
+    Float eps = std::max(width0, width1) * 0.05f;
+    int depth = 0;
+    if (eps > 0) {
+        Float r0 = std::log2(1.41421356f * 6.f * L0 / (8.f * eps)) / 2;
+        if (std::isfinite(r0)) depth = std::clamp(int(std::ceil(r0)), 0, kMaxRefinementDepth);
+    }
+    tessellationDepth = std::max(tessellationDepth, std::min(depth, kMaxTessellationDepth));
+    // Beyond Embree's 16 pieces: 2^(depth - 4) primitives of 16 pieces each (ribbons need none)
+    int segment = NumSegments() - 1;
+    int split = type == CurveType::Ribbon ? 0 : std::max(0, depth - kMaxTessellationDepth);
+    if (split > 0 && parts.empty()) {
+        // Every earlier segment becomes one primitive
+        for (int s = 0; s < segment; ++s) AddPart(s, 0, 1);
+    }
+    if (split > 0 || !parts.empty()) {
+        int n = 1 << split;
+        for (int k = 0; k < n; ++k) AddPart(segment, Float(k) / n, Float(k + 1) / n);
+    }
     if (type == CurveType::Ribbon) {
         endNormals.push_back(n0);
         endNormals.push_back(n1);
     }
+}
+
+void CurveSet::AddPart(int segment, Float u0, Float u1) {
+    // The cubic's part u0 ... u1 as a cubic Bezier: its control points are the blossom values
+    // B(u0, u0, u0), B(u0, u0, u1), B(u0, u1, u1), B(u1, u1, u1)
+    const auto* v = &vertices[4 * size_t(segment)];
+    Point3f P[4];
+    for (int i = 0; i < 4; ++i) P[i] = Point3f(v[i][0], v[i][1], v[i][2]);
+    auto blossom = [&](Float t1, Float t2, Float t3) {
+        Point3f a[3] = {Lerp(t1, P[0], P[1]), Lerp(t1, P[1], P[2]), Lerp(t1, P[2], P[3])};
+        return Lerp(t3, Lerp(t2, a[0], a[1]), Lerp(t2, a[1], a[2]));
+    };
+    std::array<Point3f, 4> cp = {blossom(u0, u0, u0), blossom(u0, u0, u1), blossom(u0, u1, u1),
+                                 blossom(u1, u1, u1)};
+    Float r0 = Lerp(u0, v[0][3], v[3][3]), r1 = Lerp(u1, v[0][3], v[3][3]);
+    for (int i = 0; i < 4; ++i)
+        partVertices.push_back({cp[i].x, cp[i].y, cp[i].z, Lerp(Float(i) / 3, r0, r1)});
+    parts.push_back({segment, float(u0), float(u1)});
 }
 
 Point3f CurveSet::Position(int segment, Float u) const {
@@ -95,25 +139,6 @@ std::vector<Vector3f> CurveSet::EmbreeNormals() const {
     return normals;
 }
 
-int CurveSet::TessellationRate() const {
-    int depth = 2;
-    for (int seg = 0; seg < NumSegments(); ++seg) {
-        const auto* v = &vertices[4 * size_t(seg)];
-        auto P = [&](int i) { return Vector3f(v[i][0], v[i][1], v[i][2]); };
-        // The control polygon's largest second difference against 5 % of the widest width
-        Float L0 = 0;
-        for (int i = 0; i < 2; ++i) {
-            Vector3f dd = P(i) - 2.f * P(i + 1) + P(i + 2);
-            L0 = std::max({L0, std::abs(dd.x), std::abs(dd.y), std::abs(dd.z)});
-        }
-        Float eps = std::max(v[0][3], v[3][3]) * 2 * 0.05f;
-        if (!(eps > 0)) continue;
-        Float r0 = std::log2(1.41421356f * 6.f * L0 / (8.f * eps)) / 2;
-        if (std::isfinite(r0)) depth = std::max(depth, std::min(int(std::ceil(r0)), 6));
-    }
-    return 1 << depth;
-}
-
 Bounds3f CurveSet::Bounds() const {
     Bounds3f b;
     for (const auto& v : vertices) {
@@ -124,11 +149,13 @@ Bounds3f CurveSet::Bounds() const {
 }
 
 // Interaction at a hit (pbrt-v4's Curve::InteractionFromIntersection)
-SurfaceInteraction CurveSet::InteractionAt(int segment, Float u, Point3f o, Vector3f d, Float t,
-                                           Float time) const {
-    u = Clamp(u, 0, 1);
+SurfaceInteraction CurveSet::InteractionAt(int primitive, Float uPrim, Point3f o, Vector3f d,
+                                           Float t, Float time) const {
+    uPrim = Clamp(uPrim, 0, 1);
+    Part part = parts.empty() ? Part{primitive, 0, 1} : parts[size_t(primitive)];
+    int segment = part.segment;
+    Float u = Lerp(uPrim, part.u0, part.u1);
     Point3f pHit = o + t * d;
-    Point3f c = Position(segment, u);
     Vector3f dpdu = Tangent(segment, u);
     Vector3f dn = Normalize(d);
     Float hitWidth = Width(segment, u);
@@ -137,15 +164,39 @@ SurfaceInteraction CurveSet::InteractionAt(int segment, Float u, Point3f o, Vect
         nRibbon = RibbonNormal(segment, u);
         hitWidth *= AbsDot(Vector3f(nRibbon), dn);  // foreshortened, as pbrt-v4
     }
-    // v from the distance of the curve point to the ray across the width, on the side the
-    // edge function says (pbrt-v4 computes it in a ray space whose z is d: the z component of
-    // cross(c - o, dc/du) there is this triple product)
+    // v from where the ray crosses the width of the surface Embree intersected, on the side
+    // pbrt-v4's edge function says (the z component of cross(c - o, dc/du) in a ray space whose
+    // z is d: this triple product's sign). Ribbons are intersected on the curve itself (Embree
+    // solves for the oriented surface); flat and cylinder curves as TessellationRate() straight
+    // pieces between the curve's points at u = j / N, so there the centre line is the piece's,
+    // up to a fifth of the width off the curve where thin fibres bend. Measured from the curve
+    // instead, hits near one edge came out beyond it: v clamped to 0 or 1, hair met at grazing
+    // incidence, which reflects all the light it gets. The offset is measured across the
+    // piece's direction (its end tangents interpolated, as Embree turns the piece's ends).
+    Point3f c = Position(segment, u);
+    Vector3f along = dpdu;
+    if (type != CurveType::Ribbon) {
+        const int N = TessellationRate();
+        Float uN = uPrim * N;
+        int j = std::min(int(uN), N - 1);
+        Float f = uN - j;
+        Float u0 = Lerp(Float(j) / N, part.u0, part.u1),
+              u1 = Lerp(Float(j + 1) / N, part.u0, part.u1);
+        c = Lerp(f, Position(segment, u0), Position(segment, u1));
+        along = (1 - f) * Tangent(segment, u0) + f * Tangent(segment, u1);
+    }
     Vector3f toCurve = c - o;
     Vector3f perp = toCurve - Dot(toCurve, dn) * dn;
-    Float dist = Length(perp);
-    Float edge = Dot(Cross(toCurve, dpdu), dn);
+    Vector3f acrossDir = Cross(along, dn);
     Float v = 0.5f;
-    if (hitWidth > 0) v = edge > 0 ? 0.5f + dist / hitWidth : 0.5f - dist / hitWidth;
+    if (hitWidth > 0) {
+        // Ribbons: the distance to the curve point (pbrt-v4's); flat curves: its component
+        // across the piece (their distance along it is Embree's u's approximation)
+        Float dist = type == CurveType::Ribbon || !(LengthSquared(acrossDir) > 0)
+                         ? Length(perp)
+                         : std::abs(Dot(toCurve, Normalize(acrossDir)));
+        v = Dot(toCurve, acrossDir) > 0 ? 0.5f + dist / hitWidth : 0.5f - dist / hitWidth;
+    }
     v = Clamp(v, 0, 1);
 
     Vector3f dpdv;
@@ -293,6 +344,17 @@ const CurveSet* CurveSet::Create(const Transform& renderFromObject, bool reverse
             set->AddSegment(bez, w0, w1, n[seg], n[seg + 1]);
         else
             set->AddSegment(bez, w0, w1);
+    }
+    // Split segments: Embree's vertex buffer of the parts (4 vertices of 16 bytes each) and
+    // their segment ranges, beyond the segments' own charge
+    if (!set->parts.empty()) {
+        try {
+            arena.Budget().Charge(
+                double(set->parts.size()) * (64 + sizeof(Part)),
+                "a curve's " + std::to_string(set->parts.size()) + " Embree primitives");
+        } catch (const MemoryLimitError& e) {
+            throw SceneError(at("P"), e.what(), "P");
+        }
     }
     // Width included: Embree traces curves as the tubes or ribbons the widths make
     if (!InRenderRange(set->Bounds()))
