@@ -68,10 +68,9 @@ class Medium : public ClosedSet<HomogeneousMedium*, GridMedium*, RGBGridMedium*,
             MediumProperties mp = m->SamplePoint(Point3f(0, 0, 0), lambda);
             SampledSpectrum E;
             for (int i = 0; i < NSpectrumSamples; ++i) {
+                // Every emission model emits on extinction: none without it
                 Float sigma_t = mp.sigma_a[i] + mp.sigma_s[i];
-                if (mp.emission[i] == 0 || !(sigma_t > 0))
-                    continue;  // every model emits
-                               // on extinction
+                if (mp.emission[i] == 0 || !(sigma_t > 0)) continue;
                 Float x = sigma_t * distance;
                 // 1 - exp(-x) over sigma_t, to distance where x is small
                 E[i] = mp.emission[i] *

@@ -82,11 +82,13 @@ std::optional<Float> MediumEmission::RepresentativeTemperature() const {
                     (double(temperatureGrid.At(x, y, z)) - temperatureOffset) * temperatureScale;
                 if (!(T > 0) || !std::isfinite(T)) continue;
                 double w = planck_band_radiance(Lambda_min, Lambda_max, T);
+                if (!std::isfinite(w * T)) continue;  // hostile grid values
                 weighted += w * T;
                 weights += w;
             }
-    if (!(weights > 0)) return std::nullopt;
-    return Float(weighted / weights);
+    Float T = Float(weighted / weights);
+    if (!(T > 0) || !std::isfinite(T)) return std::nullopt;
+    return T;
 }
 
 void MediumEmission::Apply(MediumProperties& mp, Point3f pRender, Point3f pUnit,

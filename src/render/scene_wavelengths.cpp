@@ -16,10 +16,15 @@ WavelengthDistribution CreateWavelengthDistribution(const Scene& scene, Float* v
     // million hot triangles costs one pass over its lights
     std::map<int, double> binPower;
     auto binOf = [](double T) { return int(std::lround(std::log(T) / std::log(1.01))); };
+    // What a hostile scene can make of a temperature or power (0, negative, Inf, NaN): skipped
+    auto usable = [](double T, double power) {
+        return T > 0 && T < 1e30 && power > 0 && std::isfinite(power);
+    };
     double lightPower = 0;
     bool others = false;
     for (const Light& light : scene.lights) {
         if (std::optional<Light::ThermalOutput> t = light.Thermal()) {
+            if (!usable(t->temperature, t->visiblePower)) continue;
             binPower[binOf(t->temperature)] += t->visiblePower;
             lightPower += t->visiblePower;
         } else {
@@ -30,10 +35,11 @@ WavelengthDistribution CreateWavelengthDistribution(const Scene& scene, Float* v
         std::vector<Float> mediumTemperatures;
         for (const Medium& m : scene.media) {
             if (!m.IsEmissive()) continue;
-            if (std::optional<Float> T = m.EmissionTemperature())
-                mediumTemperatures.push_back(*T);
-            else
+            if (std::optional<Float> T = m.EmissionTemperature()) {
+                if (usable(*T, 1)) mediumTemperatures.push_back(*T);
+            } else {
                 others = true;
+            }
         }
         double each = mediumTemperatures.empty()
                           ? 0

@@ -41,6 +41,20 @@ TEST(WavelengthSampling, ChosenOnlyWhereHotMatterGlows) {
     EXPECT_EQ(testing::RenderText(cold).scene->features.wavelengthVisibleShare, 1.f);
 }
 
+// The hottest temperature a scene may give (1e27 K) leaves the density finite and normalised
+TEST(WavelengthSampling, ExtremeTemperaturesKeepAFiniteDensity) {
+    std::string text = HotSphere("emission", 1);
+    text.replace(text.find("1300"), 4, "1e27");
+    testing::RenderedScene r = testing::RenderText(text);
+    double integral = 0;
+    for (int i = 0; i < WavelengthDistribution::kBins; ++i) {
+        Float p = r.scene->wavelengths.PDF(Lambda_min + i + 0.5f);
+        ASSERT_TRUE(std::isfinite(p) && p > 0) << Lambda_min + i + 0.5f << " nm";
+        integral += p;
+    }
+    EXPECT_NEAR(integral, 1, 1e-3);
+}
+
 TEST(WavelengthSampling, HotBodyRendersTheSameImageWithLessNoise) {
     auto render = [](const std::string& sampling, int seed) {
         return testing::RenderTwoSeeds([&](int s) { return HotSphere(sampling, s); }, seed);
