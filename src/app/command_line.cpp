@@ -221,6 +221,12 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
             if (i + n >= args.size()) throw std::invalid_argument(a + " needs a value");
             return args[++i];
         };
+        // The value, which must be one of two words
+        auto either = [&](const char* x, const char* y) -> const std::string& {
+            const std::string& v = value();
+            if (v != x && v != y) throw std::invalid_argument(a + " expects " + x + " or " + y);
+            return v;
+        };
         // x0 x1 y0 y1 as four arguments, or as pbrt-v4's one "x0,x1,y0,y1"
         auto four = [&]() {
             std::vector<std::string> v;
@@ -349,25 +355,15 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
                 start = comma + 1;
             }
         } else if (a == "--emitter-sampling") {
-            o.emitterSampling = value();
-            if (*o.emitterSampling != "power" && *o.emitterSampling != "shape")
-                throw std::invalid_argument("--emitter-sampling expects power or shape");
+            o.emitterSampling = either("power", "shape");
         } else if (a == "--medium-emission") {
-            o.mediumEmission = value();
-            if (*o.mediumEmission != "sampled" && *o.mediumEmission != "tracked")
-                throw std::invalid_argument("--medium-emission expects sampled or tracked");
+            o.mediumEmission = either("sampled", "tracked");
         } else if (a == "--glass-windows") {
-            o.glassWindows = value();
-            if (*o.glassWindows != "on" && *o.glassWindows != "off")
-                throw std::invalid_argument("--glass-windows expects on or off");
+            o.glassWindows = either("on", "off");
         } else if (a == "--exact-medium-emission") {
-            o.exactMediumEmission = value();
-            if (*o.exactMediumEmission != "on" && *o.exactMediumEmission != "off")
-                throw std::invalid_argument("--exact-medium-emission expects on or off");
+            o.exactMediumEmission = either("on", "off");
         } else if (a == "--wavelength-sampling") {
-            o.wavelengthSampling = value();
-            if (*o.wavelengthSampling != "emission" && *o.wavelengthSampling != "visible")
-                throw std::invalid_argument("--wavelength-sampling expects emission or visible");
+            o.wavelengthSampling = either("emission", "visible");
         } else if (a == "--strategy") {
             o.strategy = value();
             if (*o.strategy != "mis" && *o.strategy != "light" && *o.strategy != "bsdf")
