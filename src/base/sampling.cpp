@@ -99,10 +99,27 @@ PiecewiseConstant1D::PiecewiseConstant1D(std::span<const Float> f, Float min, Fl
         for (size_t i = 1; i <= n; ++i) cdf[i] /= funcInt;
     }
     cdf[n] = 1;
+    guide.resize(n);
+    for (size_t k = 0, o = 0; k < n; ++k) {
+        Float u = Float(k) / Float(n);
+        while (o + 1 < n && cdf[o + 1] <= u) ++o;
+        guide[k] = uint32_t(o);
+    }
+}
+
+size_t PiecewiseConstant1D::FindBin(Float u) const {
+    size_t n = func.size();
+    if (!(u >= 0 && u < 1))  // outside the guide's range (or NaN): the binary search
+        return FindInterval(cdf.size(), [&](size_t i) { return cdf[i] <= u; });
+    size_t o = guide[std::min(size_t(u * Float(n)), n - 1)];
+    // u * n may round up into the next interval: step back, then forward to the last bin
+    while (o > 0 && cdf[o] > u) --o;
+    while (o + 1 < n && cdf[o + 1] <= u) ++o;
+    return o;
 }
 
 Float PiecewiseConstant1D::Sample(Float u, Float* pdf, int* offset) const {
-    size_t o = FindInterval(cdf.size(), [&](size_t i) { return cdf[i] <= u; });
+    size_t o = FindBin(u);
     if (offset) *offset = int(o);
     Float du = u - cdf[o];
     if (cdf[o + 1] - cdf[o] > 0) du /= (cdf[o + 1] - cdf[o]);

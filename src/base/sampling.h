@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -52,7 +53,10 @@ inline Float BalanceHeuristic(int nf, Float fPdf, int ng, Float gPdf) {
     return (nf * fPdf) / (nf * fPdf + ng * gPdf);
 }
 
-// Piecewise-constant density on [min, max] from non-negative function values.
+// Piecewise-constant density on [min, max] from non-negative function values. Sampling
+// inverts the CDF from a guide table (the cutpoint method of Chen & Asau 1974): for each of
+// Size() equal intervals of u, the bin the CDF search would return at its start, scanned
+// forward from there; the same bin as a binary search of the CDF, in a few steps on average.
 class PiecewiseConstant1D {
   public:
     PiecewiseConstant1D() = default;
@@ -66,7 +70,11 @@ class PiecewiseConstant1D {
     Float Max() const { return max; }
 
   private:
+    // The bin containing u: the last i < Size() with cdf[i] <= u (0 if none), as FindInterval.
+    size_t FindBin(Float u) const;
+
     std::vector<Float> func, cdf;
+    std::vector<uint32_t> guide;  // guide[k]: FindBin(k / Size())
     Float min = 0, max = 1, funcInt = 0;
 };
 

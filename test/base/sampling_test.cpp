@@ -2,6 +2,8 @@
 // directions or points with exactly the density its *PDF function reports.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -146,6 +148,67 @@ TEST(Sampling, LinearAndBilinearMatchPdf) {
                 BilinearPDF(Point2f((x + 0.5f) / n, (y + 0.5f) / n), w) / (n * n) * kSamples;
     auto r2 = ChiSquareTest(obs2, exp2);
     EXPECT_TRUE(r2.passed) << r2.message;
+}
+
+// Sampling inverts the CDF: x's CDF (summed here in double) is u, x lies in the bin returned,
+// which has a positive value, and x does not decrease with u (but for rounding); at the guide
+// table's interval ends too, where u * n rounds, and for densities with zero runs, spikes and a
+// single bin.
+TEST(Sampling, PiecewiseConstant1DInvertsTheCdf) {
+    RNG rng(29);
+    std::vector<std::vector<Float>> cases;
+    std::vector<Float> mixed(470);
+    for (Float& v : mixed) v = rng.UniformFloat() < 0.2f ? 0 : rng.UniformFloat() * 10;
+    cases.push_back(mixed);
+    std::vector<Float> spike(300, 1e-3f);
+    spike[217] = 1e6f;
+    cases.push_back(spike);
+    std::vector<Float> runs(64, 0.f);
+    for (int i = 20; i < 30; ++i) runs[size_t(i)] = 1;
+    runs[50] = 3;
+    cases.push_back(runs);
+    cases.push_back({2.f});
+    // Uniform over 470 bins: the CDF's values are the guide's interval ends k / 470 exactly
+    cases.push_back(std::vector<Float>(470, 1.f));
+    for (const std::vector<Float>& f : cases) {
+        const Float lo = 360, hi = 830;
+        PiecewiseConstant1D dist(f, lo, hi);
+        const size_t n = f.size();
+        std::vector<double> cdf(n + 1, 0.0);
+        for (size_t i = 0; i < n; ++i) cdf[i + 1] = cdf[i] + f[i];
+        std::vector<Float> us;
+        for (int i = 0; i < 20000; ++i) us.push_back(rng.UniformFloat());
+        for (size_t k = 0; k < n; ++k) {
+            Float edge = Float(k) / Float(n);
+            us.push_back(edge);
+            if (k > 0) us.push_back(std::nextafter(edge, 0.f));
+            us.push_back(std::nextafter(edge, 1.f));
+        }
+        us.push_back(OneMinusEpsilon);
+        std::sort(us.begin(), us.end());
+        Float previous = lo;
+        for (Float u : us) {
+            int offset = -1;
+            Float pdf = 0;
+            Float x = dist.Sample(u, &pdf, &offset);
+            ASSERT_GE(offset, 0);
+            ASSERT_LT(size_t(offset), n);
+            EXPECT_GT(f[size_t(offset)], 0) << "u " << u;
+            Float binLo = lo + (hi - lo) * Float(offset) / Float(n);
+            Float binHi = lo + (hi - lo) * Float(offset + 1) / Float(n);
+            EXPECT_GE(x, binLo - 1e-3f);
+            EXPECT_LE(x, binHi + 1e-3f);
+            double t = (double(x) - lo) / (hi - lo) * double(n);
+            size_t b = std::min(size_t(t), n - 1);
+            double cdfX = (cdf[b] + (t - double(b)) * f[b]) / cdf[n];
+            // Within float resolution: 2e-5, plus what the CDF climbs over two ulps of x
+            double ulp = double(std::nextafter(x, hi) - x);
+            double tolerance = 2e-5 + 2 * ulp * f[b] / cdf[n] * double(n) / (hi - lo);
+            EXPECT_NEAR(cdfX, u, tolerance) << "u " << u << " bin " << offset;
+            EXPECT_GE(x, previous - 1e-4f) << "u " << u;  // rounding at bin ends
+            previous = x;
+        }
+    }
 }
 
 TEST(Sampling, PiecewiseConstant2DMatchesPdf) {
