@@ -102,6 +102,14 @@ void RegisterMaterialProbe(py::module_& m) {
     m.def("_planck", py::vectorize([](double lambda_nm, double kelvin) {
               return planck_radiance(lambda_nm, kelvin);
           }));
+    // Planck's law inverted: radiance temperatures, K (spectral/planck.h)
+    m.def("_radiance_temperature", py::vectorize([](double lambda_nm, double L) {
+              return radiance_temperature(lambda_nm, L);
+          }));
+    m.def("_band_radiance_temperature",
+          py::vectorize([](double lambda1_nm, double lambda2_nm, double L) {
+              return band_radiance_temperature(lambda1_nm, lambda2_nm, L);
+          }));
     m.def("_named_spectrum", [](const std::string& name, py::array_t<double> lambda) {
         const Spectrum* s = GetNamedSpectrum(name);
         if (!s) throw py::key_error("no named spectrum \"" + name + "\"");

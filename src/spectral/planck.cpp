@@ -163,4 +163,33 @@ double planck_band_radiance(double lambda1_nm, double lambda2_nm, double T) {
     return std::min(scale * T2 * T2 * std::max(integral, 0.0), DBL_MAX);
 }
 
+double radiance_temperature(double lambda_nm, double L) {
+    if (!(L > 0) || !(lambda_nm > 0) || std::isinf(lambda_nm)) return 0;
+    if (std::isinf(L)) return std::numeric_limits<double>::infinity();
+    // ln(1 + a), a = c1L / (lambda^5 L) in logarithms (a over- or underflows at the extremes)
+    const double lambda = lambda_nm * 1e-9;  // m
+    const double logA = std::log(kC1LPerNm) - 5 * std::log(lambda) - std::log(L);
+    const double ln1pA =
+        logA > 30 ? logA + std::log1p(std::exp(-logA)) : std::log1p(std::exp(logA));
+    if (!(ln1pA > 0)) return std::numeric_limits<double>::infinity();
+    return kSecondRadiationConstant / (lambda * ln1pA);
+}
+
+double band_radiance_temperature(double lambda1_nm, double lambda2_nm, double L) {
+    if (!(L > 0) || !(lambda2_nm > std::max(lambda1_nm, 0.0))) return 0;
+    double logLo = std::log(1e-3), logHi = std::log(kMaxRenderTemperature);
+    if (planck_band_radiance(lambda1_nm, lambda2_nm, kMaxRenderTemperature) <= L)
+        return kMaxRenderTemperature;
+    if (planck_band_radiance(lambda1_nm, lambda2_nm, 1e-3) >= L) return 1e-3;
+    // Invariant: band radiance at exp(logLo) below L, at exp(logHi) at least L
+    while (logHi - logLo > 1e-12) {
+        double logMid = 0.5 * (logLo + logHi);
+        if (planck_band_radiance(lambda1_nm, lambda2_nm, std::exp(logMid)) < L)
+            logLo = logMid;
+        else
+            logHi = logMid;
+    }
+    return std::exp(0.5 * (logLo + logHi));
+}
+
 }  // namespace kiln

@@ -67,4 +67,18 @@ double stefan_boltzmann_radiance(double T_kelvin);
 // DBL_MAX.
 double planck_band_radiance(double lambda1_nm, double lambda2_nm, double T_kelvin);
 
+// Radiance temperature (brightness temperature) at lambda_nm: the temperature of the blackbody
+// whose spectral radiance there is L (W m^-2 sr^-1 nm^-1), what a narrow-band pyrometer at
+// lambda_nm reads (Planck's law inverted: T = c2 / (lambda ln(1 + c1L / (lambda^5 L)))), K.
+// 0 for L <= 0 or NaN (or a wavelength that is not positive and finite); huge L gives the
+// huge temperature it implies, +Inf for L = +Inf.
+double radiance_temperature(double lambda_nm, double L);
+
+// Band radiance temperature: the temperature T with planck_band_radiance(lambda1_nm,
+// lambda2_nm, T) = L (W m^-2 sr^-1), what a thermal camera with a flat response over the band
+// reads, K. Found by bisection in log T (the band radiance grows strictly with T), to a
+// relative 1e-12 between 1e-3 K and kMaxRenderTemperature; 0 for L <= 0, NaN or an empty
+// band, kMaxRenderTemperature for L beyond that temperature's band radiance.
+double band_radiance_temperature(double lambda1_nm, double lambda2_nm, double L);
+
 }  // namespace kiln

@@ -214,6 +214,22 @@ def test_other_materials():
     assert 0 < coated < 1
 
 
+def test_radiance_temperatures_invert_planck():
+    # A pyrometer at 653 nm reads a blackbody's own temperature, and a grey body cooler (Wien:
+    # 1/T_r = 1/T - lambda/c2 ln e)
+    T = np.array([300.0, 1300.0, 3695.0])
+    assert kiln.radiance_temperature(653.0, kiln.planck(653.0, T)) == pytest.approx(T, rel=1e-10)
+    c2 = 6.62607015e-34 * 299792458.0 / 1.380649e-23
+    wien = 1 / (1 / 3695.0 - 653e-9 / c2 * math.log(0.4))
+    assert kiln.radiance_temperature(653.0, 0.4 * kiln.planck(653.0, 3695.0)) == pytest.approx(
+        wien, abs=2)
+    assert kiln.radiance_temperature(653.0, 0.0) == 0
+    # A thermal camera over 8-14 um: the band radiance of 300 K, by the midpoint rule over 1 nm
+    lam = np.arange(8000.0, 14000.0) + 0.5
+    band = kiln.planck(lam, 300.0).sum()
+    assert kiln.band_radiance_temperature(8000.0, 14000.0, band) == pytest.approx(300.0, abs=1e-3)
+
+
 def test_planck_and_glow_colours():
     c2 = 6.62607015e-34 * 299792458.0 / 1.380649e-23
     for lam, T in ((500.0, 1000.0), (1000.0, 3000.0), (360.0, 6000.0)):

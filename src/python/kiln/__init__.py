@@ -37,7 +37,8 @@ except ModuleNotFoundError:
 from ._kiln import Image, Scene, SceneError, read_image
 
 __all__ = ["load", "load_string", "read_image", "Scene", "Image", "SceneError", "emissivity",
-           "directional_albedo", "planck", "named_spectrum", "glow_color", "GlowColor",
+           "directional_albedo", "planck", "radiance_temperature", "band_radiance_temperature",
+           "named_spectrum", "glow_color", "GlowColor",
            "material_parameters"]
 
 
@@ -114,6 +115,20 @@ def planck(wavelength, temperature):
     """Blackbody spectral radiance B(wavelength nm, temperature K), W m^-2 sr^-1 nm^-1; arrays
     broadcast. 0 for temperature <= 0."""
     return _kiln._planck(wavelength, temperature)
+
+
+def radiance_temperature(wavelength, radiance):
+    """What a narrow-band pyrometer at wavelength (nm) reads from spectral radiance (W m^-2 sr^-1
+    nm^-1): the temperature (K) of the blackbody as bright there, planck inverted; arrays
+    broadcast. 0 for radiance <= 0."""
+    return _kiln._radiance_temperature(wavelength, radiance)
+
+
+def band_radiance_temperature(wavelength_low, wavelength_high, radiance):
+    """What a thermal camera with a flat response over [wavelength_low, wavelength_high] (nm)
+    reads from the band's radiance (W m^-2 sr^-1): the temperature (K) of the blackbody with
+    that band radiance; arrays broadcast. 0 for radiance <= 0."""
+    return _kiln._band_radiance_temperature(wavelength_low, wavelength_high, radiance)
 
 
 def named_spectrum(name, wavelength):
