@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <set>
 #include <vector>
@@ -351,6 +353,24 @@ TEST(Sampler, ZSobolPixelCacheIsTransparent) {
                     ASSERT_EQ(reused.Get1D(), fresh.Get1D());
                 }
             }
+    }
+    // As the renderer visits them: waves of 1, 2, 4, ... samples over the rows of a tile, so
+    // pixels of one 2x2 block (whose upper digits are cached) come and go between others
+    for (int spp : {1, 2, 4, 8, 16, 32}) {
+        ZSobolSampler reused(spp, Point2i(100, 60), RandomizeStrategy::FastOwen, 5);
+        for (int waveStart = 0, waveSize = 1; waveStart < spp; waveStart += waveSize, waveSize *= 2)
+            for (int y = 5; y < 10; ++y)
+                for (int x = 61; x < 67; ++x)
+                    for (int i = waveStart; i < std::min(spp, waveStart + waveSize); ++i) {
+                        ZSobolSampler fresh(spp, Point2i(100, 60), RandomizeStrategy::FastOwen, 5);
+                        reused.StartPixelSample(Point2i(x, y), i, 0);
+                        fresh.StartPixelSample(Point2i(x, y), i, 0);
+                        for (int d = 0; d < 70; ++d) {
+                            ASSERT_EQ(reused.GetSampleIndex(), fresh.GetSampleIndex())
+                                << spp << " (" << x << ", " << y << ") " << i << " " << d;
+                            ASSERT_EQ(reused.Get1D(), fresh.Get1D());
+                        }
+                    }
     }
 }
 

@@ -85,7 +85,18 @@ uint64_t ZSobolSampler::GetSampleIndex() const {
     if (dimension < kCachedDimensions && cacheGeneration[dimension] == generation) {
         high = cachedHighDigits[dimension];
     } else {
-        high = PermutedDigits(nBase4Digits - 1, firstLow + 1);
+        // The pixel's lowest digit, and those above it from the 2x2 block's cache
+        int pixelLow = firstLow + 1;
+        if (dimension < kCachedDimensions && pixelLow + 1 <= nBase4Digits - 1) {
+            uint64_t key = mortonIndex >> (2 * (pixelLow + 1) - (pow2Samples ? 1 : 0));
+            if (blockKey[dimension] != key) {
+                blockDigits[dimension] = PermutedDigits(nBase4Digits - 1, pixelLow + 1);
+                blockKey[dimension] = key;
+            }
+            high = blockDigits[dimension] | PermutedDigits(pixelLow, pixelLow);
+        } else {
+            high = PermutedDigits(nBase4Digits - 1, pixelLow);
+        }
         if (dimension < kCachedDimensions) {
             cachedHighDigits[dimension] = high;
             cacheGeneration[dimension] = generation;

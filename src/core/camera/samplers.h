@@ -133,12 +133,22 @@ class ZSobolSampler {
     int dimension = 0;
     // The digits above the sample-number digits depend only on the pixel and the dimension:
     // they are cached per dimension for the pixel being sampled (consecutive samples of a
-    // pixel reuse them). Pure memoisation: values are identical with or without it.
+    // pixel reuse them). Those above the pixel's lowest digit depend only on its 2x2 block
+    // (Morton order): cached per dimension for the last block, they survive the move to the
+    // next pixel of the block and to the next wave of samples (a pixel's samples come in
+    // waves of 1, 2, 4, ...). Pure memoisation: values are identical with or without it.
     static constexpr int kCachedDimensions = 64;
     uint64_t cachedPixel = ~uint64_t(0);
     uint32_t generation = 1;  // of cachedPixel; a cache entry is valid if its generation matches
     mutable std::array<uint32_t, kCachedDimensions> cacheGeneration{};
     mutable std::array<uint64_t, kCachedDimensions> cachedHighDigits{};
+    mutable std::array<uint64_t, kCachedDimensions> blockKey = MakeEmptyBlockKeys();
+    mutable std::array<uint64_t, kCachedDimensions> blockDigits{};
+    static std::array<uint64_t, kCachedDimensions> MakeEmptyBlockKeys() {
+        std::array<uint64_t, kCachedDimensions> keys;
+        keys.fill(~uint64_t(0));  // no block: a key is mortonIndex shifted right at least 2 bits
+        return keys;
+    }
 };
 
 }  // namespace kiln
