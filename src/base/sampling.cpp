@@ -125,7 +125,7 @@ Float PiecewiseConstant1D::Sample(Float u, Float* pdf, int* offset) const {
     if (cdf[o + 1] - cdf[o] > 0) du /= (cdf[o + 1] - cdf[o]);
     if (pdf) *pdf = (funcInt > 0) ? func[o] / funcInt : 1 / (max - min);
     Float x = Lerp((o + du) / Size(), min, max);
-    return std::min(x, std::nextafter(max, min));
+    return x < max ? x : std::nextafter(max, min);  // (nextafter only where rounding reached max)
 }
 
 // Tabulated 2D distribution

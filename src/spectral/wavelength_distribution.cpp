@@ -55,7 +55,8 @@ SampledWavelengths WavelengthDistribution::Sample(Float u) const {
         Float l = table.Sample(up, &pdf[size_t(i)], &bin);
         // Inside the bin whose density it carries (rounding may reach the next bin's start)
         Float start = Lambda_min + Float(bin);
-        lambda[size_t(i)] = Clamp(l, start, std::nextafter(start + 1, start));
+        Float end = start + 1;
+        lambda[size_t(i)] = l < start ? start : (l < end ? l : std::nextafter(end, start));
     }
     return SampledWavelengths::FromSamples(lambda, pdf);
 }
