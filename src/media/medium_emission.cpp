@@ -105,9 +105,7 @@ void MediumEmission::Apply(MediumProperties& mp, Point3f pRender, Point3f pUnit,
             Float scale = LeFactor * (LeScale.Empty() ? 1 : LeScale.Lookup(pUnit));
             Float T = (temperatureGrid.Lookup(pUnit) - temperatureOffset) * temperatureScale;
             if (scale <= 0 || !(T > 100)) return;
-            SampledSpectrum B;
-            for (int i = 0; i < NSpectrumSamples; ++i)
-                B[i] = Float(planck_radiance_normalized(lambda[i], T)) * CIE_Y_integral;
+            SampledSpectrum B = planck_radiance_normalized(lambda, T) * CIE_Y_integral;
             mp.emission = mp.sigma_a * (scale * B);
             return;
         }

@@ -93,6 +93,22 @@ double planck_radiance_normalized(double lambda_nm, double T) {
     return std::min(v, 1.0);
 }
 
+SampledSpectrum planck_radiance_normalized(const SampledWavelengths& lambda, double T) {
+    SampledSpectrum s;
+    if (!(T >= 1 && T <= 1e6)) {
+        for (int i = 0; i < NSpectrumSamples; ++i)
+            s[i] = Float(planck_radiance_normalized(lambda[i], T));
+        return s;
+    }
+    // 1 / B(lambda_peak, T), lambda_peak = b / T: b^5 (e^x5 - 1) / (c1L T^5), per nm
+    const double b = kWienDisplacementConstant, T2 = T * T;
+    const double inversePeak = Pow5(b) * std::expm1(kWienX5) / (kC1LPerNm * T2 * T2 * T);
+    s = planck_radiance(lambda, T);
+    for (int i = 0; i < NSpectrumSamples; ++i)
+        s[i] = Float(std::min(double(s[i]) * inversePeak, 1.0));
+    return s;
+}
+
 double planck_peak_wavelength_nm(double T) {
     if (!(T > 0)) return std::numeric_limits<double>::infinity();
     return kWienDisplacementConstant / T * 1e9;

@@ -53,6 +53,11 @@ SampledSpectrum planck_radiance(const SampledWavelengths& lambda, double T_kelvi
 // and huge T alike.
 double planck_radiance_normalized(double lambda_nm, double T_kelvin);
 
+// The same at each of the path's wavelengths: at 1-1e6 K, planck_radiance's fast path over the
+// peak radiance in closed form, c1L T^5 / (b^5 (e^x5 - 1)) (relative error below 2e-5,
+// test/spectral/planck_test.cpp); exactly, as above, elsewhere.
+SampledSpectrum planck_radiance_normalized(const SampledWavelengths& lambda, double T_kelvin);
+
 // Wavelength of peak spectral radiance per unit wavelength (Wien), nm: b / T. +Inf for T <= 0.
 double planck_peak_wavelength_nm(double T_kelvin);
 

@@ -163,23 +163,12 @@ void PiecewiseLinearSpectrum::Scale(Float s) {
 }
 
 // BlackbodySpectrum
-BlackbodySpectrum::BlackbodySpectrum(Float T_kelvin) : T(T_kelvin) {
-    if (T >= 1 && T <= 1e6) {
-        double peak = planck_radiance(planck_peak_wavelength_nm(T), T);
-        if (peak > 0 && std::isfinite(peak)) inversePeak = 1 / peak;
-    }
-}
-
 Float BlackbodySpectrum::operator()(Float lambda) const {
     return Float(planck_radiance_normalized(lambda, T));
 }
 
 SampledSpectrum BlackbodySpectrum::Sample(const SampledWavelengths& lambda) const {
-    if (inversePeak == 0) return SamplePointwise(*this, lambda);
-    SampledSpectrum B = planck_radiance(lambda, T);
-    for (int i = 0; i < NSpectrumSamples; ++i)
-        B[i] = Float(std::min(double(B[i]) * inversePeak, 1.0));
-    return B;
+    return planck_radiance_normalized(lambda, T);
 }
 
 // RGB spectra

@@ -105,18 +105,15 @@ class PiecewiseLinearSpectrum {
 // radiance is planck_radiance() in planck.h.
 class BlackbodySpectrum {
   public:
-    explicit BlackbodySpectrum(Float T_kelvin);
+    explicit BlackbodySpectrum(Float T_kelvin) : T(T_kelvin) {}
     Float operator()(Float lambda) const;
-    // At 1-1e6 K, Planck's law per wavelength with a single-precision exponential
-    // (planck_radiance's fast path) over the peak's radiance computed once: relative error
-    // below 2e-5 (test/spectral/planck_test.cpp); otherwise as operator().
+    // Per path: planck_radiance_normalized's fast path (relative error below 2e-5 at 1-1e6 K)
     SampledSpectrum Sample(const SampledWavelengths& lambda) const;
     Float MaxValue() const { return T > 0 ? 1 : 0; }
     Float Temperature() const { return T; }
 
   private:
     Float T;
-    double inversePeak = 0;  // 1 / B(lambda_peak, T), W^-1 m^2 sr nm; 0 outside 1-1e6 K
 };
 
 // Reflectance of an RGB in [0,1]^3 (pbrt-v4's RGBAlbedoSpectrum); values in [0, 1].

@@ -252,5 +252,7 @@ TEST(PolarizedBxDF, EveryBxDFDeclaresWhatItDoesToPolarisation) {
     EXPECT_FLOAT_EQ(M(0, 0)[0], 0.5f / Pi);
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)
-            if (i || j) EXPECT_EQ(M(i, j)[0], 0);
+            if (i || j) {
+                EXPECT_EQ(M(i, j)[0], 0);
+            }
 }

@@ -201,7 +201,9 @@ TEST(LensSystem, FocusingImagesTheFocusPlaneOnTheFilm) {
                 double rms;
                 Point3f p = NearestPoint(rays, &rms);
                 // On the axis the paraxial focus is exact: the rays meet at focusdistance
-                if (h == 0) EXPECT_NEAR(p.z, focus, 0.01 * focus) << cs.name;
+                if (h == 0) {
+                    EXPECT_NEAR(p.z, focus, 0.01 * focus) << cs.name;
+                }
                 // Off the axis too the rays' spread is smallest there: on the planes at 0.8
                 // and 1.25 times the distance it is over ten times larger (the spread grows
                 // with the relative distance from where they meet; field curvature moves that
@@ -212,7 +214,9 @@ TEST(LensSystem, FocusingImagesTheFocusPlaneOnTheFilm) {
                 EXPECT_LT(atFocus, 0.1 * SpreadOnPlane(rays, 1.25 * focus))
                     << cs.name << " focus " << focus << " h " << h;
                 // The lens inverts: the point lies on the far side of the axis
-                if (h != 0) EXPECT_LT(p.x * h, 0) << cs.name;
+                if (h != 0) {
+                    EXPECT_LT(p.x * h, 0) << cs.name;
+                }
             }
         }
     // Too close to focus: no solution
@@ -323,8 +327,9 @@ TEST(RealisticCamera, WeightEstimatesThePupilIntegral) {
             EXPECT_NEAR(mean, integral, 0.005 * integral)
                 << aperture << " " << pRaster.x << " " << pRaster.y;
             // An f/8.5 lens passes about pi / (4 N^2) of the radiance on the axis
-            if (pRaster.x == 12 && !masked)
+            if (pRaster.x == 12 && !masked) {
                 EXPECT_NEAR(mean, Pi / (4 * Sqr(kFocal / 6)), 0.1 * mean);
+            }
         }
     }
     std::remove(singlet.c_str());
@@ -421,7 +426,9 @@ TEST(RealisticCamera, ApertureImageFile) {
                 // The singlet's stop is its front interface, where the ray leaves the lens:
                 // on the mask's open side, or within half a texel of it (bilinear filtering:
                 // 3 mm / 16); the stop reaches to +3 mm
-                if (masked) EXPECT_LT(r->ray.o.x, 0.0002f);
+                if (masked) {
+                    EXPECT_LT(r->ray.o.x, 0.0002f);
+                }
             }
         mean[masked] = sum / (n * n);
         EXPECT_GT(lens.FrontZ(), 0);

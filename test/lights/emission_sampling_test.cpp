@@ -39,8 +39,9 @@ void CheckDirections(const Light& light, Vector3f axis, Float cosMax, int n = 20
         LightLePDF pdf = les->intr ? light.PDF_Le(*les->intr, les->ray.d) : light.PDF_Le(les->ray);
         // (Point and spot lights report pdfPos 0 there, 1 in the sample: pbrt-v4's convention
         // for a delta in position)
-        if (light.Type() != LightType::DeltaPosition)
+        if (light.Type() != LightType::DeltaPosition) {
             EXPECT_NEAR(pdf.pos, les->pdfPos, 1e-4 * les->pdfPos);
+        }
         return DirectionSample{les->ray.d, les->pdfDir};
     };
     // The density PDF_Le reports for a ray leaving the light along w (area lights: from a

@@ -106,7 +106,9 @@ TEST(GridMediumTest, MajorantSegmentsCoverTheRayAndBoundTheExtinction) {
         std::optional<Float> last;
         while (std::optional<RayMajorantSegment> seg = it.Next()) {
             ++segments;
-            if (last) ASSERT_NEAR(seg->tMin, *last, 1e-4f);  // contiguous
+            if (last) {
+                ASSERT_NEAR(seg->tMin, *last, 1e-4f);  // contiguous
+            }
             ASSERT_LE(seg->tMin, seg->tMax);
             last = seg->tMax;
             for (int i = 0; i < 20; ++i) {
@@ -123,7 +125,9 @@ TEST(GridMediumTest, MajorantSegmentsCoverTheRayAndBoundTheExtinction) {
             MajorantIterator again = m.SampleRay(ray, 8, lambda);
             while (std::optional<RayMajorantSegment> seg = again.Next())
                 inside |= t >= seg->tMin - 1e-3f && t <= seg->tMax + 1e-3f;
-            if (!inside) ASSERT_EQ(m.SamplePoint(ray(t), lambda).sigma_a[0], 0);
+            if (!inside) {
+                ASSERT_EQ(m.SamplePoint(ray(t), lambda).sigma_a[0], 0);
+            }
         }
     }
     EXPECT_GT(segments, 300);  // the DDA walks voxels, not one box

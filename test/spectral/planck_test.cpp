@@ -156,17 +156,19 @@ TEST(Planck, BlackbodySpectrum) {
     EXPECT_EQ(BlackbodySpectrum(0)(500), 0);
 }
 
-// Sample (per path, fast) agrees with the exact normalised Planck function from a cold body to
-// a star, 300-1000 nm; and falls back to it outside 1-1e6 K.
-TEST(Planck, BlackbodySpectrumSampleMatchesExact) {
+// The normalised Planck function at a path's wavelengths (fast, per path) and BlackbodySpectrum's
+// Sample agree with the exact function from a cold body to a star, 300-1000 nm, and with each
+// other; outside 1-1e6 K they are the exact function.
+TEST(Planck, NormalizedAtSampledWavelengthsMatchesExact) {
     for (Float T : {0.5f, 1.f, 300.f, 1000.f, 2856.f, 6500.f, 1e5f, 1e6f, 1e9f}) {
         BlackbodySpectrum bb(T);
         for (Float u : {0.f, 0.13f, 0.5f, 0.77f}) {
             SampledWavelengths lambda = SampledWavelengths::SampleUniform(u, 300, 1000);
-            SampledSpectrum s = bb.Sample(lambda);
+            SampledSpectrum s = planck_radiance_normalized(lambda, T), b = bb.Sample(lambda);
             for (int i = 0; i < NSpectrumSamples; ++i) {
                 double exact = planck_radiance_normalized(lambda[i], T);
                 EXPECT_NEAR(s[i], exact, 2e-5 * exact + 1e-30) << T << " K, " << lambda[i];
+                EXPECT_EQ(b[i], s[i]);
             }
         }
     }

@@ -116,7 +116,9 @@ TEST(ThermalHostInterface, SmoothMetalEmissionCompletesUnpolarisedEquilibrium) {
         // (perpendicular to that plane) its S1 = -B (Rs - Rp) / 2 < 0, as Rs > Rp away from
         // normal incidence
         Stokes Es = RotateStokesBasis(E, w, StokesBasis(w), axis);
-        if (cosTheta < 0.9f) EXPECT_LT(Es[1][0], 0);
+        if (cosTheta < 0.9f) {
+            EXPECT_LT(Es[1][0], 0);
+        }
     }
 }
 
