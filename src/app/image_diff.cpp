@@ -16,8 +16,6 @@ namespace kiln {
 
 namespace {
 
-constexpr float kRelEpsilon = 0.01f;  // pbrt-v4's MRSE epsilon
-
 // RGB of a pixel for the perceptual metric (see the header): channels R, G, B, else the first
 // three, else channel 0 as grey.
 struct RGBChannels {
@@ -107,7 +105,7 @@ ImageDiffMetrics CompareImages(const Image& a, const Image& b, Image* diffImage)
             double rel = 0;
             for (int c = 0; c < nc; ++c) {
                 double va = a.GetChannel({x, y}, c), vb = b.GetChannel({x, y}, c);
-                double d = va - vb, ad = std::abs(d), den = std::abs(vb) + kRelEpsilon;
+                double d = va - vb, ad = std::abs(d), den = std::abs(vb) + kRelMSEEpsilon;
                 sumAbs += ad;
                 sumSq += d * d;
                 rel += d * d / (den * den);

@@ -15,8 +15,6 @@ namespace kiln {
 
 namespace {
 
-constexpr float kRelEpsilon = 0.01f;  // as kiln diff's relmse (pbrt-v4's MRSE)
-
 int Usage(const std::string& use, const std::string& message) {
     std::cerr << "kiln diff " << use << ": " << message << "\nsee kiln diff --help\n";
     return 2;
@@ -27,7 +25,7 @@ double Error(const std::string& metric, double a, double b) {
     double d = a - b;
     if (metric == "mae") return std::abs(d);
     if (metric == "mse") return d * d;
-    double den = std::abs(b) + kRelEpsilon;
+    double den = std::abs(b) + kRelMSEEpsilon;
     return d * d / (den * den);
 }
 

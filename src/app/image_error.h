@@ -20,6 +20,9 @@
 
 namespace kiln {
 
+// The relative metric's (relmse) epsilon, pbrt-v4's MRSE epsilon: (a - b)^2 / (|b| + eps)^2.
+inline constexpr float kRelMSEEpsilon = 0.01f;
+
 int RunImageError(const std::vector<std::string>& args);
 int RunFalseColor(const std::vector<std::string>& args);
 

@@ -128,7 +128,7 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
         return make(arena.New<InterfaceMaterial>());
     if (type == "mix") {
         std::vector<std::string> names = params.GetStringArray("materials");
-        FileLoc at = params.Has("materials") ? params.Loc("materials") : loc;
+        FileLoc at = params.Loc("materials", loc);
         if (names.size() != 2)
             throw SceneError(at, "mix material needs two values for \"string materials\"",
                              "materials");

@@ -53,8 +53,8 @@ Float ReadHGAsymmetry(const TextureParameterDictionary& params) {
 Float ReadCoefficientScale(const TextureParameterDictionary& params, const FileLoc& loc) {
     Float scale = params.GetOneFloat("scale", 1);
     if (!(scale >= 0) || !std::isfinite(scale))
-        throw SceneError(params.Has("scale") ? params.Loc("scale") : loc,
-                         "medium \"scale\" must be a finite number >= 0", std::to_string(scale));
+        throw SceneError(params.Loc("scale", loc), "medium \"scale\" must be a finite number >= 0",
+                         std::to_string(scale));
     return scale;
 }
 
@@ -79,7 +79,7 @@ std::array<int, 3> ReadGridResolution(const TextureParameterDictionary& params, 
     bool valid = res[0] >= 1 && res[1] >= 1 && res[2] >= 1 &&
                  double(n) == double(res[0]) * double(res[1]) * double(res[2]);
     if (!valid)
-        throw SceneError(params.Has("nx") ? params.Loc("nx") : loc,
+        throw SceneError(params.Loc("nx", loc),
                          "grid medium has " + std::to_string(n) + " " + what +
                              " values; expected nx*ny*nz = " + std::to_string(res[0]) + "*" +
                              std::to_string(res[1]) + "*" + std::to_string(res[2]),

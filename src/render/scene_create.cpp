@@ -285,7 +285,7 @@ SceneShapes CreateShapes(ShapeSceneEntity& s, const NamedTextures& textures,
         std::optional<FloatTexture> d = params.GetFloatTextureOrNull("displacement", arena);
         Float edgeLength = params.GetOneFloat("edgelength", 1);
         if (!(edgeLength > 0) || !std::isfinite(edgeLength))
-            throw SceneError(params.Has("edgelength") ? params.Loc("edgelength") : s.loc,
+            throw SceneError(params.Loc("edgelength", s.loc),
                              "\"edgelength\" must be positive and finite", "edgelength");
         if (d)
             displacement = MeshDisplacement{[d](Point3f p, Normal3f n, Point2f uv) {

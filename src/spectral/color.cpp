@@ -52,6 +52,14 @@ RGB Mul(const ColorMatrix& m, const RGB& v) {
             m[2][0] * v.r + m[2][1] * v.g + m[2][2] * v.b};
 }
 
+ColorMatrix Mul(const ColorMatrix& a, const ColorMatrix& b) {
+    ColorMatrix r{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            for (int k = 0; k < 3; ++k) r[i][j] += a[i][k] * b[k][j];
+    return r;
+}
+
 XYZ Mul(const ColorMatrix& m, const XYZ& v) {
     return {m[0][0] * v.X + m[0][1] * v.Y + m[0][2] * v.Z,
             m[1][0] * v.X + m[1][1] * v.Y + m[1][2] * v.Z,

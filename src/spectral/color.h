@@ -108,6 +108,8 @@ class RGBColorSpace {
 
 // Matrix-vector products.
 RGB Mul(const ColorMatrix& m, const RGB& v);
+// The product a b of two colour matrices (b applied first).
+ColorMatrix Mul(const ColorMatrix& a, const ColorMatrix& b);
 XYZ Mul(const ColorMatrix& m, const XYZ& v);
 
 }  // namespace kiln

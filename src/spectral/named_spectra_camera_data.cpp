@@ -60,7 +60,7 @@ const float k_canon_eos_5d_mkii_b[] = {
     765, 0.0021, 770, 0.0023, 775, 0.0025, 780, 0.0027,
 };
 
-const NamedSpectrumTable kTables[] = {
+const NamedSpectrumTable kCameraTables[] = {
     {"canon_eos_5d_mkii_r", k_canon_eos_5d_mkii_r, false},
     {"canon_eos_5d_mkii_g", k_canon_eos_5d_mkii_g, false},
     {"canon_eos_5d_mkii_b", k_canon_eos_5d_mkii_b, false},
@@ -68,6 +68,6 @@ const NamedSpectrumTable kTables[] = {
 
 }  // namespace
 
-std::span<const NamedSpectrumTable> CameraNamedSpectrumTables() { return kTables; }
+std::span<const NamedSpectrumTable> CameraNamedSpectrumTables() { return kCameraTables; }
 
 }  // namespace kiln

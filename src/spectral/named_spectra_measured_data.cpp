@@ -285,7 +285,7 @@ const float kGlassSiO2[] = {
     832, 1.452783,
 };
 
-const NamedSpectrumTable kTables[] = {
+const NamedSpectrumTable kMeasuredTables[] = {
     {"metal-Pt-eta", kMetalPtEta, false}, {"metal-Pt-k", kMetalPtK, false},
     {"metal-Ni-eta", kMetalNiEta, false}, {"metal-Ni-k", kMetalNiK, false},
     {"metal-Fe-eta", kMetalFeEta, false}, {"metal-Fe-k", kMetalFeK, false},
@@ -298,6 +298,6 @@ const NamedSpectrumTable kTables[] = {
 
 }  // namespace
 
-std::span<const NamedSpectrumTable> MeasuredNamedSpectrumTables() { return kTables; }
+std::span<const NamedSpectrumTable> MeasuredNamedSpectrumTables() { return kMeasuredTables; }
 
 }  // namespace kiln

@@ -593,7 +593,7 @@ const float kIllumAcesD60[] = {
     830, 63.7793,
 };
 
-const NamedSpectrumTable kTables[] = {
+const NamedSpectrumTable kPbrtTables[] = {
     {"glass-BK7", kGlassBK7, false},        {"glass-BAF10", kGlassBAF10, false},
     {"glass-FK51A", kGlassFK51A, false},    {"glass-LASF9", kGlassLASF9, false},
     {"glass-F5", kGlassF5, false},          {"glass-F10", kGlassF10, false},
@@ -617,6 +617,6 @@ const NamedSpectrumTable kTables[] = {
 
 }  // namespace
 
-std::span<const NamedSpectrumTable> PbrtNamedSpectrumTables() { return kTables; }
+std::span<const NamedSpectrumTable> PbrtNamedSpectrumTables() { return kPbrtTables; }
 
 }  // namespace kiln

@@ -46,7 +46,7 @@ CheckerMappings GetCheckerMappings(const TextureParameterDictionary& params,
     int dim = params.GetOneInt("dimension", 2);
     if (dim == 2) return {TextureMapping2D::Create(params, renderFromTexture, loc), std::nullopt};
     if (dim == 3) return {std::nullopt, TextureMapping3D::Create(renderFromTexture)};
-    throw SceneError(params.Has("dimension") ? params.Loc("dimension") : loc,
+    throw SceneError(params.Loc("dimension", loc),
                      std::to_string(dim) + " dimensional checkerboard texture not supported",
                      std::to_string(dim));
 }

@@ -87,7 +87,7 @@ TextureMapping2D TextureMapping2D::Create(const TextureParameterDictionary& para
         return PlanarMapping(textureFromRender, params.GetOneVector3f("v1", Vector3f(1, 0, 0)),
                              params.GetOneVector3f("v2", Vector3f(0, 1, 0)),
                              params.GetOneFloat("udelta", 0), params.GetOneFloat("vdelta", 0));
-    FileLoc at = params.Has("mapping") ? params.Loc("mapping") : loc;
+    FileLoc at = params.Loc("mapping", loc);
     throw SceneError(at, "unknown 2D texture mapping \"" + type + "\"", type);
 }
 

@@ -48,6 +48,9 @@ std::string TextureParameterDictionary::TypeOf(const std::string& name) const {
 }
 bool TextureParameterDictionary::Has(const std::string& name) const { return dict->Has(name); }
 FileLoc TextureParameterDictionary::Loc(const std::string& name) const { return dict->Loc(name); }
+FileLoc TextureParameterDictionary::Loc(const std::string& name, const FileLoc& absent) const {
+    return dict->Loc(name, absent);
+}
 const RGBColorSpace* TextureParameterDictionary::ColorSpace() const { return dict->ColorSpace(); }
 
 // Float textures

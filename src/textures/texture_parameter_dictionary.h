@@ -38,6 +38,7 @@ class TextureParameterDictionary {
     std::string TypeOf(const std::string& name) const;
     bool Has(const std::string& name) const;
     FileLoc Loc(const std::string& name) const;
+    FileLoc Loc(const std::string& name, const FileLoc& absent) const;
     const RGBColorSpace* ColorSpace() const;
 
     // "float name" gives a constant texture, "texture name" the named float texture (SceneError

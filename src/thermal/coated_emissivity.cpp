@@ -18,11 +18,6 @@ namespace {
 // Polynomials up to degree 63 in the base reflectance (maxdepth up to 123)
 constexpr int kMaxCoefficients = 64;
 
-std::optional<Float> ConstantValue(const FloatTexture& t) {
-    if (const FloatConstantTexture* c = t.GetIf<FloatConstantTexture>()) return c->Value();
-    return std::nullopt;
-}
-
 // The layer has no scattering medium: a constant albedo texture that is 0 at every wavelength.
 bool NoMedium(const SpectrumTexture& albedo, const TableAxis& lambdas) {
     if (!albedo.Is<SpectrumConstantTexture>()) return false;
@@ -35,7 +30,7 @@ bool NoMedium(const SpectrumTexture& albedo, const TableAxis& lambdas) {
 // Roughness nodes: the material's alpha when both roughness parameters are one constant,
 // otherwise a range covering pbrt-v4's (remapped) roughness values.
 TableAxis AlphaAxis(const FloatTexture& u, const FloatTexture& v, bool remap) {
-    std::optional<Float> cu = ConstantValue(u), cv = ConstantValue(v);
+    std::optional<Float> cu = u.ConstantValue(), cv = v.ConstantValue();
     if (cu && cv && *cu == *cv) {
         Float alpha = remap ? TrowbridgeReitzDistribution::RoughnessToAlpha(std::max(*cu, 0.f))
                             : std::max(*cu, 0.f);
@@ -112,7 +107,7 @@ SampledSpectrum SampledAlbedoTable::Albedo(Vector3f wo, const SampledWavelengths
 CoatedDiffuseEmissivity::CoatedDiffuseEmissivity(const CoatedDiffuseMaterial& m,
                                                  const Material& handle, EmissivityTables& t)
     : tables(&t) {
-    std::optional<Float> thickness = ConstantValue(m.Thickness());
+    std::optional<Float> thickness = m.Thickness().ConstantValue();
     if (!thickness || !NoMedium(m.Albedo(), t.Wavelengths()) ||
         m.MaxDepth() / 2 + 2 > kMaxCoefficients) {
         fallback.emplace(handle, t);
@@ -187,7 +182,7 @@ CoatedConductorEmissivity::CoatedConductorEmissivity(const CoatedConductorMateri
     auto uniform = [](const std::optional<SpectrumTexture>& s) {
         return !s || s->Is<SpectrumConstantTexture>();
     };
-    std::optional<Float> thickness = ConstantValue(p.thickness);
+    std::optional<Float> thickness = p.thickness.ConstantValue();
     if (!thickness || !NoMedium(p.albedo, t.Wavelengths()) ||
         !p.interfaceEta.Is<ConstantSpectrum>() || !uniform(p.conductorEta) || !uniform(p.k) ||
         !uniform(p.reflectance)) {

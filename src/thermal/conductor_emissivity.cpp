@@ -17,11 +17,6 @@ namespace {
 
 constexpr int H = ConductorAlbedoMoments::kNodes;
 
-// The value of a constant float texture, or nullopt.
-std::optional<Float> ConstantValue(const FloatTexture& t) {
-    if (const FloatConstantTexture* c = t.GetIf<FloatConstantTexture>()) return c->Value();
-    return std::nullopt;
-}
 bool IsConstant(const std::optional<SpectrumTexture>& t) {
     return !t || t->Is<SpectrumConstantTexture>();
 }
@@ -134,7 +129,7 @@ int ConductorEmissivity::Azimuths::Weights(Vector3f wo, int node[4], float weigh
 // ConductorEmissivity
 ConductorEmissivity::ConductorEmissivity(const ConductorMaterial& m, EmissivityTables& t)
     : tables(&t) {
-    std::optional<Float> u = ConstantValue(m.URoughness()), v = ConstantValue(m.VRoughness());
+    std::optional<Float> u = m.URoughness().ConstantValue(), v = m.VRoughness().ConstantValue();
     auto remap = [&](Float r) {
         return std::max(0.f,
                         m.RemapRoughness() ? TrowbridgeReitzDistribution::RoughnessToAlpha(r) : r);

@@ -7,14 +7,6 @@
 
 namespace kiln {
 
-namespace {
-
-FileLoc LocOf(const TextureParameterDictionary& params, const char* name, const FileLoc& loc) {
-    return params.Has(name) ? params.Loc(name) : loc;
-}
-
-}  // namespace
-
 // HeatMapField Method Definitions
 HeatMapField::~HeatMapField() { budget.Release(chargedBytes); }
 
@@ -95,33 +87,33 @@ HeatMapField* HeatMapField::Create(const TextureParameterDictionary& params,
     Source source;
     source.pattern = params.GetOneFilename("filename", "");
     if (source.pattern.empty()) throw SceneError(loc, "\"filename\" must be given for heatmap");
-    source.loc = LocOf(params, "filename", loc);
+    source.loc = params.Loc("filename", loc);
     TextureMapping2D mapping = TextureMapping2D::Create(params, renderFromTexture, loc);
 
     std::string filterName = params.GetOneString("filter", "bilinear");
     auto filter = ParseFilter(filterName);
     if (!filter)
-        throw SceneError(LocOf(params, "filter", loc),
-                         "unknown image filter \"" + filterName + "\"", filterName);
+        throw SceneError(params.Loc("filter", loc), "unknown image filter \"" + filterName + "\"",
+                         filterName);
     source.options.filter = *filter;
     source.options.maxAnisotropy = params.GetOneFloat("maxanisotropy", 8);
     std::string wrapName = params.GetOneString("wrap", "clamp");
     std::optional<WrapMode> wrap = ParseWrapMode(wrapName);
     if (!wrap)
-        throw SceneError(LocOf(params, "wrap", loc), "unknown wrap mode \"" + wrapName + "\"",
+        throw SceneError(params.Loc("wrap", loc), "unknown wrap mode \"" + wrapName + "\"",
                          wrapName);
     source.wrap = *wrap;
     std::string encodingName = params.GetOneString("encoding", "linear");
     std::optional<ColorEncoding> encoding = ColorEncoding::Parse(encodingName);
     if (!encoding)
-        throw SceneError(LocOf(params, "encoding", loc),
+        throw SceneError(params.Loc("encoding", loc),
                          "unknown color encoding \"" + encodingName + "\"", encodingName);
     source.encoding = *encoding;
 
     Float offset = 0, scale = 1;
     bool hasMin = params.Has("tmin"), hasMax = params.Has("tmax");
     if (hasMin != hasMax)
-        throw SceneError(LocOf(params, hasMin ? "tmin" : "tmax", loc),
+        throw SceneError(params.Loc(hasMin ? "tmin" : "tmax", loc),
                          "heatmap needs both \"tmin\" and \"tmax\"", hasMin ? "tmin" : "tmax");
     if (hasMin) {
         offset = params.GetOneFloat("tmin", 0);

@@ -11,14 +11,6 @@
 
 namespace kiln {
 
-namespace {
-
-FileLoc LocOf(const TextureParameterDictionary& params, const char* name, const FileLoc& loc) {
-    return params.Has(name) ? params.Loc(name) : loc;
-}
-
-}  // namespace
-
 // GradientField Method Definitions
 GradientField::GradientField(const Transform& spaceFromRender, Point3f p0, Point3f p1, Float t0,
                              Float t1, bool clamp)
@@ -39,7 +31,7 @@ GradientField* GradientField::Create(const TextureParameterDictionary& params,
                                      ObjectArena& arena) {
     Point3f p0 = params.GetOnePoint3f("p0", Point3f(0, 0, 0));
     Point3f p1 = params.GetOnePoint3f("p1", Point3f(0, 0, 1));
-    if (p0 == p1) throw SceneError(LocOf(params, "p1", loc), "gradient needs p0 != p1", "p1");
+    if (p0 == p1) throw SceneError(params.Loc("p1", loc), "gradient needs p0 != p1", "p1");
     Float t0 = params.GetOneFloat("t0", 0), t1 = params.GetOneFloat("t1", 1);
     std::string space = params.GetOneString("space", "object");
     Transform spaceFromRender;
@@ -49,11 +41,11 @@ GradientField* GradientField::Create(const TextureParameterDictionary& params,
         spaceFromRender =
             params.Textures() ? Inverse(params.Textures()->renderFromWorld) : Transform();
     else
-        throw SceneError(LocOf(params, "space", loc),
+        throw SceneError(params.Loc("space", loc),
                          "unknown gradient space \"" + space + "\" (object or world)", space);
     std::string extrapolate = params.GetOneString("extrapolate", "clamp");
     if (extrapolate != "clamp" && extrapolate != "linear")
-        throw SceneError(LocOf(params, "extrapolate", loc),
+        throw SceneError(params.Loc("extrapolate", loc),
                          "unknown extrapolation \"" + extrapolate + "\" (clamp or linear)",
                          extrapolate);
     return arena.New<GradientField>(spaceFromRender, p0, p1, t0, t1, extrapolate == "clamp");
@@ -102,7 +94,7 @@ NoiseField* NoiseField::Create(const TextureParameterDictionary& params,
                                ObjectArena& arena) {
     int octaves = params.GetOneInt("octaves", 6);
     if (octaves < 1 || octaves > MaxOctaves)
-        throw SceneError(LocOf(params, "octaves", loc),
+        throw SceneError(params.Loc("octaves", loc),
                          "noise \"octaves\" must be in [1, " + std::to_string(MaxOctaves) + "]",
                          "octaves");
     return arena.New<NoiseField>(

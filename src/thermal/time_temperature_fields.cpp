@@ -6,14 +6,6 @@
 
 namespace kiln {
 
-namespace {
-
-FileLoc LocOf(const TextureParameterDictionary& params, const char* name, const FileLoc& loc) {
-    return params.Has(name) ? params.Loc(name) : loc;
-}
-
-}  // namespace
-
 // TimeTemperatureField Method Definitions
 void TimeTemperatureField::Start(const TextureParameterDictionary& params,
                                  const TemperatureAnimation& animation) {
@@ -34,7 +26,7 @@ CoolingField* CoolingField::Create(const TextureParameterDictionary& params, con
     auto positive = [&](const char* name, Float def) {
         Float v = params.GetOneFloat(name, def);
         if (!(v > 0))
-            throw SceneError(LocOf(params, name, loc),
+            throw SceneError(params.Loc(name, loc),
                              std::string("cooling \"") + name + "\" must be positive", name);
         return double(v);
     };
@@ -79,12 +71,11 @@ KeyframeField* KeyframeField::Create(const TextureParameterDictionary& params, c
     std::vector<Float> times = params.GetFloatArray("times");
     std::vector<Float> values = params.GetFloatArray("values");
     if (times.empty() || times.size() != values.size())
-        throw SceneError(LocOf(params, "values", loc),
+        throw SceneError(params.Loc("values", loc),
                          "keyframes need \"times\" and \"values\" of the same, non-zero length",
                          "values");
     if (!std::is_sorted(times.begin(), times.end()))
-        throw SceneError(LocOf(params, "times", loc), "keyframe \"times\" must not decrease",
-                         "times");
+        throw SceneError(params.Loc("times", loc), "keyframe \"times\" must not decrease", "times");
     KeyframeField* field = arena.New<KeyframeField>(std::move(times), std::move(values));
     field->Start(params, animation);
     return field;

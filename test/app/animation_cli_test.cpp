@@ -18,7 +18,7 @@ namespace kiln {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr auto Q = testing::ShellQuote;
+using testing::Q;
 
 TEST(AnimationCLI, EveryFrameOfOneRunIsWhatARunOfThatFrameRenders) {
     fs::path dir = fs::path(::testing::TempDir()) / ("kiln_animation_" + std::to_string(getpid()));

@@ -32,6 +32,8 @@ inline std::string ShellQuote(const std::string& s) {
     for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
     return q + "'";
 }
+// Its short name, for command lines
+inline constexpr auto Q = ShellQuote;
 
 // The whole content of a file ("" if it cannot be read)
 inline std::string ReadAll(const std::string& file) {

@@ -30,7 +30,7 @@ namespace kiln {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr auto Q = testing::ShellQuote;
+using testing::Q;
 
 struct Page {
     std::string file;

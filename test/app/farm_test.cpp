@@ -25,8 +25,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
+using testing::Q;
 using testing::ShellQuote;
-constexpr auto Q = ShellQuote;
 
 TEST(Farm, TilesCoverTheFilmOnce) {
     for (Point2i res : {Point2i(24, 20), Point2i(1920, 1080), Point2i(3, 700), Point2i(1, 1)})
@@ -100,8 +100,9 @@ TEST(Farm, ScriptsRunAsSlurmWouldGiveTheSingleProcessRender) {
         for (std::istringstream lines(testing::ReadAll(farmDir + script)); !lines.eof();) {
             std::string line;
             std::getline(lines, line);
-            if (line.rfind("#SBATCH", 0) == 0)
+            if (line.rfind("#SBATCH", 0) == 0) {
                 EXPECT_EQ(line.find(dir.string()), std::string::npos) << line;
+            }
         }
     // Nothing rendered yet: --status lists the 8 parts
     EXPECT_NE(std::system((farm + " --status > " + Q(stdoutFile)).c_str()), 0);

@@ -18,7 +18,7 @@ namespace kiln {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr auto Q = testing::ShellQuote;
+using testing::Q;
 
 // Runs kiln in dir with its standard output to `stdoutFile`; *err receives its standard error
 int RunKilnIn(const fs::path& dir, const std::string& args, std::string* err = nullptr,

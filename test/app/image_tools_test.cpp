@@ -20,7 +20,7 @@ namespace kiln {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr auto Q = testing::ShellQuote;
+using testing::Q;
 
 class ImageTools : public testing::KilnCommandTest {
   protected:

@@ -22,7 +22,7 @@ namespace kiln {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr auto Q = testing::ShellQuote;
+using testing::Q;
 
 class OutputCheckCLI : public testing::KilnCommandTest {
   protected:

@@ -305,7 +305,9 @@ TEST(Checkpoints, HostileCheckpointFilesAreIgnoredNotFollowed) {
     auto plant = [&](const std::string& kind) {
         fs::remove_all(checkpoint);
         if (kind == "directory") fs::create_directories(fs::path(checkpoint) / "inside");
-        if (kind == "fifo") ASSERT_EQ(mkfifo(checkpoint.c_str(), 0644), 0);
+        if (kind == "fifo") {
+            ASSERT_EQ(mkfifo(checkpoint.c_str(), 0644), 0);
+        }
         if (kind == "devzero") fs::create_symlink("/dev/zero", checkpoint);
         if (kind == "link") {
             std::ofstream(victim) << "precious";
@@ -318,10 +320,16 @@ TEST(Checkpoints, HostileCheckpointFilesAreIgnoredNotFollowed) {
         SCOPED_TRACE(kind);
         plant(kind);
         std::string seen = run({"-o", out, "--checkpoint", "0"});
-        if (kind != "link") EXPECT_NE(seen.find("ignoring"), std::string::npos) << seen;
+        if (kind != "link") {
+            EXPECT_NE(seen.find("ignoring"), std::string::npos) << seen;
+        }
         EXPECT_EQ(testing::Pixels(out), testing::Pixels(ref));
-        if (kind == "directory") EXPECT_TRUE(fs::is_directory(fs::path(checkpoint) / "inside"));
-        if (kind == "link") EXPECT_EQ(testing::ReadAll(victim.string()), "precious");
+        if (kind == "directory") {
+            EXPECT_TRUE(fs::is_directory(fs::path(checkpoint) / "inside"));
+        }
+        if (kind == "link") {
+            EXPECT_EQ(testing::ReadAll(victim.string()), "precious");
+        }
         fs::remove_all(checkpoint);
         for (const char* suffix : {".writing", ".tmp"}) fs::remove(checkpoint + suffix);
     }

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../temp_dir.h"
 #include "base/atomic_file.h"
 
 namespace fs = std::filesystem;
@@ -32,14 +33,7 @@ int Others(const fs::path& dir, std::initializer_list<std::string> known) {
     return n;
 }
 
-struct TempDir {
-    fs::path path = fs::path(::testing::TempDir()) / ("kiln_atomic_" + std::to_string(getpid()));
-    TempDir() {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-};
+using test::TempDir;
 
 TEST(AtomicFile, WritesAndReplacesWholeFiles) {
     TempDir d;

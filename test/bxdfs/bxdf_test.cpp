@@ -7,6 +7,7 @@
 #include "base/rng.h"
 #include "base/sampling.h"
 #include "base/statistics.h"
+#include "direction.h"
 #include "materials/bxdfs/bsdf.h"
 #include "materials/bxdfs/fresnel.h"
 
@@ -14,10 +15,7 @@ using namespace kiln;
 
 namespace {
 
-Vector3f Dir(Float cosTheta, Float phi) {
-    Float s = SafeSqrt(1 - cosTheta * cosTheta);
-    return Vector3f(s * std::cos(phi), s * std::sin(phi), cosTheta);
-}
+using test::Dir;
 
 // Mean and standard error of f cos / pdf over Sample_f (the directional albedo, reflection
 // plus transmission), per wavelength 0. Importance mode: no 1/eta^2 radiance scaling.

@@ -8,6 +8,7 @@
 #include <functional>
 #include <sstream>
 
+#include "direction.h"
 #include "materials/bxdfs/bxdf.h"
 #include "materials/bxdfs/measured_bxdf_data.h"
 #include "rgl_test_data.h"
@@ -17,15 +18,12 @@ using kiln::test::RGLConductor;
 
 namespace {
 
+using test::Dir;
+
 const std::string kCommittedDir = std::string(KILN_SOURCE_DIR) + "/test/regression/pbrt_features/";
 
 // The four wavelengths of the test data (400, 500, 600, 700 nm)
 SampledWavelengths NodeWavelengths() { return SampledWavelengths::SampleUniform(0, 400, 800); }
-
-Vector3f Dir(Float cosTheta, Float phi) {
-    Float s = SafeSqrt(1 - cosTheta * cosTheta);
-    return Vector3f(s * std::cos(phi), s * std::sin(phi), cosTheta);
-}
 
 // A small model for the structural tests
 RGLConductor Tiny() {

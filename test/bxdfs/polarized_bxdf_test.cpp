@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "base/rng.h"
+#include "direction.h"
 #include "materials/bxdfs/bsdf.h"
 #include "materials/bxdfs/fresnel.h"
 #include "materials/bxdfs/fresnel_mueller.h"
@@ -15,10 +16,7 @@ using namespace kiln;
 
 namespace {
 
-Vector3f Dir(Float cosTheta, Float phi) {
-    Float s = SafeSqrt(1 - cosTheta * cosTheta);
-    return Vector3f(s * std::cos(phi), s * std::sin(phi), cosTheta);
-}
+using test::Dir;
 
 Vector3f RandomDir(RNG& rng) {
     return Dir(2 * rng.UniformFloat() - 1, 2 * Pi * rng.UniformFloat());

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "../textures/param_helpers.h"
 #include "base/rng.h"
 #include "base/sampling.h"
 #include "core/camera/camera.h"
@@ -14,15 +15,7 @@
 namespace kiln {
 namespace {
 
-ParsedParameter FloatParam(const std::string& name, std::vector<Float> v) {
-    ParsedParameter p;
-    p.type = "float";
-    p.name = name;
-    p.floats = std::move(v);
-    return p;
-}
-
-struct Fixture {
+struct ImportanceFixture {
     ObjectArena arena;
     Diagnostics diag{nullptr};
     SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.5f);
@@ -40,8 +33,8 @@ struct Fixture {
 };
 
 TEST(CameraImportance, WeAndPDFMatchGenerateRay) {
-    Fixture f;
-    const PerspectiveCamera* cam = f.Make({FloatParam("fov", {50})});
+    ImportanceFixture f;
+    const PerspectiveCamera* cam = f.Make({test::Floats("float", "fov", {50})});
     ASSERT_TRUE(cam);
     RNG rng(7);
     Vector3f axis = Normalize(cam->GetCameraTransform().RenderFromCamera()(Vector3f(0, 0, 1)));
@@ -67,8 +60,8 @@ TEST(CameraImportance, WeAndPDFMatchGenerateRay) {
 TEST(CameraImportance, Normalisation) {
     // Over uniformly sampled directions: integral of We cos theta = 1 and integral of PDF_We
     // = 1 (both over the directions that reach the film), and the solid angle the film sees
-    Fixture f;
-    const PerspectiveCamera* cam = f.Make({FloatParam("fov", {60})});
+    ImportanceFixture f;
+    const PerspectiveCamera* cam = f.Make({test::Floats("float", "fov", {60})});
     Vector3f axis = Normalize(cam->GetCameraTransform().RenderFromCamera()(Vector3f(0, 0, 1)));
     RNG rng(3);
     const int n = 400000;
@@ -89,11 +82,11 @@ TEST(CameraImportance, Normalisation) {
 }
 
 TEST(CameraImportance, SampleWiConnectsToTheFilm) {
-    Fixture f;
+    ImportanceFixture f;
     for (Float lensRadius : {0.f, 0.05f}) {
-        const PerspectiveCamera* cam =
-            f.Make({FloatParam("fov", {50}), FloatParam("lensradius", {lensRadius}),
-                    FloatParam("focaldistance", {4})});
+        const PerspectiveCamera* cam = f.Make({test::Floats("float", "fov", {50}),
+                                               test::Floats("float", "lensradius", {lensRadius}),
+                                               test::Floats("float", "focaldistance", {4})});
         RNG rng(9);
         int seen = 0;
         for (int i = 0; i < 500; ++i) {

@@ -6,19 +6,12 @@
 
 #include <cmath>
 
+#include "../textures/param_helpers.h"
 #include "core/camera/sampler.h"
 #include "core/parser/parameter_dictionary.h"
 
 namespace kiln {
 namespace {
-
-ParsedParameter FloatParam(const std::string& name, std::vector<Float> v) {
-    ParsedParameter p;
-    p.type = "float";
-    p.name = name;
-    p.floats = std::move(v);
-    return p;
-}
 
 Float AngleDegrees(Vector3f a, Vector3f b) {
     return Degrees(AngleBetween(Normalize(a), Normalize(b)));
@@ -97,13 +90,13 @@ TEST(PerspectiveCamera, FovSpansShorterAxis) {
     Fixture fx;
     Vector3f z(0, 0, 1);
     // Landscape: fov is vertical.
-    Camera land = fx.Make("perspective", {FloatParam("fov", {60})}, Point2i(200, 100));
+    Camera land = fx.Make("perspective", {test::Floats("float", "fov", {60})}, Point2i(200, 100));
     EXPECT_NEAR(AngleDegrees(fx.RayAt(land, Point2f(100, 0)).d, z), 30, 1e-3);
     EXPECT_NEAR(AngleDegrees(fx.RayAt(land, Point2f(100, 100)).d, z), 30, 1e-3);
     Float horiz = Degrees(std::atan(2 * std::tan(Radians(30))));
     EXPECT_NEAR(AngleDegrees(fx.RayAt(land, Point2f(0, 50)).d, z), horiz, 1e-3);
     // Portrait: fov is horizontal.
-    Camera port = fx.Make("perspective", {FloatParam("fov", {60})}, Point2i(100, 200));
+    Camera port = fx.Make("perspective", {test::Floats("float", "fov", {60})}, Point2i(100, 200));
     EXPECT_NEAR(AngleDegrees(fx.RayAt(port, Point2f(0, 100)).d, z), 30, 1e-3);
     EXPECT_NEAR(AngleDegrees(fx.RayAt(port, Point2f(50, 0)).d, z), horiz, 1e-3);
     // Default fov 90 on a square image.
@@ -115,14 +108,16 @@ TEST(PerspectiveCamera, ScreenWindowAndAspect) {
     Fixture fx;
     Vector3f z(0, 0, 1);
     // A screen window of [0,1]x[0,1] puts the image centre's ray at the window centre.
-    Camera cam =
-        fx.Make("perspective", {FloatParam("fov", {90}), FloatParam("screenwindow", {0, 1, 0, 1})},
-                Point2i(10, 10));
+    Camera cam = fx.Make(
+        "perspective",
+        {test::Floats("float", "fov", {90}), test::Floats("float", "screenwindow", {0, 1, 0, 1})},
+        Point2i(10, 10));
     Vector3f d = fx.RayAt(cam, Point2f(5, 5)).d;
     EXPECT_NEAR(d.x / d.z, 0.5f, 1e-5);
     EXPECT_NEAR(d.y / d.z, 0.5f, 1e-5);
-    EXPECT_THROW(fx.Make("perspective", {FloatParam("screenwindow", {0, 1, 0})}, Point2i(10, 10)),
-                 SceneError);
+    EXPECT_THROW(
+        fx.Make("perspective", {test::Floats("float", "screenwindow", {0, 1, 0})}, Point2i(10, 10)),
+        SceneError);
     (void)z;
 }
 
@@ -130,7 +125,8 @@ TEST(PerspectiveCamera, ThinLensFocusesAtFocalDistance) {
     Fixture fx;
     const Float focal = 5;
     Camera cam = fx.Make("perspective",
-                         {FloatParam("lensradius", {0.5f}), FloatParam("focaldistance", {focal})},
+                         {test::Floats("float", "lensradius", {0.5f}),
+                          test::Floats("float", "focaldistance", {focal})},
                          Point2i(80, 60));
     for (Point2f pFilm : {Point2f(40, 30), Point2f(3, 57), Point2f(71.5f, 10)}) {
         Ray ref = fx.RayAt(cam, pFilm, Point2f(0.5f, 0.5f));  // lens centre
@@ -169,9 +165,10 @@ TEST(OrthographicCamera, ThinLensFocus) {
     Fixture fx;
     // As pbrt-v4: with a lens, rays leave lens points around the camera axis and meet at the
     // film point's position on the plane of focus.
-    Camera cam = fx.Make("orthographic",
-                         {FloatParam("lensradius", {0.2f}), FloatParam("focaldistance", {3})},
-                         Point2i(50, 50));
+    Camera cam = fx.Make(
+        "orthographic",
+        {test::Floats("float", "lensradius", {0.2f}), test::Floats("float", "focaldistance", {3})},
+        Point2i(50, 50));
     Camera pinhole = fx.Make("orthographic", {}, Point2i(50, 50));
     Point3f focus = fx.RayAt(pinhole, Point2f(10, 40))(3);
     for (Point2f uLens : {Point2f(0.5f, 0.5f), Point2f(0.8f, 0.3f), Point2f(0.1f, 0.9f)}) {
@@ -183,7 +180,7 @@ TEST(OrthographicCamera, ThinLensFocus) {
 TEST(Camera, Approximate_dp_dxy) {
     Fixture fx;
     const int res = 100;
-    Camera cam = fx.Make("perspective", {FloatParam("fov", {60})}, Point2i(res, res));
+    Camera cam = fx.Make("perspective", {test::Floats("float", "fov", {60})}, Point2i(res, res));
     // A plane facing the camera at distance 10: a central pixel spans 2 * 10 tan(30 deg) / res.
     // pbrt-v4 uses the smallest angular differential over the film (at the corners: smaller
     // by about cos^2 of the corner angle, 0.6 here), so the estimate lies in [0.6, 1] pixel.
@@ -219,14 +216,16 @@ TEST(Camera, Create) {
     EXPECT_TRUE(s.Is<SphericalCamera>());
     EXPECT_EQ(fx.diag.WarningCount(), 0);
     Camera sw = fx.Make("perspective",
-                        {FloatParam("shutteropen", {0.8f}), FloatParam("shutterclose", {0.2f})},
+                        {test::Floats("float", "shutteropen", {0.8f}),
+                         test::Floats("float", "shutterclose", {0.2f})},
                         Point2i(8, 8));
     EXPECT_FLOAT_EQ(sw.ShutterOpen(), 0.2f);
     EXPECT_FLOAT_EQ(sw.ShutterClose(), 0.8f);
     EXPECT_EQ(fx.diag.WarningCount(), 1);
     EXPECT_FLOAT_EQ(fx.RayAt(sw, Point2f(4, 4)).time, 0.5f);
     EXPECT_THROW(fx.Make("fisheye", {}, Point2i(8, 8)), SceneError);
-    EXPECT_THROW(fx.Make("perspective", {FloatParam("fov", {180})}, Point2i(8, 8)), SceneError);
+    EXPECT_THROW(fx.Make("perspective", {test::Floats("float", "fov", {180})}, Point2i(8, 8)),
+                 SceneError);
 }
 
 TEST(Camera, GetCameraSample) {

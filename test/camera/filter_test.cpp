@@ -8,20 +8,13 @@
 #include <functional>
 #include <vector>
 
+#include "../textures/param_helpers.h"
 #include "base/rng.h"
 #include "base/statistics.h"
 #include "core/parser/parameter_dictionary.h"
 
 namespace kiln {
 namespace {
-
-ParsedParameter FloatParam(const std::string& name, std::vector<Float> v) {
-    ParsedParameter p;
-    p.type = "float";
-    p.name = name;
-    p.floats = std::move(v);
-    return p;
-}
 
 struct FilterCase {
     std::string name;
@@ -200,14 +193,15 @@ TEST(Filter, CreateDefaults) {
 TEST(Filter, CreateWithParameters) {
     ObjectArena arena;
     Diagnostics diag(nullptr);
-    ParameterDictionary params({FloatParam("xradius", {3}), FloatParam("yradius", {1}),
-                                FloatParam("B", {0}), FloatParam("C", {0.5f})},
-                               nullptr);
+    ParameterDictionary params(
+        {test::Floats("float", "xradius", {3}), test::Floats("float", "yradius", {1}),
+         test::Floats("float", "B", {0}), test::Floats("float", "C", {0.5f})},
+        nullptr);
     Filter f = Filter::Create("mitchell", params, FileLoc(), arena, diag);
     EXPECT_EQ(f.Radius().x, 3.f);
     EXPECT_EQ(f.Radius().y, 1.f);
     EXPECT_NEAR(f.Integral(), NumericIntegral(f), 2e-3);
-    ParameterDictionary bad({FloatParam("xradius", {-1})}, nullptr);
+    ParameterDictionary bad({test::Floats("float", "xradius", {-1})}, nullptr);
     EXPECT_THROW(Filter::Create("box", bad, FileLoc(), arena, diag), SceneError);
 }
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <random>
 
+#include "../temp_dir.h"
 #include "core/film/film.h"
 #include "film_test_util.h"
 
@@ -28,20 +29,7 @@ ParsedParameterVector Resolution(int x, int y) {
     return {Param("integer", "xresolution", {}, {x}), Param("integer", "yresolution", {}, {y})};
 }
 
-struct TempDir {
-    fs::path path =
-        fs::temp_directory_path() / ("kiln_film_output_" + std::to_string(std::random_device()()));
-    TempDir() { fs::create_directories(path); }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-    int Files() const {
-        int n = 0;
-        for ([[maybe_unused]] auto& e : fs::directory_iterator(path)) ++n;
-        return n;
-    }
-};
+using test::TempDir;
 
 TEST(FilmOutput, FilmsThatCannotBeRenderedAreErrorsBeforeAllocation) {
     FilmFixture f;

@@ -10,10 +10,12 @@
 #include "../textures/param_helpers.h"
 #include "core/geometry/accelerator.h"
 #include "core/geometry/curve.h"
+#include "test_util.h"
 
 namespace kiln {
 namespace {
 
+using test::ExpectNear;
 using test::Floats;
 using test::Int1;
 using test::String1;
@@ -24,12 +26,6 @@ Point3f Bezier(const std::array<Point3f, 4>& p, Float u) {
     Vector3f s(0, 0, 0);
     for (int i = 0; i < 4; ++i) s += b[i] * Vector3f(p[i]);
     return Point3f(s);
-}
-
-void ExpectNear(Point3f a, Point3f b, Float tol = 1e-5f) {
-    EXPECT_NEAR(a.x, b.x, tol);
-    EXPECT_NEAR(a.y, b.y, tol);
-    EXPECT_NEAR(a.z, b.z, tol);
 }
 
 TEST(Curve, BasisConversionsReproduceTheCurve) {

@@ -13,7 +13,7 @@
 
 namespace kiln::test {
 
-inline void ExpectNear(Point3f a, Point3f b, Float tol) {
+inline void ExpectNear(Point3f a, Point3f b, Float tol = 1e-5f) {
     EXPECT_NEAR(a.x, b.x, tol);
     EXPECT_NEAR(a.y, b.y, tol);
     EXPECT_NEAR(a.z, b.z, tol);

@@ -74,7 +74,7 @@ void WriteRawPng(const std::string& file, int w, int h, int colorType, int bitDe
 }
 
 // Both readers' view of file: the same spec and the same pixels (as floats)
-void ExpectSameAsOpenImageIO(const std::string& file, const std::string& what) {
+void ExpectPngAsOpenImageIO(const std::string& file, const std::string& what) {
     std::unique_ptr<ImageFileReader> ours = OpenPng(file), theirs = OIIOCodec().Open(file);
     ASSERT_TRUE(ours) << what;
     const ImageFileSpec &a = ours->Spec(), &b = theirs->Spec();
@@ -118,7 +118,7 @@ TEST(PngCodec, ReadsEveryOpaquePngAsOpenImageIODoes) {
                 ASSERT_TRUE(out && out->open(file, spec));
                 ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
                 ASSERT_TRUE(out->close());
-                ExpectSameAsOpenImageIO(
+                ExpectPngAsOpenImageIO(
                     file, std::to_string(nc) + " channels, " + type.c_str() + ", " + colorSpace);
             }
     // Written by libpng: a palette, grey at 1, 2 and 4 bits, interlaced or not, no colour chunk
@@ -126,14 +126,14 @@ TEST(PngCodec, ReadsEveryOpaquePngAsOpenImageIODoes) {
     for (int i = 0; i < w * h; ++i) indices.push_back((unsigned char)(i % 4));
     for (bool interlaced : {false, true}) {
         WriteRawPng(file, w, h, PNG_COLOR_TYPE_PALETTE, 8, interlaced, false, indices);
-        ExpectSameAsOpenImageIO(file, "palette");
+        ExpectPngAsOpenImageIO(file, "palette");
         for (int bits : {1, 2, 4}) {
             // packed rows of w samples of `bits` bits
             const int stride = (w * bits + 7) / 8;
             std::vector<unsigned char> rows(size_t(stride) * h);
             for (size_t i = 0; i < rows.size(); ++i) rows[i] = (unsigned char)(i * 151 + 17);
             WriteRawPng(file, w, h, PNG_COLOR_TYPE_GRAY, bits, interlaced, false, rows);
-            ExpectSameAsOpenImageIO(file, "grey " + std::to_string(bits) + " bits");
+            ExpectPngAsOpenImageIO(file, "grey " + std::to_string(bits) + " bits");
         }
     }
     // Transparency: left to OpenImageIO (it premultiplies)

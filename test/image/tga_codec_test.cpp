@@ -80,8 +80,8 @@ std::vector<uint8_t> Values(int count, int bpp, uint8_t limit = 255) {
 
 // tolerance: 5-bit values expand as stb_image (pbrt-v4's reader) expands them, v * 255 / 31
 // rounded down; OpenImageIO may round up by one level
-void ExpectSameAsOpenImageIO(const std::string& file, const std::string& what,
-                             float tolerance = 0.5f / 255) {
+void ExpectTgaAsOpenImageIO(const std::string& file, const std::string& what,
+                            float tolerance = 0.5f / 255) {
     std::unique_ptr<ImageFileReader> ours = OpenTga(file), theirs = OIIOCodec().Open(file);
     ASSERT_TRUE(ours) << what;
     const ImageFileSpec &a = ours->Spec(), &b = theirs->Spec();
@@ -108,14 +108,14 @@ TEST(TgaCodec, ReadsEveryKindAsOpenImageIODoes) {
                 t.depth = depth, t.descriptor = descriptor;
                 t.pixels = Values(t.width * t.height, (depth + 7) / 8);
                 WriteFile(file, t.Bytes(rle));
-                ExpectSameAsOpenImageIO(file, how + ", true colour " + std::to_string(depth),
-                                        (depth == 16 ? 1.5f : 0.5f) / 255);
+                ExpectTgaAsOpenImageIO(file, how + ", true colour " + std::to_string(depth),
+                                       (depth == 16 ? 1.5f : 0.5f) / 255);
             }
             Tga grey;
             grey.type = 3, grey.depth = 8, grey.descriptor = descriptor;
             grey.pixels = Values(grey.width * grey.height, 1);
             WriteFile(file, grey.Bytes(rle));
-            ExpectSameAsOpenImageIO(file, how + ", grey");
+            ExpectTgaAsOpenImageIO(file, how + ", grey");
             Tga mapped;
             mapped.type = 1, mapped.depth = 8, mapped.mapDepth = 24;
             mapped.descriptor = descriptor;
@@ -123,7 +123,7 @@ TEST(TgaCodec, ReadsEveryKindAsOpenImageIODoes) {
             mapped.pixels = Values(mapped.width * mapped.height, 1, 5);
             for (uint8_t& p : mapped.pixels) p = uint8_t(p % 6);
             WriteFile(file, mapped.Bytes(rle));
-            ExpectSameAsOpenImageIO(file, how + ", colour-mapped");
+            ExpectTgaAsOpenImageIO(file, how + ", colour-mapped");
         }
     // Through Image::Read: 8-bit, sRGB, the orientation of OpenImageIO
     Image im = Image::Read(file);

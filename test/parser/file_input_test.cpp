@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../temp_dir.h"
 #include "base/file_reading.h"
 #include "core/parser/parser.h"
 #include "recording_target.h"
@@ -18,17 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() / ("kiln_file_input_" + std::to_string(getpid()));
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-};
+using test::TempDir;
 
 void WriteGzip(const fs::path& file, const std::string& text) {
     gzFile f = gzopen(file.c_str(), "wb");

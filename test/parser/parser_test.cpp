@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include "../temp_dir.h"
 #include "core/parser/parser.h"
 #include "recording_target.h"
 
@@ -25,21 +26,7 @@ RecordingTarget Parse(std::string_view text, Diagnostics* diag = nullptr) {
 namespace fs = std::filesystem;
 
 // A fresh directory under the system temp dir, removed at the end of the test.
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        const testing::TestInfo* info = testing::UnitTest::GetInstance()->current_test_info();
-        path = fs::temp_directory_path() /
-               ("kiln_parser_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-    void Write(const std::string& name, const std::string& text) const {
-        fs::create_directories((path / name).parent_path());
-        std::ofstream(path / name) << text;
-    }
-};
+using test::TempDir;
 
 }  // namespace
 

@@ -292,8 +292,8 @@ Material "diffuse"
     const char* cameras[] = {
         "Camera \"perspective\" \"float fov\" 1e-20",
         "Camera \"orthographic\" \"float screenwindow\" [-1e-30 1e-30 -1e-30 1e-30]",
-        "Camera \"perspective\" \"float fov\" 1e-20 \"float lensradius\" 1e-25 "
-        "\"float focaldistance\" 4"};
+        ("Camera \"perspective\" \"float fov\" 1e-20 \"float lensradius\" 1e-25 "
+         "\"float focaldistance\" 4")};
     for (const char* camera : cameras) {
         std::string scene =
             std::string(film) + camera + "\n" + world +

@@ -22,8 +22,8 @@
 namespace kiln {
 namespace {
 
-const std::string kDir = std::string(KILN_SOURCE_DIR) + "/test/regression/pbrt_features/";
-constexpr int kSeeds = 16, kSpp = 32;
+const std::string kFeatureDir = std::string(KILN_SOURCE_DIR) + "/test/regression/pbrt_features/";
+constexpr int kFeatureSeeds = 16, kFeatureSpp = 32;
 
 struct Feature {
     const char* scene;
@@ -35,7 +35,7 @@ class PbrtFeatures : public ::testing::TestWithParam<Feature> {};
 
 TEST_P(PbrtFeatures, MatchReferenceWithinNoise) {
     const Feature& f = GetParam();
-    std::string file = kDir + f.scene + ".pbrt";
+    std::string file = kFeatureDir + f.scene + ".pbrt";
     // The scene's own warnings
     {
         Diagnostics diag(nullptr);
@@ -48,18 +48,19 @@ TEST_P(PbrtFeatures, MatchReferenceWithinNoise) {
         for (const auto& w : diag.Warnings()) std::printf("  warning: %s\n", w.message.c_str());
     }
     Image reference =
-        Image::Read(kDir + "references/" + f.scene + ".exr").SelectChannels({"R", "G", "B"});
+        Image::Read(kFeatureDir + "references/" + f.scene + ".exr").SelectChannels({"R", "G", "B"});
     std::vector<Image> renders;
     std::unique_ptr<Scene> scene = testing::LoadScene(file, RenderOptions());
-    for (int k = 0; k < kSeeds; ++k) {
-        Image r = testing::RenderWindow(*scene, Bounds2f{{0, 0}, {1, 1}}, kSpp, k + 1);
+    for (int k = 0; k < kFeatureSeeds; ++k) {
+        Image r = testing::RenderWindow(*scene, Bounds2f{{0, 0}, {1, 1}}, kFeatureSpp, k + 1);
         ASSERT_EQ(r.Resolution(), reference.Resolution());
         renders.push_back(std::move(r));
     }
     testing::NoiseComparison c =
-        testing::CompareWithNoise(renders, reference, kSpp, f.referenceSpp);
+        testing::CompareWithNoise(renders, reference, kFeatureSpp, f.referenceSpp);
     EXPECT_TRUE(c.Pass()) << f.scene << ": " << c;
-    EXPECT_FALSE(testing::CompareWithNoise(renders, reference, kSpp, f.referenceSpp, 4, 1.1).Pass())
+    EXPECT_FALSE(
+        testing::CompareWithNoise(renders, reference, kFeatureSpp, f.referenceSpp, 4, 1.1).Pass())
         << f.scene << ": a 10 % error would pass";
     std::printf("%s: %s\n", f.scene, ::testing::PrintToString(c).c_str());
 }
@@ -104,12 +105,13 @@ std::array<double, 3> ChannelMeans(const Image& im) {
 // 1.0210 (R), 1.0018 (G), 1.0111 (B); the same scene with the cie1931 sensor: 0.9998, 0.9996,
 // 0.9993. 2 x 32 spp here: the means' noise is below 0.3 %.
 TEST(PbrtFeatureSensor, ImageMeansWithinTheCurvesDifferenceOfPbrt) {
-    Image reference = Image::Read(kDir + "references/sensor.exr").SelectChannels({"R", "G", "B"});
-    std::unique_ptr<Scene> scene = testing::LoadScene(kDir + "sensor.pbrt", RenderOptions());
+    Image reference =
+        Image::Read(kFeatureDir + "references/sensor.exr").SelectChannels({"R", "G", "B"});
+    std::unique_ptr<Scene> scene = testing::LoadScene(kFeatureDir + "sensor.pbrt", RenderOptions());
     std::array<double, 3> kiln{0, 0, 0};
     for (int k = 0; k < 2; ++k) {
-        std::array<double, 3> m =
-            ChannelMeans(testing::RenderWindow(*scene, Bounds2f{{0, 0}, {1, 1}}, kSpp, k + 1));
+        std::array<double, 3> m = ChannelMeans(
+            testing::RenderWindow(*scene, Bounds2f{{0, 0}, {1, 1}}, kFeatureSpp, k + 1));
         for (int c = 0; c < 3; ++c) kiln[c] += m[c] / 2;
     }
     std::array<double, 3> ref = ChannelMeans(reference);

@@ -17,7 +17,7 @@ namespace {
 
 // The scene loaded for polarised (Stokes output) or unpolarised transport; nothing if the scene
 // selects polarised transport by itself (a polariser) and stokes is false.
-std::unique_ptr<Scene> Load(const std::string& file, bool stokes) {
+std::unique_ptr<Scene> LoadPlainOrStokes(const std::string& file, bool stokes) {
     RenderOptions o;
     o.stokes = stokes;  // false: the unpolarised render of a scene that asks for Stokes output
     auto accept = [&](const Scene& scene) {
@@ -36,7 +36,7 @@ TEST(PolarizedSceneSet, CoversTheBundledScenes) { EXPECT_GE(testing::SceneFiles(
 // The comparison can see a 10 % error in intensity (most scenes 5 %; lava.pbrt, the noisiest,
 // not at these sample counts)
 TEST_P(PolarizedScenes, IntensityMatchesTheUnpolarisedRender) {
-    if (!testing::CompareScene(GetParam(), Load, 4, 8, 128))
+    if (!testing::CompareScene(GetParam(), LoadPlainOrStokes, 4, 8, 128))
         GTEST_SKIP() << "the scene has a polariser: no unpolarised counterpart";
 }
 

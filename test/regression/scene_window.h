@@ -101,9 +101,9 @@ inline std::string SceneTestName(const ::testing::TestParamInfo<std::string>& in
 // (LoadScene), or returns nothing to skip it. A render of the plain scene at referenceSpp is
 // the reference for `seeds` renders of the alternative at spp samples per pixel with
 // independent seeds (noise_comparison.h), over the centre of the image (or below it, where the
-// centre is black); each scene is loaded once and rendered as new jobs. Accepted within
-// `sigmas` (noise_comparison.h); the comparison must also see a 10 % error. Returns whether
-// the scene was compared (false: load skipped it).
+// centre is black), a tenth of it on a side and at most 64 x 64 pixels; each scene is loaded once
+// and rendered as new jobs. Accepted within `sigmas` (noise_comparison.h); the comparison must also
+// see a 10 % error. Returns whether the scene was compared (false: load skipped it).
 using SceneLoader =
     std::function<std::unique_ptr<Scene>(const std::string& file, bool alternative)>;
 inline bool CompareScene(const std::string& file, const SceneLoader& load, int kSpp, int kSeeds,
@@ -112,10 +112,15 @@ inline bool CompareScene(const std::string& file, const SceneLoader& load, int k
     std::string name = std::filesystem::path(file).filename().string();
     std::unique_ptr<Scene> plain = load(file, false);
     if (!plain) return false;
-    Bounds2f window{{0.45f, 0.45f}, {0.55f, 0.55f}};
+    // A tenth of the image on a side, at most 64 x 64 pixels (enough pixels to see a 10 %
+    // error; large films cost no more than small ones)
+    Point2i res = plain->job->film->FullResolution();
+    Vector2f half(std::min(0.05f, 32.f / float(res.x)), std::min(0.05f, 32.f / float(res.y)));
+    auto around = [&](Point2f c) { return Bounds2f{c + -half, c + half}; };
+    Bounds2f window = around({0.5f, 0.5f});
     Image reference = RenderWindow(*plain, window, kReferenceSpp, 1000);
     if (IsBlack(reference)) {
-        window = Bounds2f{{0.45f, 0.7f}, {0.55f, 0.8f}};
+        window = around({0.5f, 0.75f});
         reference = RenderWindow(*plain, window, kReferenceSpp, 1000);
     }
     plain.reset();

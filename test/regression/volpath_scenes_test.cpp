@@ -19,7 +19,7 @@
 namespace kiln {
 namespace {
 
-std::unique_ptr<Scene> Load(const std::string& file, bool volpath) {
+std::unique_ptr<Scene> LoadPlainOrVolPath(const std::string& file, bool volpath) {
     RenderOptions o;
     o.genericVolumes = volpath;
     auto accept = [&](const Scene& scene) {
@@ -38,7 +38,7 @@ TEST(VolPathSceneSet, CoversEveryFolderOfScenes) {
 }
 
 TEST_P(VolPathScenes, WithoutMediaVolPathRendersWhatPathRenders) {
-    bool compared = testing::CompareScene(GetParam(), Load, 8, 16, 512, 5);
+    bool compared = testing::CompareScene(GetParam(), LoadPlainOrVolPath, 8, 16, 512, 5);
     // scenes/media has no scene without media; every other folder's first scene is compared
     if (GetParam().find("/scenes/media/") != std::string::npos)
         EXPECT_FALSE(compared);

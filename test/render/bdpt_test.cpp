@@ -38,8 +38,8 @@ std::string Cavity(const std::string& material, double T, int spp) {
 TEST(BDPT, CavityRendersTheBlackbody) {
     const char* materials[] = {
         "\"diffuse\" \"rgb reflectance\" [0.4 0.3 0.2]",
-        "\"conductor\" \"spectrum eta\" \"metal-Pt-eta\" \"spectrum k\" \"metal-Pt-k\" "
-        "\"float roughness\" 0.3",
+        ("\"conductor\" \"spectrum eta\" \"metal-Pt-eta\" \"spectrum k\" \"metal-Pt-k\" "
+         "\"float roughness\" 0.3"),
         "\"coateddiffuse\" \"rgb reflectance\" [0.2 0.3 0.2] \"float roughness\" 0.1",
     };
     for (const char* m : materials)

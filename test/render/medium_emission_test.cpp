@@ -51,7 +51,7 @@ std::string SmallFlame(const std::string& strategy, const std::string& emission,
     return s.str();
 }
 
-struct Image {
+struct LuminanceImage {
     std::vector<double> Y;
     double Mean() const {
         double m = 0;
@@ -60,14 +60,14 @@ struct Image {
     }
 };
 
-Image Render(const std::string& strategy, const std::string& emission, int seed, bool glass = false,
-             bool windows = true) {
+LuminanceImage Render(const std::string& strategy, const std::string& emission, int seed,
+                      bool glass = false, bool windows = true) {
     testing::RenderedScene r =
         testing::RenderText(SmallFlame(strategy, emission, seed, glass, windows));
     bool sampled = emission == "sampled";
     EXPECT_EQ(r.scene->features.sampledMedia, sampled && !glass ? 1 : 0);
     EXPECT_EQ(r.scene->features.glassWindows > 0, sampled && glass && windows);
-    Image image;
+    LuminanceImage image;
     Bounds2i b = r.scene->job->film->PixelBounds();
     for (int y = b.pMin.y; y < b.pMax.y; ++y)
         for (int x = b.pMin.x; x < b.pMax.x; ++x)
@@ -76,7 +76,7 @@ Image Render(const std::string& strategy, const std::string& emission, int seed,
 }
 
 // The mean squared difference of two renders of one kind: twice the per-pixel variance
-double NoiseVariance(const Image& a, const Image& b) {
+double NoiseVariance(const LuminanceImage& a, const LuminanceImage& b) {
     double sum = 0;
     for (size_t i = 0; i < a.Y.size(); ++i) sum += (a.Y[i] - b.Y[i]) * (a.Y[i] - b.Y[i]);
     return sum / (2.0 * double(a.Y.size()));
@@ -89,8 +89,8 @@ struct Kind {
 };
 Kind RenderKind(const std::string& strategy, const std::string& emission, int seed,
                 bool glass = false, bool windows = true) {
-    Image a = Render(strategy, emission, seed, glass, windows),
-          b = Render(strategy, emission, seed + 1, glass, windows);
+    LuminanceImage a = Render(strategy, emission, seed, glass, windows),
+                   b = Render(strategy, emission, seed + 1, glass, windows);
     double variance = NoiseVariance(a, b);
     return {(a.Mean() + b.Mean()) / 2, std::sqrt(variance / (2.0 * double(a.Y.size()))), variance};
 }

@@ -14,7 +14,7 @@ namespace {
 
 bool Same(const Bounds2i& a, const Bounds2i& b) { return a.pMin == b.pMin && a.pMax == b.pMax; }
 
-const char* kScene =
+const char* kOptionsScene =
     "Film \"rgb\" \"integer xresolution\" 40 \"integer yresolution\" 20\n"
     "  \"float cropwindow\" [0 0.5 0 0.5]\n"
     "Integrator \"volpath\" \"string lightsampler\" \"uniform\" \"string strategy\" \"light\"\n"
@@ -28,7 +28,7 @@ const char* kScene =
 TEST(RenderOptions, WinOverTheSceneFileAndLeaveTheDescriptionAsParsed) {
     Diagnostics diag(nullptr);
     SceneBuilder builder(diag);
-    ParseString(builder, kScene, diag, "<test>");
+    ParseString(builder, kOptionsScene, diag, "<test>");
     SceneDescription& desc = builder.Description();
 
     RenderOptions o;
@@ -91,7 +91,7 @@ TEST(RenderOptions, TheFrameTimeReachesTimeDependentTextures) {
     auto temperature = [](const std::string& extra, std::optional<Float> time) {
         Diagnostics diag(nullptr);
         SceneBuilder builder(diag);
-        std::string text = kScene;
+        std::string text = kOptionsScene;
         text.insert(text.find("\"float mass\" 1") + 14, extra);
         ParseString(builder, text, diag, "<test>");
         RenderOptions o;
@@ -119,7 +119,7 @@ TEST(RenderOptions, ACropWindowReplacesTheScenesAndPixelBoundsReplaceBoth) {
     Diagnostics diag(nullptr);
     auto bounds = [&](RenderOptions o) {
         SceneBuilder builder(diag);
-        ParseString(builder, kScene, diag, "<test>");
+        ParseString(builder, kOptionsScene, diag, "<test>");
         return Scene::Create(builder.Description(), o, diag)->job->film->PixelBounds();
     };
     EXPECT_TRUE(Same(bounds({}), Bounds2i{{0, 0}, {20, 10}}));

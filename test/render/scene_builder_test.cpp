@@ -14,7 +14,7 @@ SceneDescription Describe(const std::string& text, Diagnostics* diagOut = nullpt
     return std::move(builder.Description());
 }
 
-std::string ErrorOf(const std::string& text) {
+std::string BuildError(const std::string& text) {
     try {
         Describe(text);
     } catch (const SceneError& e) {
@@ -113,17 +113,18 @@ Shape "sphere" "float radius" 2
 }
 
 TEST(SceneBuilderTest, MalformedStructureIsAnErrorWithItsLocation) {
-    EXPECT_NE(ErrorOf("WorldBegin\nAttributeEnd\n").find("<test>:2:1"), std::string::npos);
-    EXPECT_NE(ErrorOf("WorldBegin\nAttributeBegin\n").find("<test>:2:1"), std::string::npos);
-    EXPECT_NE(ErrorOf("WorldBegin\nObjectInstance \"nope\"\n").find("nope"), std::string::npos);
-    EXPECT_NE(ErrorOf("WorldBegin\nFilm \"rgb\"\n").find("before WorldBegin"), std::string::npos);
-    EXPECT_NE(ErrorOf("Shape \"sphere\"\n").find("after WorldBegin"), std::string::npos);
-    EXPECT_NE(ErrorOf("WorldBegin\nTexture \"t\" \"color\" \"constant\"\n").find("color"),
+    EXPECT_NE(BuildError("WorldBegin\nAttributeEnd\n").find("<test>:2:1"), std::string::npos);
+    EXPECT_NE(BuildError("WorldBegin\nAttributeBegin\n").find("<test>:2:1"), std::string::npos);
+    EXPECT_NE(BuildError("WorldBegin\nObjectInstance \"nope\"\n").find("nope"), std::string::npos);
+    EXPECT_NE(BuildError("WorldBegin\nFilm \"rgb\"\n").find("before WorldBegin"),
               std::string::npos);
-    EXPECT_NE(ErrorOf("WorldBegin\nNamedMaterial \"m\"\nShape \"sphere\"\n").find("'m'"),
+    EXPECT_NE(BuildError("Shape \"sphere\"\n").find("after WorldBegin"), std::string::npos);
+    EXPECT_NE(BuildError("WorldBegin\nTexture \"t\" \"color\" \"constant\"\n").find("color"),
               std::string::npos);
-    EXPECT_NE(ErrorOf("ColorSpace \"bogus\"\n").find("bogus"), std::string::npos);
-    EXPECT_NE(ErrorOf("WorldBegin\nObjectBegin \"a\"\nObjectBegin \"b\"\n").find("<test>:3"),
+    EXPECT_NE(BuildError("WorldBegin\nNamedMaterial \"m\"\nShape \"sphere\"\n").find("'m'"),
+              std::string::npos);
+    EXPECT_NE(BuildError("ColorSpace \"bogus\"\n").find("bogus"), std::string::npos);
+    EXPECT_NE(BuildError("WorldBegin\nObjectBegin \"a\"\nObjectBegin \"b\"\n").find("<test>:3"),
               std::string::npos);
 }
 

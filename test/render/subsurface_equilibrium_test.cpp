@@ -15,14 +15,14 @@
 namespace kiln {
 namespace {
 
-struct Case {
+struct SubsurfaceCase {
     const char* name;
     const char* material;
     int spp;  // for a standard error below 0.125 % (the albedos' paths are long)
     std::vector<double> temperatures;
 };
 
-std::string Cavity(const Case& c, double T, int spp) {
+std::string Cavity(const SubsurfaceCase& c, double T, int spp) {
     std::ostringstream s;
     s << "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 24\n"
       << "Sampler \"zsobol\" \"integer pixelsamples\" " << spp << "\n"
@@ -41,10 +41,10 @@ std::string Cavity(const Case& c, double T, int spp) {
     return s.str();
 }
 
-class SubsurfaceEquilibrium : public ::testing::TestWithParam<Case> {};
+class SubsurfaceEquilibrium : public ::testing::TestWithParam<SubsurfaceCase> {};
 
 TEST_P(SubsurfaceEquilibrium, CavityRendersTheBlackbody) {
-    const Case& c = GetParam();
+    const SubsurfaceCase& c = GetParam();
     for (double T : c.temperatures) {
         SCOPED_TRACE(T);
         testing::ExpectBlackbodyImage(testing::RenderText(Cavity(c, T, c.spp)), T, c.name);
@@ -55,18 +55,22 @@ INSTANTIATE_TEST_SUITE_P(
     Cavities, SubsurfaceEquilibrium,
     ::testing::Values(
         // rhoEff from "reflectance" (textured, grey per texel), mean free path 0.02
-        Case{"reflectance_mfp",
-             "\"subsurface\" \"texture reflectance\" \"grey\" \"spectrum mfp\" [300 0.02 900 0.02]",
-             256,
-             {1500}},
+        SubsurfaceCase{
+            "reflectance_mfp",
+            "\"subsurface\" \"texture reflectance\" \"grey\" \"spectrum mfp\" [300 0.02 900 0.02]",
+            256,
+            {1500}},
         // rhoEff from the table at sigma_s / sigma_t, forward scattering, eta 1.5
-        Case{"sigma_g_eta",
-             "\"subsurface\" \"spectrum sigma_a\" [300 10 900 10] \"spectrum sigma_s\" [300 40 900 "
-             "40] "
-             "\"float g\" 0.5 \"float eta\" 1.5",
-             32,
-             {1000, 5000}}),
-    [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
+        SubsurfaceCase{
+            "sigma_g_eta",
+            "\"subsurface\" \"spectrum sigma_a\" [300 10 900 10] \"spectrum sigma_s\" [300 40 900 "
+            "40] "
+            "\"float g\" 0.5 \"float eta\" 1.5",
+            32,
+            {1000, 5000}}),
+    [](const ::testing::TestParamInfo<SubsurfaceCase>& info) {
+        return std::string(info.param.name);
+    });
 
 // Subsurface transport is volpath's: a scene with a subsurface material runs VolPathIntegrator,
 // "path" renders the boundary alone (a warning, as pbrt-v4's path integrator ignores BSSRDFs)

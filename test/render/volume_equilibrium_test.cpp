@@ -17,7 +17,7 @@
 namespace kiln {
 namespace {
 
-struct Case {
+struct VolumeCase {
     const char* name;
     const char* glass;   // the body's material ("" for no body)
     const char* inside;  // the medium in the body, without its temperature
@@ -25,7 +25,7 @@ struct Case {
     int spp;             // enough for a standard error below 0.125 %
 };
 
-std::string Cavity(const Case& c, bool meshes, double T, int spp) {
+std::string Cavity(const VolumeCase& c, bool meshes, double T, int spp) {
     std::ostringstream s;
     s << "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 24\n"
       << "Sampler \"zsobol\" \"integer pixelsamples\" " << spp << "\n"
@@ -58,7 +58,7 @@ std::string Cavity(const Case& c, bool meshes, double T, int spp) {
     return s.str();
 }
 
-class VolumeEquilibrium : public ::testing::TestWithParam<std::tuple<Case, bool>> {};
+class VolumeEquilibrium : public ::testing::TestWithParam<std::tuple<VolumeCase, bool>> {};
 
 TEST_P(VolumeEquilibrium, CavityRendersTheBlackbody) {
     auto [c, meshes] = GetParam();
@@ -71,7 +71,7 @@ TEST_P(VolumeEquilibrium, CavityRendersTheBlackbody) {
     testing::ExpectBlackbodyImage(r, T, std::string(c.name) + (meshes ? ", meshes" : ", spheres"));
 }
 
-const Case kCases[] = {
+const VolumeCase kVolumeCases[] = {
     {"glass, absorbing melt", "\"dielectric\" \"float eta\" 1.5",
      "\"string type\" \"homogeneous\" \"rgb sigma_a\" [1 1.5 2] \"rgb sigma_s\" [0 0 0]", "", 256},
     {"glass, scattering melt", "\"dielectric\" \"float eta\" 1.5",
@@ -110,8 +110,8 @@ const Case kCases[] = {
 };
 
 INSTANTIATE_TEST_SUITE_P(Cavities, VolumeEquilibrium,
-                         ::testing::Combine(::testing::ValuesIn(kCases), ::testing::Bool()),
-                         testing::CavityCaseName<Case>);
+                         ::testing::Combine(::testing::ValuesIn(kVolumeCases), ::testing::Bool()),
+                         testing::CavityCaseName<VolumeCase>);
 
 }  // namespace
 }  // namespace kiln

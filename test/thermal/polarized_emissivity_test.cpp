@@ -22,8 +22,8 @@ namespace {
 
 using namespace kiln::test;
 
-struct Fixture : ThermalFixture {
-    Fixture() {
+struct PolarizedFixture : ThermalFixture {
+    PolarizedFixture() {
         tables.polarized = true;
         AddBilerpFloat("ramp", 0.001f, 0.5f, 0.1f, 0.3f);  // roughness over uv
     }
@@ -41,7 +41,7 @@ ParsedParameterVector Gold(Float roughness) {
 }  // namespace
 
 TEST(PolarizedEmissivity, SmoothConductorsHaveTheFresnelDifference) {
-    Fixture f;
+    PolarizedFixture f;
     const Material* m = f.Make("conductor", Gold(0));
     const MaterialAlbedo* albedo = MaterialAlbedo::Create(*m, f.tables, f.arena);
     for (Float l : {400.f, 550.f, 700.f})
@@ -64,7 +64,7 @@ TEST(PolarizedEmissivity, SmoothConductorsHaveTheFresnelDifference) {
 }
 
 TEST(PolarizedEmissivity, RoughConductorTablesMatchThePolarisedBSDF) {
-    Fixture f;
+    PolarizedFixture f;
     RNG rng(17);
     struct Case {
         std::string what;
@@ -129,7 +129,7 @@ TEST(PolarizedEmissivity, RoughConductorTablesMatchThePolarisedBSDF) {
 }
 
 TEST(PolarizedEmissivity, UnpolarisedRenderingBuildsNoPolarisationTable) {
-    Fixture f;
+    PolarizedFixture f;
     f.tables.polarized = false;
     const Material* m = f.Make("conductor", Gold(0.2f));
     const MaterialAlbedo* albedo = MaterialAlbedo::Create(*m, f.tables, f.arena);

@@ -146,7 +146,7 @@ Camera CreateRealistic(const ParameterDictionary& params, const CameraTransform&
                          lensFile);
     std::optional<Float> rear = lens.FocusedRearThickness(focusDistance, paraxialHeight);
     if (!rear)
-        throw SceneError(params.Has("focusdistance") ? params.Loc("focusdistance") : loc,
+        throw SceneError(params.Loc("focusdistance", loc),
                          "\"focusdistance\" " + std::to_string(focusDistance) +
                              " is too short for this lens to focus",
                          "focusdistance");

@@ -13,18 +13,6 @@
 
 namespace kiln {
 
-namespace {
-
-ColorMatrix MulM(const ColorMatrix& a, const ColorMatrix& b) {
-    ColorMatrix r{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            for (int k = 0; k < 3; ++k) r[i][j] += a[i][k] * b[k][j];
-    return r;
-}
-
-}  // namespace
-
 // RGBFilm Creation
 RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& params,
                          Float exposureTime, const Filter& filter, const RGBColorSpace* colorSpace,
@@ -178,7 +166,7 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
 RGBFilm::RGBFilm(const Options& options, const PixelSensor& sensor, const Filter& filter,
                  const RGBColorSpace* cs, const Transform& outputFromRender)
     : opts(options), sensor(sensor), filter(filter), colorSpace(cs ? cs : &RGBColorSpace::sRGB()) {
-    outputRGBFromSensorRGB = MulM(colorSpace->RGBFromXYZ(), sensor.XYZFromSensorRGB);
+    outputRGBFromSensorRGB = Mul(colorSpace->RGBFromXYZ(), sensor.XYZFromSensorRGB);
     size_t n = size_t(std::max<int64_t>(0, opts.pixelBounds.Area()));
     pixels.resize(n);
     if (opts.writeAOVs) aovs = GBufferLayers(n, outputFromRender);

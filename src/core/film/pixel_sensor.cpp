@@ -18,14 +18,6 @@ namespace {
 
 ColorMatrix Identity3() { return ColorMatrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}; }
 
-ColorMatrix MulM(const ColorMatrix& a, const ColorMatrix& b) {
-    ColorMatrix r{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            for (int k = 0; k < 3; ++k) r[i][j] += a[i][k] * b[k][j];
-    return r;
-}
-
 }  // namespace
 
 // CIE 015:2018, section 4.1: the CIE daylight locus.
@@ -46,7 +38,7 @@ ColorMatrix WhiteBalance(Point2f srcW, Point2f dstW) {
                                   {-0.00852866f, 0.0400428f, 0.968487f}}};
     XYZ src = Mul(lmsFromXYZ, XYZ::FromxyY(srcW)), dst = Mul(lmsFromXYZ, XYZ::FromxyY(dstW));
     ColorMatrix d{{{dst.X / src.X, 0, 0}, {0, dst.Y / src.Y, 0}, {0, 0, dst.Z / src.Z}}};
-    return MulM(xyzFromLMS, MulM(d, lmsFromXYZ));
+    return Mul(xyzFromLMS, Mul(d, lmsFromXYZ));
 }
 
 // PixelSensor Method Definitions

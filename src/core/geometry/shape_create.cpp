@@ -37,16 +37,11 @@ double MeshBytes(double triangles, double vertices) {
 // The most triangles a displaced PLY mesh may refine into (as loopsubdiv's limit)
 constexpr size_t kMaxDisplacedTriangles = size_t(1) << 25;
 
-FileLoc LocOf(const ParameterDictionary& params, const std::string& name, const FileLoc& def) {
-    FileLoc l = params.Loc(name);
-    return l.line > 0 || !l.filename.empty() ? l : def;
-}
-
 void CheckIndices(const std::vector<int>& indices, size_t nVertices,
                   const ParameterDictionary& params, const FileLoc& loc) {
     for (int i : indices)
         if (i < 0 || size_t(i) >= nVertices)
-            throw SceneError(LocOf(params, "indices", loc),
+            throw SceneError(params.Loc("indices", loc),
                              "vertex index " + std::to_string(i) + " out of range [0, " +
                                  std::to_string(nVertices) + ")",
                              "indices");
@@ -73,7 +68,7 @@ template <typename T>
 void CheckPerVertex(const std::vector<T>& v, size_t nP, const char* name,
                     const ParameterDictionary& params, const FileLoc& loc) {
     if (!v.empty() && v.size() != nP)
-        throw SceneError(LocOf(params, name, loc),
+        throw SceneError(params.Loc(name, loc),
                          std::string("number of \"") + name + "\" values (" +
                              std::to_string(v.size()) + ") must match the number of \"P\" (" +
                              std::to_string(nP) + ")",
@@ -95,7 +90,7 @@ void CheckTemperatures(const std::vector<Float>& t, const FileLoc& at, const std
 void CheckTriangleIndices(const std::vector<int>& indices, size_t nVertices,
                           const ParameterDictionary& params, const FileLoc& loc) {
     if (indices.size() % 3 != 0)
-        throw SceneError(LocOf(params, "indices", loc),
+        throw SceneError(params.Loc("indices", loc),
                          "number of vertex indices (" + std::to_string(indices.size()) +
                              ") is not a multiple of 3",
                          "indices");
@@ -129,9 +124,9 @@ std::vector<Shape> CreateTriangleMesh(const Transform* renderFromObject, bool re
     CheckPerVertex(N, P.size(), "N", params, loc);
     CheckPerVertex(S, P.size(), "S", params, loc);
     CheckPerVertex(temperature, P.size(), "temperature", params, loc);
-    CheckTemperatures(temperature, LocOf(params, "temperature", loc), "trianglemesh");
+    CheckTemperatures(temperature, params.Loc("temperature", loc), "trianglemesh");
     if (!faceIndices.empty() && faceIndices.size() != indices.size() / 3)
-        throw SceneError(LocOf(params, "faceIndices", loc),
+        throw SceneError(params.Loc("faceIndices", loc),
                          "number of \"faceIndices\" must match the number of triangles",
                          "faceIndices");
     std::map<std::string, std::vector<Float>> attributes;
@@ -162,7 +157,7 @@ std::vector<Shape> CreateLoopSubdiv(const Transform* renderFromObject, bool reve
     // Each level makes four triangles of one
     constexpr double kMaxTriangles = double(1 << 25);
     if (levels < 0 || double(indices.size() / 3) * std::pow(4.0, levels) > kMaxTriangles)
-        throw SceneError(LocOf(params, "levels", loc),
+        throw SceneError(params.Loc("levels", loc),
                          "loopsubdiv \"levels\" must be >= 0 and make at most 2^25 triangles (" +
                              std::to_string(indices.size() / 3) + " triangles to begin with)",
                          std::to_string(levels));
@@ -170,7 +165,7 @@ std::vector<Shape> CreateLoopSubdiv(const Transform* renderFromObject, bool reve
     Charge(arena, MeshBytes(triangles, triangles / 2),
            "loopsubdiv of " + std::to_string(int64_t(triangles)) + " triangles at level " +
                std::to_string(levels),
-           LocOf(params, "levels", loc), "levels");
+           params.Loc("levels", loc), "levels");
     SubdividedMesh m = LoopSubdivide(indices, P, levels);
     auto* mesh = arena.New<TriangleMesh>(
         *renderFromObject, reverseOrientation, std::move(m.indices), std::move(m.p), std::move(m.n),
@@ -199,7 +194,7 @@ std::vector<Shape> CreateBilinearMesh(const Transform* renderFromObject, bool re
         indices = {0, 1, 2, 3};
     }
     if (indices.size() % 4 != 0)
-        throw SceneError(LocOf(params, "indices", loc),
+        throw SceneError(params.Loc("indices", loc),
                          "number of vertex indices (" + std::to_string(indices.size()) +
                              ") is not a multiple of 4",
                          "indices");
@@ -207,7 +202,7 @@ std::vector<Shape> CreateBilinearMesh(const Transform* renderFromObject, bool re
     CheckPerVertex(uv, P.size(), "uv", params, loc);
     CheckPerVertex(N, P.size(), "N", params, loc);
     if (!faceIndices.empty() && faceIndices.size() != indices.size() / 4)
-        throw SceneError(LocOf(params, "faceIndices", loc),
+        throw SceneError(params.Loc("faceIndices", loc),
                          "number of \"faceIndices\" must match the number of patches",
                          "faceIndices");
     Charge(arena,
@@ -232,7 +227,7 @@ std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverse
         throw SceneError(loc, "\"filename\" must be provided for a plymesh", "plymesh");
     if (!displacement &&
         (!params.GetTexture("displacement").empty() || params.Has("displacement"))) {
-        diag.Warn(LocOf(params, "displacement", loc),
+        diag.Warn(params.Loc("displacement", loc),
                   "plymesh displacement without its texture; rendering without it");
         params.GetOneFloat("edgelength", 1);
     }
@@ -253,10 +248,10 @@ std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverse
         double room = std::min(double(DefaultMaxInputBytes()), arena.Budget().Remaining());
         ply = TriQuadMesh::ReadPLY(filename, charge, uint64_t(std::max(room, 0.0)));
     } catch (const MemoryLimitError& e) {
-        throw SceneError(LocOf(params, "filename", loc), e.what(), filename);
+        throw SceneError(params.Loc("filename", loc), e.what(), filename);
     } catch (const SceneError& e) {
         // Report at the directive, naming the PLY file and the problem.
-        throw SceneError(LocOf(params, "filename", loc), e.Loc().ToString() + ": " + e.Message(),
+        throw SceneError(params.Loc("filename", loc), e.Loc().ToString() + ": " + e.Message(),
                          filename);
     }
     double readTriangles = double(ply.triIndices.size() / 3 + ply.quadIndices.size() / 2);
@@ -264,9 +259,9 @@ std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverse
         Charge(arena, MeshBytes(readTriangles - chargedTriangles, 0),
                "PLY mesh \"" + filename + "\" (" + std::to_string(int64_t(readTriangles)) +
                    " triangles)",
-               LocOf(params, "filename", loc), filename);
+               params.Loc("filename", loc), filename);
     if (auto t = ply.vertexAttributes.find("temperature"); t != ply.vertexAttributes.end())
-        CheckTemperatures(t->second, LocOf(params, "filename", loc), filename);
+        CheckTemperatures(t->second, params.Loc("filename", loc), filename);
     if (displacement) {
         // As many triangles as the memory left holds, and at most kMaxDisplacedTriangles
         // (the original ones are charged already)
@@ -276,7 +271,7 @@ std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverse
         try {
             DisplaceMesh(ply, *displacement, *renderFromObject, fit);
         } catch (const std::length_error&) {
-            throw SceneError(LocOf(params, "edgelength", loc),
+            throw SceneError(params.Loc("edgelength", loc),
                              "displacing \"" + filename + "\" at this edge length would make " +
                                  "more than " + std::to_string(fit) + " triangles" +
                                  (fit < kMaxDisplacedTriangles
@@ -285,11 +280,11 @@ std::vector<Shape> CreatePLYMesh(const Transform* renderFromObject, bool reverse
                                       : ""),
                              "edgelength");
         } catch (const std::invalid_argument& e) {
-            throw SceneError(LocOf(params, "displacement", loc),
+            throw SceneError(params.Loc("displacement", loc),
                              "plymesh \"" + filename + "\": " + e.what(), "displacement");
         }
         Charge(arena, MeshBytes(double(ply.triIndices.size() / 3) - before, 0),
-               "displaced PLY mesh \"" + filename + "\"", LocOf(params, "edgelength", loc),
+               "displaced PLY mesh \"" + filename + "\"", params.Loc("edgelength", loc),
                "edgelength");
     }
     std::vector<Shape> shapes;
@@ -330,7 +325,7 @@ std::vector<Shape> CreateShapes(const std::string& name, const Transform* render
         Float zMax = params.GetOneFloat("zmax", radius);
         Float phiMax = params.GetOneFloat("phimax", 360);
         if (radius < 0)
-            throw SceneError(LocOf(params, "radius", loc), "sphere radius must not be negative",
+            throw SceneError(params.Loc("radius", loc), "sphere radius must not be negative",
                              "radius");
         if (radius == 0) {  // pbrt-v4 accepts it and renders nothing
             diag.Warn(loc, "sphere of radius 0 has no surface; skipped");

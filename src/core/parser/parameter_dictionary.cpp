@@ -308,6 +308,11 @@ FileLoc ParameterDictionary::Loc(const std::string& name) const {
     return p ? p->loc : FileLoc();
 }
 
+FileLoc ParameterDictionary::Loc(const std::string& name, const FileLoc& absent) const {
+    const ParsedParameter* p = Find(name, {});
+    return p && (p->loc.line > 0 || !p->loc.filename.empty()) ? p->loc : absent;
+}
+
 const RGBColorSpace* ParameterDictionary::ColorSpace() const {
     return colorSpace ? colorSpace : &RGBColorSpace::sRGB();
 }

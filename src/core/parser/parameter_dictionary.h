@@ -79,8 +79,10 @@ class ParameterDictionary {
     bool Has(const std::string& name) const;
     // Canonical type of the parameter that lookups would find first, "" if absent.
     std::string TypeOf(const std::string& name) const;
-    // Where the parameter is; a default FileLoc if absent.
+    // Where the parameter is: a default FileLoc if it is not given; `absent` if it is not given
+    // or has no location (parameters made by the Python API).
     FileLoc Loc(const std::string& name) const;
+    FileLoc Loc(const std::string& name, const FileLoc& absent) const;
     const RGBColorSpace* ColorSpace() const;
     // In the order given (params, then attributes).
     const ParsedParameterVector& Parameters() const { return params; }

@@ -87,13 +87,13 @@ namespace kiln {{
 namespace {{
 
 {''.join(body)}
-const NamedSpectrumTable kTables[] = {{
+const NamedSpectrumTable kCameraTables[] = {{
 {chr(10).join(entries)}
 }};
 
 }}  // namespace
 
-std::span<const NamedSpectrumTable> CameraNamedSpectrumTables() {{ return kTables; }}
+std::span<const NamedSpectrumTable> CameraNamedSpectrumTables() {{ return kCameraTables; }}
 
 }}  // namespace kiln
 """)
