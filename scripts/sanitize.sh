@@ -28,6 +28,7 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
         -DKILN_SANITIZE=ON -DKILN_FUZZ=ON -DKILN_BENCH=OFF "${from[@]}" >/dev/null
 fi
 cmake --build "$build" -j "$jobs"
+echo "kiln: sanitizer build: ${SECONDS} s" >&2
 
 export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
@@ -72,8 +73,10 @@ if [ "$seconds" -gt 0 ]; then
     for pid in "${pids[@]}"; do wait "$pid" || failed=1; done
     [ "$failed" = 0 ] || exit 1
 fi
+echo "kiln: sanitizer build and fuzzing: ${SECONDS} s" >&2
 
 cd "$build"
 # Every test but the Monte Carlo checks labelled `statistical` and the installation test
 # labelled `packaging` (CMakeLists.txt), which the release stage runs
 ctest --output-on-failure -j "$jobs" --timeout 1800 -LE "statistical|packaging"
+echo "kiln: sanitizer stage: ${SECONDS} s" >&2
