@@ -2,6 +2,7 @@
 // pbrt-v4's parameter names, defaults and photometric normalisation (see light.h).
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "core/parser/suggestions.h"
 #include "lights/light.h"
 #include "spectral/color.h"
+#include "spectral/planck.h"
 
 namespace kiln {
 
@@ -178,6 +180,28 @@ Light CreateInfinite(const ParameterDictionary& params, const Transform& renderF
                          "infinite light",
                          "infinite");
 
+    // kiln: a sky at a temperature (kelvin), uniform blackbody radiance in absolute units:
+    // B(lambda, T) times "scale", in W m^-2 sr^-1 nm^-1 as thermal emission
+    if (params.Has("temperature")) {
+        Float T = params.GetOneFloat("temperature", 0);
+        FileLoc at = params.Loc("temperature", loc);
+        if (!(T >= 0) || !(T <= kMaxRenderTemperature))
+            throw SceneError(at,
+                             "an infinite light's \"temperature\" must be kelvin from 0 to 1e27",
+                             FormatKelvin(T));
+        if (L || !filename.empty() || portal || E_v > 0)
+            throw SceneError(at,
+                             "an infinite light at a \"temperature\" takes no \"L\", \"filename\", "
+                             "\"portal\" or \"illuminance\"",
+                             "temperature");
+        double peak = T > 0 ? planck_radiance(planck_peak_wavelength_nm(T), T) : 0;
+        double skyScale = double(scale) * peak;
+        if (!(skyScale < double(std::numeric_limits<Float>::max())))
+            throw SceneError(at, "an infinite light this hot overflows single precision",
+                             FormatKelvin(T));
+        return arena.New<UniformInfiniteLight>(renderFromLight, Spectrum(BlackbodySpectrum(T)),
+                                               Float(skyScale));
+    }
     if (filename.empty() && !portal) {
         // Uniform: the given spectrum or the colour space's illuminant, luminance 1 * scale;
         // a uniform radiance L_v gives illuminance pi L_v on any surface

@@ -2,6 +2,7 @@
 
 #include "base/system_memory.h"
 #include "spectral/color.h"
+#include "spectral/planck.h"
 
 namespace kiln {
 
@@ -164,6 +165,21 @@ void SceneBuilder::Option(const std::string& declaration, const std::string& val
         } catch (const std::exception&) {
             throw SceneError(loc, "Option \"seed\" expects an integer", value);
         }
+    } else if (name == "ambienttemperature") {
+        double T = 0;
+        try {
+            size_t used = 0;
+            T = std::stod(v, &used);
+            if (used != v.size()) throw std::invalid_argument(v);
+        } catch (const std::exception&) {
+            throw SceneError(loc, "Option \"ambienttemperature\" expects a number (kelvin)", value);
+        }
+        if (!(T >= 0) || !(T <= kMaxRenderTemperature))
+            throw SceneError(loc, "Option \"ambienttemperature\" must be kelvin from 0 to 1e27",
+                             value);
+        // 0 K: nothing emits, as without the option
+        scene.ambientTemperature = T > 0 ? std::optional<Float>(Float(T)) : std::nullopt;
+        scene.ambientTemperatureLoc = loc;
     } else {
         diag.Warn(loc, "Option \"" + name + "\" is not supported by kiln; ignored");
     }

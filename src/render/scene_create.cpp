@@ -275,7 +275,7 @@ SceneShapes CreateShapes(ShapeSceneEntity& s, const NamedTextures& textures,
                       "curves cannot be area lights (as in pbrt-v4); the AreaLightSource "
                       "is ignored");
         result.heat = emitters.Heat(s, own, materials.HeatOf(s), materials.Of(s), {}, false);
-        if (result.heat.emission)
+        if (result.heat.emission && !result.heat.ambient)
             diag.Warn(s.loc, "hot curves glow where rays hit them but are not sampled as lights");
         return result;
     }
@@ -612,7 +612,8 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
     // the render job
     SceneShader loadShader(&*scene.camera, 1, options.genericFootprints);
     ThermalEmitters emitters(loadShader, *scene.emissivityTables, scene.arena, diag,
-                             options.emission, scene.integrator.emitterPowerSampling);
+                             options.emission, scene.integrator.emitterPowerSampling,
+                             desc.ambientTemperature);
     std::vector<SceneShapes> shapes;
     for (ShapeSceneEntity& s : desc.shapes)
         shapes.push_back(CreateShapes(s, textures, materials, media, emitters, scene.arena, diag));

@@ -105,6 +105,10 @@ struct SceneDescription {
     // Option directives kiln understands (others are reported).
     std::optional<int> seedOption;
     bool disablePixelJitter = false;
+    // Option "float ambienttemperature" (kelvin): the temperature of all matter that has none
+    // of its own (scene_emitters.h, scene_media.h); where it was given.
+    std::optional<Float> ambientTemperature;
+    FileLoc ambientTemperatureLoc;
 };
 
 }  // namespace kiln

@@ -14,6 +14,20 @@
 
 namespace kiln {
 
+ThermalEmitters::ThermalEmitters(const SceneShader& shader, EmissivityTables& tables,
+                                 ObjectArena& arena, Diagnostics& diag,
+                                 std::optional<EmissionModel> overrideModel, bool powerSampling,
+                                 std::optional<Float> ambientTemperature)
+    : shader(shader),
+      tables(tables),
+      arena(arena),
+      diag(diag),
+      overrideModel(overrideModel),
+      powerSampling(powerSampling) {
+    if (ambientTemperature)
+        ambient = FloatTexture(arena.New<FloatConstantTexture>(*ambientTemperature));
+}
+
 ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalProperties& own,
                                 const ThermalProperties& fromMaterial, const Material* material,
                                 std::span<const Shape> shapes, bool hasAreaLight) {
@@ -26,34 +40,44 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
         if (const Triangle* tri = shapes.front().GetIf<Triangle>();
             tri && tri->GetMesh()->HasAttribute("temperature"))
             temperature = AsFloatTexture(arena.New<VertexAttributeField>("temperature", 0.f));
+    // The scene's ambient temperature, lowest in precedence; a shape that cannot glow stays
+    // cold at it without a warning
+    if (!temperature && ambient) {
+        temperature = ambient;
+        heat.ambient = true;
+    }
     if (!temperature) return heat;
     EmissionModel model =
         overrideModel ? *overrideModel
                       : own.model.value_or(fromMaterial.model.value_or(EmissionModel::Kirchhoff));
     if (model == EmissionModel::None) return heat;
     if (hasAreaLight) {
-        diag.Warn(entity.loc,
-                  "shape has both an AreaLightSource and a temperature; the area "
-                  "light is used");
+        if (!heat.ambient)
+            diag.Warn(entity.loc,
+                      "shape has both an AreaLightSource and a temperature; the area "
+                      "light is used");
         return heat;
     }
     if (!material || material->IsInterface()) {
-        diag.Warn(entity.loc,
-                  "a shape with the interface material has no surface to glow; its "
-                  "temperature is ignored");
+        if (!heat.ambient)
+            diag.Warn(entity.loc,
+                      "a shape with the interface material has no surface to glow; its "
+                      "temperature is ignored");
         return heat;
     }
     if (model == EmissionModel::Kirchhoff && material->Is<HairMaterial>()) {
-        diag.Warn(entity.loc,
-                  "hot hair does not glow: kiln has no emissivity for the hair model yet (use "
-                  "\"string emission\" \"diffuse\" for a blackbody fibre)");
+        if (!heat.ambient)
+            diag.Warn(entity.loc,
+                      "hot hair does not glow: kiln has no emissivity for the hair model yet (use "
+                      "\"string emission\" \"diffuse\" for a blackbody fibre)");
         return heat;
     }
     if (model == EmissionModel::Kirchhoff && material->InteriorEta()) {
         // A dielectric surface absorbs nothing: the body glows from its interior medium
-        diag.Warn(entity.loc,
-                  "a hot dielectric surface absorbs nothing and so emits nothing; the body "
-                  "glows from a hot interior medium (MediumInterface, medium \"temperature\")");
+        if (!heat.ambient)
+            diag.Warn(entity.loc,
+                      "a hot dielectric surface absorbs nothing and so emits nothing; the body "
+                      "glows from a hot interior medium (MediumInterface, medium \"temperature\")");
         return heat;
     }
 #if KILN_THERMAL_EMISSION
@@ -63,7 +87,8 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
         model == EmissionModel::Kirchhoff ? AlbedoOf(heat.material, entity.loc) : nullptr;
     heat.emission = arena.New<ThermalEmission>(*temperature, model, albedo);
 #else
-    diag.Warn(entity.loc, "kiln was built without thermal emission; the shape does not glow");
+    if (!heat.ambient)
+        diag.Warn(entity.loc, "kiln was built without thermal emission; the shape does not glow");
 #endif
     return heat;
 }

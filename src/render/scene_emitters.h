@@ -6,6 +6,9 @@
 // property; a mix material without one takes its first hot component's) or a per-vertex
 // "temperature" of its mesh give it a temperature (thermal/thermal_properties.h). The shape's
 // own temperature and model win over its material's; `kiln --emission` overrides every model.
+// With Option "ambienttemperature", every other shape is hot at that temperature (the
+// material's emission model); shapes that cannot glow (area lights, interfaces, dielectric
+// surfaces, hair) then stay cold without the warnings a temperature of their own gives.
 #pragma once
 
 #include <map>
@@ -31,20 +34,16 @@ class ThermalAreaLight;
 struct ShapeHeat {
     const ThermalEmission* emission = nullptr;  // nullptr: cold
     const Material* material = nullptr;         // the material to render it with
+    bool ambient = false;                       // hot at the scene's ambient temperature
 };
 
 class ThermalEmitters {
   public:
     // powerSampling: sample points on shapes whose emission varies over them by power.
+    // ambient: the temperature of shapes without one (K; Option "ambienttemperature").
     ThermalEmitters(const SceneShader& shader, EmissivityTables& tables, ObjectArena& arena,
                     Diagnostics& diag, std::optional<EmissionModel> overrideModel,
-                    bool powerSampling = true)
-        : shader(shader),
-          tables(tables),
-          arena(arena),
-          diag(diag),
-          overrideModel(overrideModel),
-          powerSampling(powerSampling) {}
+                    bool powerSampling = true, std::optional<Float> ambient = std::nullopt);
 
     // The heat of one shape directive: own = its thermal parameters, fromMaterial = its
     // material's (scene creation resolves a mix's), material = its material, shapes = what it
@@ -73,6 +72,7 @@ class ThermalEmitters {
     Diagnostics& diag;
     std::optional<EmissionModel> overrideModel;
     bool powerSampling;
+    std::optional<FloatTexture> ambient;
     std::map<const Material*, const MaterialAlbedo*> albedos;
     const Material* black = nullptr;
     std::vector<ThermalAreaLight*> varyingLights;

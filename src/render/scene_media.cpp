@@ -12,6 +12,16 @@ MediumIndices CreateMedia(SceneDescription& desc, const NamedTextures& textures,
         if (type.empty())
             throw SceneError(
                 e.loc, "MakeNamedMedium \"" + name + "\" needs a \"string type\" parameter", name);
+        if (desc.ambientTemperature && !e.parameters.Has("temperature") &&
+            !e.parameters.Has("Le") &&
+            !(type == "uniformgrid" && e.parameters.GetFloatArray("density").size() == 1)) {
+            ParsedParameter ambient;
+            ambient.type = "float";
+            ambient.name = "temperature";
+            ambient.loc = desc.ambientTemperatureLoc;
+            ambient.floats = {*desc.ambientTemperature};
+            e.parameters.AddDefault(std::move(ambient));
+        }
         TextureParameterDictionary params(&e.parameters, &textures);
         indices[name] = int(media.size());
         media.push_back(

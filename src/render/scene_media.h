@@ -26,7 +26,10 @@ using MediumIndices = std::map<std::string, int>;
 // Creates desc.media into media (SceneError for a missing "string type" or bad parameters).
 // A medium inside shapes with a dielectric material (materialOf) gets that material's
 // refractive index; media bounded by dielectrics of different indices keep the first and a
-// warning says so.
+// warning says so. With desc.ambientTemperature, a medium that gives no emission of its own
+// (neither "temperature" nor "Le", nor a temperature grid in its file) is at that temperature
+// ("float temperature" as a default below its parameters and attributes); a uniformgrid of one
+// voxel is left out (one "temperature" value there is pbrt-v4's grid, not kelvin).
 MediumIndices CreateMedia(SceneDescription& desc, const NamedTextures& textures,
                           const std::function<const Material*(const ShapeSceneEntity&)>& materialOf,
                           std::optional<EmissionModel> modelOverride, std::vector<Medium>& media,

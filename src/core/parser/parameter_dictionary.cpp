@@ -63,6 +63,11 @@ ParameterDictionary::ParameterDictionary(ParsedParameterVector p,
     }
 }
 
+void ParameterDictionary::AddDefault(ParsedParameter p) {
+    p.mayBeUnused = true;
+    params.insert(params.begin() + std::ptrdiff_t(nOwn), std::move(p));
+}
+
 const ParsedParameter* ParameterDictionary::Find(const std::string& name,
                                                  std::string_view type) const {
     // Own parameters last to first, then attributes last to first (pbrt-v4's order).

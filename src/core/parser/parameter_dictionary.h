@@ -92,6 +92,10 @@ class ParameterDictionary {
     void Set(ParsedParameter p);
     // Removes every parameter of that name (a command-line override replacing another).
     void Erase(const std::string& name);
+    // Adds p with the lowest precedence of all: found only where neither the parameters nor
+    // the attributes give its name, and never reported unused (a scene-wide default, e.g.
+    // Option "ambienttemperature" for media).
+    void AddDefault(ParsedParameter p);
 
     // For every parameter never looked up and not mayBeUnused (unless shadowed by a looked-up
     // one of the same type and name): a warning "unused parameter 'float foo'" when kiln or
