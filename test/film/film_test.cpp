@@ -31,7 +31,9 @@ TEST(RGBFilm, Defaults) {
     Bounds2f sb = film->SampleBounds();  // box radius 0.5: exactly the pixels
     EXPECT_FLOAT_EQ(sb.pMin.x, 0);
     EXPECT_FLOAT_EQ(sb.pMax.y, 720);
-    f.Make({}, "spectral");
+    f.Make({}, "spectral");  // pbrt-v4's SpectralFilm: no warning
+    EXPECT_EQ(f.diag.WarningCount(), 0);
+    f.Make({}, "photographic");  // not a pbrt-v4 film: a warning, rendered as rgb
     EXPECT_EQ(f.diag.WarningCount(), 1);
 }
 

@@ -20,9 +20,26 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
                          const Request& request) {
     if (!colorSpace) colorSpace = &RGBColorSpace::sRGB();
     Options o;
-    if (type != "rgb" && type != "gbuffer")
+    if (type != "rgb" && type != "gbuffer" && type != "spectral")
         diag.Warn(loc, "film \"" + type + "\" is not supported; using \"rgb\"");
     o.filename = params.GetOneString("filename", "pbrt.exr");
+    if (type == "spectral") {
+        o.spectralBuckets = params.GetOneInt("nbuckets", 16);
+        o.lambdaMin = params.GetOneFloat("lambdamin", Lambda_min);
+        o.lambdaMax = params.GetOneFloat("lambdamax", Lambda_max);
+        if (o.spectralBuckets < 1 || o.spectralBuckets > 4096)
+            throw SceneError(params.Loc("nbuckets", loc),
+                             "the spectral film's \"nbuckets\" must be 1 to 4096",
+                             std::to_string(o.spectralBuckets));
+        if (!(o.lambdaMin >= Lambda_min && o.lambdaMax <= Lambda_max && o.lambdaMin < o.lambdaMax))
+            throw SceneError(params.Loc("lambdamin", params.Loc("lambdamax", loc)),
+                             "the spectral film's wavelengths must satisfy 360 <= \"lambdamin\" "
+                             "< \"lambdamax\" <= 830 (nm)",
+                             "lambdamin");
+        if (FileExtension(o.filename) != "exr")
+            throw SceneError(params.Loc("filename", loc),
+                             "EXR is the only output format of the spectral film", o.filename);
+    }
     o.fullResolution =
         Point2i(params.GetOneInt("xresolution", 1280), params.GetOneInt("yresolution", 720));
     FileLoc resolutionLoc = params.Has("xresolution")   ? params.Loc("xresolution")
@@ -106,7 +123,8 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
     // The pixels rendered must fit in memory (checked before anything is allocated)
     const bool aovs = params.GetOneBool("writeaovs", type == "gbuffer");
     const bool stokes = request.stokes.value_or(params.GetOneBool("stokes", false));
-    const double bytes = double(bounds.Area()) * RGBFilm::BytesPerPixel(aovs, stokes);
+    const double bytes =
+        double(bounds.Area()) * RGBFilm::BytesPerPixel(aovs, stokes, o.spectralBuckets);
     const std::string what = "a film of " + std::to_string(bounds.pMax.x - bounds.pMin.x) + " x " +
                              std::to_string(bounds.pMax.y - bounds.pMin.y) + " pixels";
     if (bounds.Area() > std::numeric_limits<int32_t>::max())
@@ -171,6 +189,8 @@ RGBFilm::RGBFilm(const Options& options, const PixelSensor& sensor, const Filter
     pixels.resize(n);
     if (opts.writeAOVs) aovs = GBufferLayers(n, outputFromRender);
     if (opts.stokes) stokesPixels.resize(n);
+    if (opts.spectralBuckets > 0)
+        buckets = SpectralBuckets(n, opts.spectralBuckets, opts.lambdaMin, opts.lambdaMax);
 }
 
 Bounds2f RGBFilm::SampleBounds() const {
@@ -222,6 +242,12 @@ void RGBFilm::AddSample(Point2i pPixel, const SampledSpectrum& L, const Stokes* 
         for (int k = 0; k < 3; ++k)
             for (int c = 0; c < 3; ++c) sp.rgbSum[k][c] += double(weight) * stokes[k][c];
     }
+    if (!buckets.Empty()) {
+        // Spectral radiance clamped to maxComponentValue on its own (pbrt-v4)
+        Float lm = L.MaxComponentValue();
+        buckets.Add(idx, lm > opts.maxComponentValue ? L * (opts.maxComponentValue / lm) : L,
+                    lambda, weight);
+    }
 
     if (!aovs.Empty() && visibleSurface && visibleSurface->set) {
         // Albedo as the colour of the reflectance under the colour space's illuminant (an
@@ -234,6 +260,7 @@ void RGBFilm::AddSample(Point2i pPixel, const SampledSpectrum& L, const Stokes* 
 
 void RGBFilm::EnableSplats() {
     if (splats.empty()) splats = std::vector<std::atomic<double>>(3 * pixels.size());
+    if (!buckets.Empty()) buckets.EnableSplats();
 }
 
 void RGBFilm::AddSplat(Point2f pFilm, const SampledSpectrum& L, const SampledWavelengths& lambda) {
@@ -243,6 +270,8 @@ void RGBFilm::AddSplat(Point2f pFilm, const SampledSpectrum& L, const SampledWav
     if (!std::isfinite(rgb.r) || !std::isfinite(rgb.g) || !std::isfinite(rgb.b)) return reject();
     Float m = std::max({rgb.r, rgb.g, rgb.b});
     if (m > opts.maxComponentValue) rgb = rgb * (opts.maxComponentValue / m);
+    Float lm = L.MaxComponentValue();
+    SampledSpectrum Lb = lm > opts.maxComponentValue ? L * (opts.maxComponentValue / lm) : L;
     // Pixels whose centres lie within the filter's radius of pFilm, inside the pixel bounds
     Vector2f r = filter.Radius();
     Point2f pd(pFilm.x + 0.5f, pFilm.y + 0.5f);
@@ -263,6 +292,7 @@ void RGBFilm::AddSplat(Point2f pFilm, const SampledSpectrum& L, const SampledWav
                     !a.compare_exchange_weak(v, v + double(wt) * rgb[c], std::memory_order_relaxed))
                     ;
             }
+            if (!buckets.Empty()) buckets.AddSplat(PixelIndex({x, y}), Lb, lambda, wt);
         }
 }
 
@@ -308,6 +338,12 @@ Image RGBFilm::GetImage(ImageMetadata* metadata) const {
     if (!stokesPixels.empty())
         names.insert(names.end(), {"S0.R", "S0.G", "S0.B", "S1.R", "S1.G", "S1.B", "S2.R", "S2.G",
                                    "S2.B", "S3.R", "S3.G", "S3.B"});
+    const int bucketChannel = int(names.size());
+    if (!buckets.Empty()) {
+        std::vector<std::string> b = buckets.ChannelNames();
+        names.insert(names.end(), b.begin(), b.end());
+    }
+    const double splatFactor = splatScale / double(filter.Integral());
     Image image(PixelFormat::Float, res, names);
     for (int y = 0; y < res.y; ++y)
         for (int x = 0; x < res.x; ++x) {
@@ -320,8 +356,11 @@ Image RGBFilm::GetImage(ImageMetadata* metadata) const {
                     for (int c = 0; c < 3; ++c)
                         image.SetChannel({x, y}, stokesChannel + 3 * k + c, s[c]);
                 }
-            if (aovs.Empty()) continue;
             size_t i = PixelIndex(p);
+            for (int k = 0; k < buckets.NBuckets(); ++k)
+                image.SetChannel({x, y}, bucketChannel + k,
+                                 buckets.Value(i, k, pixels[i].weightSum, splatFactor));
+            if (aovs.Empty()) continue;
             aovs.WritePixel(image, {x, y}, 3, i, pixels[i].weightSum);
         }
     if (metadata) {
@@ -385,90 +424,12 @@ void RGBFilm::WriteImage(const std::string& filename, ImageMetadata metadata,
     }
 }
 
-// Checkpoint state
-namespace {
-constexpr char kStateMagic[8] = {'k', 'f', 'i', 'l', 'm', 0, 0, 3};
-
-template <typename T>
-void AppendRaw(std::string& out, const T* data, size_t count) {
-    if (count > 0) out.append(reinterpret_cast<const char*>(data), count * sizeof(T));
-}
-}  // namespace
-
-std::string RGBFilm::SaveState() const {
-    std::string out(kStateMagic, sizeof(kStateMagic));
-    const int64_t header[8] = {opts.pixelBounds.pMin.x,      opts.pixelBounds.pMin.y,
-                               opts.pixelBounds.pMax.x,      opts.pixelBounds.pMax.y,
-                               int64_t(pixels.size()),       int64_t(aovs.Pixels().size()),
-                               int64_t(stokesPixels.size()), int64_t(splats.size())};
-    AppendRaw(out, header, 8);
-    AppendRaw(out, pixels.data(), pixels.size());
-    AppendRaw(out, aovs.Pixels().data(), aovs.Pixels().size());
-    AppendRaw(out, stokesPixels.data(), stokesPixels.size());
-    std::vector<double> splatValues(splats.size());
-    for (size_t i = 0; i < splats.size(); ++i) splatValues[i] = splats[i].load();
-    AppendRaw(out, splatValues.data(), splatValues.size());
-    const int64_t counters[2] = {nonFiniteCount.load(), firstNonFinite.load()};
-    AppendRaw(out, counters, 2);
-    return out;
-}
-
-bool RGBFilm::LoadState(std::string_view state) {
-    const int64_t expect[8] = {opts.pixelBounds.pMin.x,      opts.pixelBounds.pMin.y,
-                               opts.pixelBounds.pMax.x,      opts.pixelBounds.pMax.y,
-                               int64_t(pixels.size()),       int64_t(aovs.Pixels().size()),
-                               int64_t(stokesPixels.size()), int64_t(splats.size())};
-    size_t size = sizeof(kStateMagic) + sizeof(expect) + pixels.size() * sizeof(Pixel) +
-                  aovs.Pixels().size() * sizeof(GBufferLayers::Pixel) +
-                  stokesPixels.size() * sizeof(StokesPixel) + splats.size() * sizeof(double) +
-                  2 * sizeof(int64_t);
-    if (state.size() != size || std::memcmp(state.data(), kStateMagic, sizeof(kStateMagic)) != 0 ||
-        std::memcmp(state.data() + sizeof(kStateMagic), expect, sizeof(expect)) != 0)
-        return false;
-    const char* p = state.data() + sizeof(kStateMagic) + sizeof(expect);
-    // The layers are sums of doubles, each finite as kiln adds only finite values (the film
-    // rejects the others): a state with anything else is damaged and is not resumed
-    static_assert(sizeof(Pixel) % sizeof(double) == 0 &&
-                  sizeof(GBufferLayers::Pixel) % sizeof(double) == 0 &&
-                  sizeof(StokesPixel) % sizeof(double) == 0);
-    size_t sums =
-        (pixels.size() * sizeof(Pixel) + aovs.Pixels().size() * sizeof(GBufferLayers::Pixel) +
-         stokesPixels.size() * sizeof(StokesPixel)) /
-            sizeof(double) +
-        splats.size();
-    for (size_t i = 0; i < sums; ++i) {
-        double v;
-        std::memcpy(&v, p + i * sizeof(double), sizeof(double));
-        if (!std::isfinite(v)) return false;
-    }
-    int64_t stored[2];
-    std::memcpy(stored, p + sums * sizeof(double), sizeof(stored));
-    if (stored[0] < 0 || stored[1] < -1 || stored[1] >= int64_t(pixels.size())) return false;
-    auto take = [&](void* to, size_t bytes) {
-        if (bytes == 0) return;  // an empty layer's data() may be null
-        std::memcpy(to, p, bytes);
-        p += bytes;
-    };
-    take(pixels.data(), pixels.size() * sizeof(Pixel));
-    take(aovs.Pixels().data(), aovs.Pixels().size() * sizeof(GBufferLayers::Pixel));
-    take(stokesPixels.data(), stokesPixels.size() * sizeof(StokesPixel));
-    for (std::atomic<double>& s : splats) {
-        double v;
-        take(&v, sizeof(v));
-        s.store(v);
-    }
-    int64_t counters[2];
-    take(counters, sizeof(counters));
-    nonFiniteCount = counters[0];
-    firstNonFinite = counters[1];
-    return true;
-}
-
 void RGBFilm::Clear() {
     std::fill(pixels.begin(), pixels.end(), Pixel());
     std::fill(aovs.Pixels().begin(), aovs.Pixels().end(), GBufferLayers::Pixel());
     std::fill(stokesPixels.begin(), stokesPixels.end(), StokesPixel());
     for (std::atomic<double>& s : splats) s.store(0);
+    buckets.Clear();
     nonFiniteCount = 0;
     firstNonFinite = -1;
 }

@@ -21,6 +21,7 @@
 #include "base/vecmath.h"
 #include "core/film/filter.h"
 #include "core/film/gbuffer_layers.h"
+#include "core/film/spectral_buckets.h"
 #include "core/film/visible_surface.h"
 #include "core/image/display.h"
 #include "core/image/image.h"
@@ -90,7 +91,11 @@ class RGBFilm {
     // with reference axis the image's horizontal, S2 > 0 for light polarised along the
     // diagonal from lower left to upper right; S0 is the RGB image; a scene with it renders
     // polarised light).
-    // type: "rgb" | "gbuffer"; others warn and use "rgb". exposureTime: camera shutter
+    // type "spectral" (pbrt-v4's SpectralFilm): "integer nbuckets" (16), "float lambdamin"
+    // (360), "float lambdamax" (830) within 360-830 nm; the EXR gains the buckets' mean
+    // spectral radiance (SpectralBuckets; not scaled by the sensor or "exposure"); the scene's
+    // "filename" must be an EXR, as in pbrt-v4.
+    // type: "rgb" | "gbuffer" | "spectral"; others warn and use "rgb". exposureTime: camera shutter
     // interval, s. colorSpace: output colour space (nullptr: sRGB). Throws SceneError.
     // request: what the render asks besides the scene's parameters (RenderOptions): pixel
     // bounds that replace the scene's crop window and pixel bounds, a crop window that
@@ -119,6 +124,8 @@ class RGBFilm {
         bool writeAOVs = false;
         GBufferLayers::Space aovSpace = GBufferLayers::Space::Camera;
         bool stokes = false;
+        int spectralBuckets = 0;  // 0: no spectral layer
+        Float lambdaMin = Lambda_min, lambdaMax = Lambda_max;
     };
     // outputFromRender: render space to the AOV layers' space (opts.aovSpace).
     RGBFilm(const Options& options, const PixelSensor& sensor, const Filter& filter,
@@ -131,9 +138,9 @@ class RGBFilm {
     // float. Half floats end at kMaxHalf.
     static constexpr Float kMaxExposureEV = 64;
     static constexpr float kMaxHalf = 65504;
-    static size_t BytesPerPixel(bool aovs, bool stokes) {
+    static size_t BytesPerPixel(bool aovs, bool stokes, int spectralBuckets = 0) {
         return sizeof(Pixel) + (aovs ? sizeof(GBufferLayers::Pixel) : 0) +
-               (stokes ? sizeof(StokesPixel) : 0);
+               (stokes ? sizeof(StokesPixel) : 0) + size_t(spectralBuckets) * sizeof(double);
     }
 
     Point2i FullResolution() const { return opts.fullResolution; }
@@ -197,8 +204,8 @@ class RGBFilm {
     std::optional<Point2i> FirstNonFinitePixel() const;
 
     // Linear image of the pixel bounds: channels R, G, B (+ GBufferLayers::ChannelNames() with
-    // AOVs, + S0.R ... S3.B with "stokes"), PixelFormat::Float. Fills *metadata (if not null) with
-    // pixel bounds, full resolution and colour space.
+    // AOVs, + S0.R ... S3.B with "stokes", + the spectral buckets' channels), PixelFormat::Float.
+    // Fills *metadata (if not null) with pixel bounds, full resolution and colour space.
     Image GetImage(ImageMetadata* metadata) const;
     // By extension: .exr (linear; half when savefp16, with the AOV layers), .pfm/.hdr (linear
     // float), any other OIIO format through ToDisplayImage with the "view" parameter (or
@@ -243,6 +250,7 @@ class RGBFilm {
     std::vector<Pixel> pixels;
     GBufferLayers aovs;                     // empty unless writeAOVs
     std::vector<StokesPixel> stokesPixels;  // empty unless stokes
+    SpectralBuckets buckets;                // empty unless spectral
     // Splatted sensor RGB, 3 per pixel (empty unless EnableSplats), and its output scale
     std::vector<std::atomic<double>> splats;
     double splatScale = 1;
