@@ -194,6 +194,10 @@ Light CreateInfinite(const ParameterDictionary& params, const Transform& renderF
                              "an infinite light at a \"temperature\" takes no \"L\", \"filename\", "
                              "\"portal\" or \"illuminance\"",
                              "temperature");
+        if (!(scale >= 0))
+            throw SceneError(params.Loc("scale", at),
+                             "an infinite light at a \"temperature\" needs \"scale\" >= 0",
+                             std::to_string(scale));
         double peak = T > 0 ? planck_radiance(planck_peak_wavelength_nm(T), T) : 0;
         double skyScale = double(scale) * peak;
         if (!(skyScale < double(std::numeric_limits<Float>::max())))

@@ -102,7 +102,7 @@ TEST(AmbientTemperature, ASkyAtATemperatureIsBlackbodyRadiance) {
     }
     for (std::string bad :
          {"\"float temperature\" -1", "\"float temperature\" 300 \"rgb L\" [1 1 1]",
-          "\"float temperature\" 1e20"}) {
+          "\"float temperature\" 1e20", "\"float temperature\" 300 \"float scale\" -1"}) {
         SCOPED_TRACE(bad);
         Diagnostics diag(nullptr);
         EXPECT_THROW(
