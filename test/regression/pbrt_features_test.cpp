@@ -30,6 +30,8 @@ struct Feature {
     int warnings;              // expected (e.g. objects under singular transforms)
     int referenceSpp = 16384;  // see pbrt_features/README.md
 };
+// What ctest prints for a parameter (instead of its bytes)
+inline void PrintTo(const Feature& c, std::ostream* os) { *os << c.scene; }
 
 class PbrtFeatures : public ::testing::TestWithParam<Feature> {};
 

@@ -24,6 +24,8 @@ struct Case {
     const char* name;
     const char* material;
 };
+// What ctest prints for a parameter (instead of its bytes)
+inline void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
 std::string Cavity(const Case& c, bool meshes, double T, int spp) {
     std::ostringstream s;

@@ -21,6 +21,8 @@ struct SubsurfaceCase {
     int spp;  // for a standard error below 0.125 % (the albedos' paths are long)
     std::vector<double> temperatures;
 };
+// What ctest prints for a parameter (instead of its bytes)
+inline void PrintTo(const SubsurfaceCase& c, std::ostream* os) { *os << c.name; }
 
 std::string Cavity(const SubsurfaceCase& c, double T, int spp) {
     std::ostringstream s;

@@ -24,6 +24,8 @@ struct VolumeCase {
     const char* air;     // the medium filling the cavity ("" for none)
     int spp;             // enough for a standard error below 0.125 %
 };
+// What ctest prints for a parameter (instead of its bytes)
+inline void PrintTo(const VolumeCase& c, std::ostream* os) { *os << c.name; }
 
 std::string Cavity(const VolumeCase& c, bool meshes, double T, int spp) {
     std::ostringstream s;
