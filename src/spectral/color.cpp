@@ -14,8 +14,11 @@ namespace {
 
 using Matrix3d = std::array<std::array<double, 3>, 3>;
 
-Matrix3d Multiply(const Matrix3d& a, const Matrix3d& b) {
-    Matrix3d r{};
+// The product a b of 3x3 matrices (double for the fits below, Float for ColorMatrix)
+template <typename T>
+std::array<std::array<T, 3>, 3> Multiply(const std::array<std::array<T, 3>, 3>& a,
+                                         const std::array<std::array<T, 3>, 3>& b) {
+    std::array<std::array<T, 3>, 3> r{};
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
             for (int k = 0; k < 3; ++k) r[i][j] += a[i][k] * b[k][j];
@@ -52,13 +55,7 @@ RGB Mul(const ColorMatrix& m, const RGB& v) {
             m[2][0] * v.r + m[2][1] * v.g + m[2][2] * v.b};
 }
 
-ColorMatrix Mul(const ColorMatrix& a, const ColorMatrix& b) {
-    ColorMatrix r{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            for (int k = 0; k < 3; ++k) r[i][j] += a[i][k] * b[k][j];
-    return r;
-}
+ColorMatrix Mul(const ColorMatrix& a, const ColorMatrix& b) { return Multiply(a, b); }
 
 XYZ Mul(const ColorMatrix& m, const XYZ& v) {
     return {m[0][0] * v.X + m[0][1] * v.Y + m[0][2] * v.Z,
