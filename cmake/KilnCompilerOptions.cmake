@@ -28,18 +28,23 @@ if(KILN_WERROR)
 endif()
 add_library(kiln_options INTERFACE)
 target_link_libraries(kiln_options INTERFACE kiln_warnings)
+# The instrumentation goes into kiln's own code (its libraries, plug-ins and binaries), not into
+# the test executables, whose property KILN_TEST_DRIVER is set (kiln_add_tests): the tests drive
+# instrumented code and link the sanitizer runtimes, so what kiln's code reads or writes is
+# checked, including memory the tests allocated. A test batch compiled about 60 % longer with
+# the instrumentation (clang 14, -O3: 20.6 s against 12.9 s).
+set(kiln_instrumented "$<NOT:$<BOOL:$<TARGET_PROPERTY:KILN_TEST_DRIVER>>>")
 if(KILN_SANITIZE)
     # Any report fails the run (no recovery)
-    target_compile_options(kiln_options INTERFACE -fsanitize=address,undefined
-        -fno-sanitize-recover=all -fno-omit-frame-pointer
-        $<$<CXX_COMPILER_ID:Clang>:-fsanitize-ignorelist=${PROJECT_SOURCE_DIR}/cmake/sanitizer-ignorelist.txt>)
+    target_compile_options(kiln_options INTERFACE "$<${kiln_instrumented}:-fsanitize=address,undefined;-fno-sanitize-recover=all;-fno-omit-frame-pointer;$<$<CXX_COMPILER_ID:Clang>:-fsanitize-ignorelist=${PROJECT_SOURCE_DIR}/cmake/sanitizer-ignorelist.txt>>")
     target_link_options(kiln_options INTERFACE -fsanitize=address,undefined)
 endif()
 if(KILN_FUZZ)
     if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
         message(FATAL_ERROR "KILN_FUZZ needs clang (libFuzzer): configure with CXX=clang++")
     endif()
-    target_compile_options(kiln_options INTERFACE -fsanitize=fuzzer-no-link)
+    # Coverage for libFuzzer's guidance, in the code the fuzzers reach
+    target_compile_options(kiln_options INTERFACE "$<${kiln_instrumented}:-fsanitize=fuzzer-no-link>")
 endif()
 
 # Thermal emission (ThermalAreaLight) can be compiled out, only to measure that scenes without

@@ -28,6 +28,9 @@ function(kiln_add_tests name dir)
     endif()
     add_executable(${name} ${srcs})
     target_link_libraries(${name} PRIVATE ${arg_UNPARSED_ARGUMENTS} GTest::gtest GTest::gtest_main)
+    # Compiled without the sanitizers' instrumentation, linked to their runtimes
+    # (KilnCompilerOptions.cmake)
+    set_target_properties(${name} PROPERTIES KILN_TEST_DRIVER ON)
     # gtest.h takes about a second to parse, in each of some 140 test files and in both CI builds
     # (release and sanitizer): parsed once per test executable instead
     target_precompile_headers(${name} PRIVATE <gtest/gtest.h>)

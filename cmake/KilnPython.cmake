@@ -39,6 +39,9 @@ function(kiln_add_python_module)
         return()
     endif()
     file(GLOB srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/python/*.cpp)
+    # Without pybind11's link-time optimisation: it would optimise the bindings alone (kiln's
+    # libraries are not compiled for it), and its serial link took 9 s of the build
+    set(CMAKE_INTERPROCEDURAL_OPTIMIZATION OFF)
     pybind11_add_module(kiln_python MODULE ${srcs})
     target_include_directories(kiln_python PRIVATE ${PROJECT_SOURCE_DIR}/src)
     target_link_libraries(kiln_python PRIVATE kiln_render)

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds kiln with clang, AddressSanitizer and UndefinedBehaviorSanitizer (any report fails) in
+# Builds kiln with clang, AddressSanitizer and UndefinedBehaviorSanitizer (any report fails; the
+# test executables are not instrumented themselves, cmake/KilnCompilerOptions.cmake) in
 # build-sanitize/, fuzzes each libFuzzer target of test/fuzz for SECONDS from its committed
 # seed corpus (test/fuzz/corpus/TARGET, plus the repository's scenes and meshes), one fuzzer per
 # core at a time, then runs the test suite in that build except the Monte Carlo checks labelled

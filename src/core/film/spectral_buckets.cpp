@@ -9,7 +9,6 @@ SpectralBuckets::SpectralBuckets(size_t nPixels, int nBuckets, Float lambdaMin, 
     : nBuckets(nBuckets),
       lambdaMin(lambdaMin),
       lambdaMax(lambdaMax),
-      nPixels(nPixels),
       sums(nPixels * size_t(nBuckets), 0.0) {}
 
 std::vector<std::string> SpectralBuckets::ChannelNames() const {

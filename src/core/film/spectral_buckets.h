@@ -59,7 +59,6 @@ class SpectralBuckets {
   private:
     int nBuckets = 0;
     Float lambdaMin = 0, lambdaMax = 0;
-    size_t nPixels = 0;
     std::vector<double> sums;
     std::vector<std::atomic<double>> splats;
 };
