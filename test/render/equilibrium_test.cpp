@@ -3,10 +3,10 @@
 // and geometry, because emission is 1 - albedo of the very BSDF that scatters. Each case puts
 // one large object of the tested material (a sphere, or a low-poly triangle mesh with smooth
 // per-vertex shading normals) in front of the camera inside a closed wall (a textured diffuse
-// sphere, or a mesh with shading normals too), at 1000 K and 5000 K; one case bump-maps the
-// object, so that its shading frame departs far from the geometric one. The image mean must be
-// B(T) within 4 standard errors of the pixel noise (plus 1e-3 for the tables), and the test
-// renders enough samples for that to be tighter than 0.5 %.
+// sphere, or a mesh with shading normals too), spheres at 1000 K and meshes at 5000 K; one case
+// bump-maps the object, so that its shading frame departs far from the geometric one. The image
+// mean must be B(T) within 4 standard errors of the pixel noise (plus 1e-3 for the tables), and the
+// test renders enough samples for that to be tighter than 0.5 %.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -57,13 +57,15 @@ std::string Cavity(const Case& c, bool meshes, double T, int spp) {
 
 class Equilibrium : public ::testing::TestWithParam<std::tuple<Case, bool>> {};
 
+// Each material at 1000 K (deep red, most of the glow beyond the visible) in one geometry and
+// 5000 K (visible) in the other: every material meets both temperatures and both geometries.
+// Temperature acts on Planck's spectrum and the sampling by power, geometry on hits and shading
+// frames, so the other two pairs (which doubled the cost) would test nothing new.
 TEST_P(Equilibrium, CavityRendersTheBlackbody) {
     auto [c, meshes] = GetParam();
-    for (double T : {1000.0, 5000.0}) {
-        SCOPED_TRACE(T);
-        testing::ExpectBlackbodyImage(testing::RenderText(Cavity(c, meshes, T, 256)), T,
-                                      std::string(c.name) + (meshes ? ", meshes" : ", spheres"));
-    }
+    const double T = meshes ? 5000 : 1000;
+    testing::ExpectBlackbodyImage(testing::RenderText(Cavity(c, meshes, T, 256)), T,
+                                  std::string(c.name) + (meshes ? ", meshes" : ", spheres"));
 }
 
 const Case kCases[] = {
