@@ -12,6 +12,7 @@
 
 #include "base/memory_budget.h"
 #include "base/rng.h"
+#include "core/film/thermal_sensor.h"
 
 namespace kiln {
 
@@ -203,6 +204,16 @@ Image MergeSamples(const std::vector<RenderPart>& parts, ImageMetadata* metadata
                     sum += double(*p.metadata.samplesPerPixel) * p.image.GetChannel({x, y}, c);
                 out.SetChannel({x, y}, c, float(sum / total));
             }
+    // A thermal film's temperature is that of the merged radiance, not the mean temperature
+    if (std::optional<ThermalSensor> sensor =
+            ThermalSensor::FromSettings(Meta(first, "kiln:thermal"))) {
+        int L = out.ChannelIndex("L"), T = out.ChannelIndex("T");
+        if (L >= 0 && T >= 0)
+            for (int y = 0; y < res.y; ++y)
+                for (int x = 0; x < res.x; ++x)
+                    out.SetChannel({x, y}, T,
+                                   float(sensor->ApparentTemperature(out.GetChannel({x, y}, L))));
+    }
     *metadata = first.metadata;
     metadata->samplesPerPixel = int(std::min<double>(total, std::numeric_limits<int>::max()));
     metadata->strings.erase("kiln:partial");

@@ -27,11 +27,11 @@ int Bucket(const Bounds3f& centroids, Point3f pc, int dim, int nBuckets) {
 
 }  // namespace
 
-BVHLightSampler::BVHLightSampler(std::span<const Light> lights)
+BVHLightSampler::BVHLightSampler(std::span<const Light> lights, const SpectralRange& range)
     : bitTrails(lights.size(), kNotInTree), infinite(lights.size(), false) {
     std::vector<std::pair<int, LightBounds>> bounded;
     for (size_t i = 0; i < lights.size(); ++i) {
-        std::optional<LightBounds> lb = lights[i].Bounds();
+        std::optional<LightBounds> lb = lights[i].Bounds(range);
         if (!lb) {
             infiniteLights.push_back(int(i));
             infinite[i] = true;

@@ -19,7 +19,8 @@ namespace kiln {
 class BVHLightSampler {
   public:
     // Lights of zero power (Light::Bounds().phi) are never chosen.
-    explicit BVHLightSampler(std::span<const Light> lights);
+    // range: the scene's wavelengths, over which each light's power is estimated (Light::Power)
+    explicit BVHLightSampler(std::span<const Light> lights, const SpectralRange& range = {});
 
     std::optional<SampledLight> Sample(const LightSampleContext& ctx, Float u) const;
     // Probability that Sample(ctx, .) chooses light `index` (0 for lights of zero power).

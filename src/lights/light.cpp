@@ -5,7 +5,7 @@
 
 namespace kiln {
 
-std::optional<LightBounds> Light::Bounds() const {
+std::optional<LightBounds> Light::Bounds(const SpectralRange& range) const {
     // The emitter's extent and normal cone; phi is filled in below
     std::optional<LightBounds> lb = Dispatch([&](auto l) -> std::optional<LightBounds> {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(l)>>;
@@ -20,7 +20,7 @@ std::optional<LightBounds> Light::Bounds() const {
             return std::nullopt;  // at infinity
         }
     });
-    if (lb) lb->phi = Power();
+    if (lb) lb->phi = Power(range);
     return lb;
 }
 
@@ -29,8 +29,8 @@ std::optional<Light::ThermalOutput> Light::Thermal() const {
 #if KILN_THERMAL_EMISSION
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(l)>>;
         if constexpr (std::is_same_v<T, ThermalAreaLight>) {
-            if (l->MeanTemperature() > 0 && l->VisiblePower() > 0)
-                return ThermalOutput{l->MeanTemperature(), l->VisiblePower()};
+            if (l->MeanTemperature() > 0 && l->BandPower() > 0)
+                return ThermalOutput{l->MeanTemperature(), l->BandPower()};
         }
 #endif
         (void)l;
@@ -38,8 +38,8 @@ std::optional<Light::ThermalOutput> Light::Thermal() const {
     });
 }
 
-Float Light::Power() const {
-    SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.5f);
+Float Light::Power(const SpectralRange& range) const {
+    SampledWavelengths lambda = range.Spread(0.5f);
     Float p = SafeDiv(Phi(lambda), lambda.PDF()).Average();
     return std::isfinite(p) && p > 0 ? p : 0;
 }

@@ -31,6 +31,7 @@
 #include "lights/thermal_area_light.h"
 #include "lights/uniform_infinite_light.h"
 #include "materials/bxdfs/bsdf.h"
+#include "spectral/spectral_range.h"
 
 // ThermalAreaLight is in the closed set unless thermal emission is compiled out (CMake option
 // KILN_THERMAL_EMISSION, only for overhead measurements).
@@ -175,19 +176,20 @@ class Light
                 return {};
         });
     }
-    // The light's weight for light selection: its power over 360-830 nm, W (pbrt-v4: Phi /
-    // pdf averaged over the four wavelengths SampleVisible(0.5) gives); 0 if not finite.
-    Float Power() const;
+    // The light's weight for light selection: its power over the scene's wavelengths, W (pbrt-v4:
+    // Phi / pdf averaged over the four wavelengths SampleVisible(0.5) gives; beyond the visible,
+    // SpectralRange::Spread(0.5)); 0 if not finite.
+    Float Power(const SpectralRange& range = {}) const;
     // What a hot surface radiates, for the film's choice of wavelengths
     // (spectral/wavelength_distribution.h): nullopt for lights other than thermal ones.
     struct ThermalOutput {
-        Float temperature;   // K, the power-weighted mean over the surface
-        Float visiblePower;  // W over 360-830 nm
+        Float temperature;  // K, the power-weighted mean over the surface
+        Float bandPower;    // W over the scene's wavelengths (SpectralRange)
     };
     std::optional<ThermalOutput> Thermal() const;
     // Spatial and directional bounds of the emission (lights at infinity: none), with phi =
     // Power().
-    std::optional<LightBounds> Bounds() const;
+    std::optional<LightBounds> Bounds(const SpectralRange& range = {}) const;
     // Tells distant and infinite lights the scene's extent (call before Phi and SampleLi).
     void Preprocess(const Bounds3f& sceneBounds) const {
         Dispatch([&](auto l) { l->Preprocess(sceneBounds); });

@@ -17,10 +17,10 @@ Float UniformLightSampler::PMF(int index) const {
 }
 
 // PowerLightSampler
-PowerLightSampler::PowerLightSampler(std::span<const Light> lights) {
+PowerLightSampler::PowerLightSampler(std::span<const Light> lights, const SpectralRange& range) {
     std::vector<Float> power;
     power.reserve(lights.size());
-    for (const Light& light : lights) power.push_back(light.Power());
+    for (const Light& light : lights) power.push_back(light.Power(range));
     *this = PowerLightSampler(std::move(power));
 }
 

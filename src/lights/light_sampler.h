@@ -31,13 +31,13 @@ class UniformLightSampler {
     int count;
 };
 
-// Probability proportional to emitted power over the visible wavelengths (Light::Power; pbrt-v4:
+// Probability proportional to emitted power over the scene's wavelengths (Light::Power; pbrt-v4:
 // Phi / pdf at the 4 wavelengths SampleVisible(0.5) gives); uniform if every light has zero
 // power. Sampling is O(1) through an alias table. Distant and infinite lights must have been
 // preprocessed before the sampler is built (their power depends on the scene's size).
 class PowerLightSampler {
   public:
-    explicit PowerLightSampler(std::span<const Light> lights);
+    explicit PowerLightSampler(std::span<const Light> lights, const SpectralRange& range = {});
     // Probability proportional to the given non-negative weights, one per light (e.g. area,
     // for comparisons); uniform if they are all zero.
     explicit PowerLightSampler(std::vector<Float> weights);

@@ -24,9 +24,9 @@ double MinConcentration(const Shape& shape) {
     return 1.25;
 }
 
-// Integral of B(lambda, T) over 360-830 nm, W m^-2 sr^-1 (as VisibleExitance integrates it)
-Float VisibleBlackbody(Float T) {
-    return Float(std::min(planck_band_radiance(Lambda_min, Lambda_max, T),
+// Integral of B(lambda, T) over the band, W m^-2 sr^-1 (as BandExitance integrates it)
+Float BandBlackbody(Float T, const SpectralRange& band) {
+    return Float(std::min(planck_band_radiance(band.min, band.max, T),
                           double(std::numeric_limits<Float>::max())));
 }
 
@@ -52,7 +52,7 @@ ThermalAreaLight::ThermalAreaLight(const Shape* shape, const Material* material,
     if (!(area > 0)) return;
     if (uniform) {
         // The caller's exitance holds everywhere: sample by solid angle
-        visiblePower = uniform->exitance * area;
+        bandPower = uniform->exitance * area;
         meanTemperature = uniform->temperature;
         return;
     }
@@ -61,7 +61,7 @@ ThermalAreaLight::ThermalAreaLight(const Shape* shape, const Material* material,
 
 void ThermalAreaLight::EstimatePower(const BSDFAt& bsdfAt) {
     distribution.reset();
-    visiblePower = meanTemperature = 0;
+    bandPower = meanTemperature = 0;
     if (!(area > 0)) return;
     // The exitance M (W m^-2) at the centres of an n x n grid over the parameterisation; the
     // power is the integral of M dA = integral over u of M / q (q the area density of u), and
@@ -85,7 +85,7 @@ void ThermalAreaLight::EstimatePower(const BSDFAt& bsdfAt) {
                 if (T > 0) {
                     SampledWavelengths lambda = SampledWavelengths::FromWavelength(550);
                     BSDF bsdf = bsdfAt(si, lambda);
-                    M = emission->VisibleExitance(si, bsdf);
+                    M = emission->BandExitance(si, bsdf);
                 }
                 Float w = M / ss->pdf;
                 g.cells[size_t(j) * n + i] = w;
@@ -107,13 +107,13 @@ void ThermalAreaLight::EstimatePower(const BSDFAt& bsdfAt) {
     if (tri && mayDistribute && g.Concentration() >= minConcentration) g = evaluate(kTriangleGrid);
     if (mayDistribute && g.power > 0 && g.Concentration() >= minConcentration)
         distribution.emplace(g.cells, g.n, g.n);
-    visiblePower = Float(g.power / (g.n * g.n));
+    bandPower = Float(g.power / (g.n * g.n));
     meanTemperature = g.power > 0 ? Float(g.weightedT / g.power) : 0;
 }
 
 SampledSpectrum ThermalAreaLight::Phi(const SampledWavelengths& lambda) const {
-    if (!(visiblePower > 0) || !(meanTemperature > 0)) return SampledSpectrum(0.f);
-    return visiblePower / VisibleBlackbody(meanTemperature) *
+    if (!(bandPower > 0) || !(meanTemperature > 0)) return SampledSpectrum(0.f);
+    return bandPower / BandBlackbody(meanTemperature, emission->Band()) *
            planck_radiance(lambda, meanTemperature);
 }
 

@@ -33,7 +33,7 @@ class ThermalAreaLight {
     static constexpr int kMaxDistributionTriangles = 256;
 
     // Emission the same over the whole shape (uniform temperature and material): exitance
-    // W m^-2 (ThermalEmission::VisibleExitance) and temperature K.
+    // W m^-2 (ThermalEmission::BandExitance) and temperature K.
     struct Uniform {
         Float exitance, temperature;
     };
@@ -115,12 +115,12 @@ class ThermalAreaLight {
     }
     // The densities of SampleLe leaving intr (a point of the shape, with its normal) towards w.
     LightLePDF PDF_Le(const Interaction& intr, Vector3f w) const;
-    // Emitted power over 360-830 nm, W (both sides), as estimated at creation (or by the last
-    // EstimatePower).
-    Float VisiblePower() const { return visiblePower; }
+    // Emitted power over the scene's wavelengths (ThermalEmission::Band), W (both sides), as
+    // estimated at creation (or by the last EstimatePower).
+    Float BandPower() const { return bandPower; }
     // Its power-weighted mean temperature, K, as estimated with the power.
     Float MeanTemperature() const { return meanTemperature; }
-    // Spectral power, W nm^-1, for light selection: VisiblePower() distributed over wavelength
+    // Spectral power, W nm^-1, for light selection: BandPower() distributed over wavelength
     // like a blackbody at the light's power-weighted mean temperature (an estimate: the
     // emissivity's spectral shape is not kept).
     SampledSpectrum Phi(const SampledWavelengths& lambda) const;
@@ -139,7 +139,7 @@ class ThermalAreaLight {
     const ThermalEmission* emission;
     Float area = 0;
     bool powerSampling = true;
-    Float visiblePower = 0, meanTemperature = 0;
+    Float bandPower = 0, meanTemperature = 0;
     std::optional<PiecewiseConstant2D> distribution;
 };
 

@@ -253,6 +253,9 @@ class Scene {
     // Per medium: whether it is emissive and uniform, its emission then integrated exactly along
     // ray segments (Medium::UniformSegmentEmission; empty: none, or "exactmediumemission" false)
     std::vector<char> exactEmissionMedia;
+    // The wavelengths the scene renders (the film's sensor: visible unless Film "thermal"),
+    // decided at load; every job's film must cover the same
+    SpectralRange spectralRange;
     // The wavelengths every job's film draws (render/scene_wavelengths.h)
     WavelengthDistribution wavelengths;
     PathIntegratorSettings integrator;

@@ -460,10 +460,12 @@ void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<Sce
 void CreateLightSampler(Scene& scene) {
     switch (scene.integrator.lightSelection) {
         case LightSelection::BVH:
-            scene.lightSampler = std::make_unique<LightSampler>(BVHLightSampler(scene.lights));
+            scene.lightSampler =
+                std::make_unique<LightSampler>(BVHLightSampler(scene.lights, scene.spectralRange));
             break;
         case LightSelection::Power:
-            scene.lightSampler = std::make_unique<LightSampler>(PowerLightSampler(scene.lights));
+            scene.lightSampler = std::make_unique<LightSampler>(
+                PowerLightSampler(scene.lights, scene.spectralRange));
             break;
         case LightSelection::Uniform:
             scene.lightSampler =
@@ -605,7 +607,8 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
         desc, textures, [&](const ShapeSceneEntity& s) { return materials.Of(s); },
         options.emission, scene.media, scene.arena, diag);
     scene.cameraMedium = MediumIndex(desc.camera.medium, media, desc.camera.loc);
-    scene.emissivityTables = std::make_unique<EmissivityTables>();
+    scene.spectralRange = scene.job->film->Range();
+    scene.emissivityTables = std::make_unique<EmissivityTables>(scene.spectralRange);
     scene.emissivityTables->polarized = NeedsPolarization(scene, materials);
     // The shader thermal lights estimate their power with: the job's but for the texture
     // footprint, taken at one sample per pixel, so that what is built at load does not depend on

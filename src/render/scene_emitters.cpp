@@ -85,7 +85,7 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
     if (model == EmissionModel::Diffuse) heat.material = Black();
     const MaterialAlbedo* albedo =
         model == EmissionModel::Kirchhoff ? AlbedoOf(heat.material, entity.loc) : nullptr;
-    heat.emission = arena.New<ThermalEmission>(*temperature, model, albedo);
+    heat.emission = arena.New<ThermalEmission>(*temperature, model, albedo, 1, tables.Range());
 #else
     if (!heat.ambient)
         diag.Warn(entity.loc, "kiln was built without thermal emission; the shape does not glow");
@@ -109,7 +109,7 @@ std::vector<int> ThermalEmitters::CreateLights(std::span<const Shape> shapes, co
             si.material = heat.material;
             SampledWavelengths lambda = SampledWavelengths::FromWavelength(550);
             BSDF bsdf = shader.GetBSDF(si, lambda);
-            uniform = ThermalAreaLight::Uniform{heat.emission->VisibleExitance(si, bsdf),
+            uniform = ThermalAreaLight::Uniform{heat.emission->BandExitance(si, bsdf),
                                                 heat.emission->Temperature(si)};
         }
     }

@@ -11,6 +11,8 @@ namespace kiln {
 
 WavelengthDistribution CreateWavelengthDistribution(const Scene& scene, Float* visibleShare) {
     *visibleShare = 1;
+    if (!scene.spectralRange.IsVisible())
+        return WavelengthDistribution::Band(scene.spectralRange.min, scene.spectralRange.max);
     if (!scene.integrator.emissionWavelengths) return {};
     // Temperatures in bins 1 % wide, with their power over 360-830 nm (W), so that a mesh of a
     // million hot triangles costs one pass over its lights
@@ -24,9 +26,9 @@ WavelengthDistribution CreateWavelengthDistribution(const Scene& scene, Float* v
     bool others = false;
     for (const Light& light : scene.lights) {
         if (std::optional<Light::ThermalOutput> t = light.Thermal()) {
-            if (!usable(t->temperature, t->visiblePower)) continue;
-            binPower[binOf(t->temperature)] += t->visiblePower;
-            lightPower += t->visiblePower;
+            if (!usable(t->temperature, t->bandPower)) continue;
+            binPower[binOf(t->temperature)] += t->bandPower;
+            lightPower += t->bandPower;
         } else {
             others = true;
         }

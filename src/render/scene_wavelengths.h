@@ -8,6 +8,7 @@ namespace kiln {
 
 class Scene;
 
+// Uniform over the scene's wavelengths when they are not the visible ones (Film "thermal").
 // The visible density when nothing in the scene glows thermally, or Integrator
 // "wavelengthsampling" "visible". Otherwise the mixture of WavelengthDistribution, its hot part
 // the sum of blackbody spectra of:

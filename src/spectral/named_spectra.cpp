@@ -22,8 +22,13 @@ const NamedSpectra& AllNamedSpectra() {
                             MeasuredNamedSpectrumTables()})
             for (const NamedSpectrumTable& t : tables) {
                 n.names.push_back(t.name);
-                n.spectra.emplace(
-                    t.name, PiecewiseLinearSpectrum::FromInterleaved(t.interleaved, t.normalize));
+                PiecewiseLinearSpectrum s =
+                    PiecewiseLinearSpectrum::FromInterleaved(t.interleaved, t.normalize);
+                // Optical constants hold their ends beyond the visible
+                std::string_view name = t.name;
+                if (name.starts_with("metal-") || name.starts_with("glass-"))
+                    s.HoldEndsBeyondVisible();
+                n.spectra.emplace(t.name, std::move(s));
             }
         return n;
     }();

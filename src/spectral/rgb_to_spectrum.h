@@ -11,11 +11,13 @@
 // then y and x (the other two, in cyclic order, divided by z).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string_view>
 
 #include "base/vecmath.h"
+#include "spectral/sampled_spectrum.h"
 
 namespace kiln {
 
@@ -28,9 +30,11 @@ class RGBSigmoidPolynomial {
     RGBSigmoidPolynomial(Float c0, Float c1, Float c2) : c0(c0), c1(c1), c2(c2) {}
 
     // The polynomial is evaluated in double: its terms nearly cancel (c0 lambda^2 is of order
-    // 100 for a value of order 1), which costs float about 1e-5 of absolute accuracy.
+    // 100 for a value of order 1), which costs float about 1e-5 of absolute accuracy. An RGB
+    // says nothing beyond the visible: there the spectrum holds its value at 360 or 830 nm
+    // (the fitted quadratic would run to 0 or 1 within a few hundred nm).
     Float operator()(Float lambda_nm) const {
-        const double l = lambda_nm;
+        const double l = std::clamp(lambda_nm, Lambda_min, Lambda_max);
         return Float(Sigmoid((double(c0) * l + double(c1)) * l + double(c2)));
     }
     // Largest value over 360-830 nm.

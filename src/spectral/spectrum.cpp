@@ -135,6 +135,8 @@ std::optional<PiecewiseLinearSpectrum> PiecewiseLinearSpectrum::Parse(const std:
 }
 
 Float PiecewiseLinearSpectrum::operator()(Float lambda) const {
+    if (holdEnds && !lambdas.empty() && (lambda < Lambda_min || lambda > Lambda_max))
+        lambda = std::clamp(lambda, lambdas.front(), lambdas.back());
     if (lambdas.empty() || !(lambda >= lambdas.front()) || lambda > lambdas.back()) return 0;
     if (lambdas.size() == 1) return values[0];
     size_t o;

@@ -90,11 +90,17 @@ class PiecewiseLinearSpectrum {
     SampledSpectrum Sample(const SampledWavelengths& lambda) const;
     Float MaxValue() const;
     void Scale(Float s);
+    // Outside the visible range (360-830 nm), values beyond the table's ends hold the end values
+    // instead of 0: for material properties (optical constants, reflectances), not emission
+    // (ParameterDictionary sets it for every spectrum but illuminants, and named spectra of
+    // metals and glasses have it).
+    void HoldEndsBeyondVisible() { holdEnds = true; }
     std::span<const Float> Lambdas() const { return lambdas; }
     std::span<const Float> Values() const { return values; }
 
   private:
     std::vector<Float> lambdas, values;
+    bool holdEnds = false;
     // First interval for each whole nanometre from floor(lambdas.front()): lookups start there
     // and step at most over the nodes inside that nanometre (empty for very wide ranges)
     std::vector<uint32_t> intervalAtNm;

@@ -45,7 +45,15 @@ WavelengthDistribution::WavelengthDistribution(std::span<const Float> emitted, F
     table = PiecewiseConstant1D(f, Lambda_min, Lambda_max);
 }
 
+WavelengthDistribution WavelengthDistribution::Band(Float lambdaMin, Float lambdaMax) {
+    WavelengthDistribution d;
+    d.bandMin = lambdaMin;
+    d.bandMax = lambdaMax;
+    return d;
+}
+
 SampledWavelengths WavelengthDistribution::Sample(Float u) const {
+    if (bandMax > bandMin) return SampledWavelengths::SampleUniform(u, bandMin, bandMax);
     if (IsVisible()) return SampledWavelengths::SampleVisible(u);
     std::array<Float, NSpectrumSamples> lambda, pdf;
     for (int i = 0; i < NSpectrumSamples; ++i) {
@@ -62,6 +70,8 @@ SampledWavelengths WavelengthDistribution::Sample(Float u) const {
 }
 
 Float WavelengthDistribution::PDF(Float lambda) const {
+    if (bandMax > bandMin)
+        return lambda >= bandMin && lambda <= bandMax ? 1 / (bandMax - bandMin) : 0;
     if (IsVisible()) return SampledWavelengths::VisibleWavelengthPDF(lambda);
     if (!(lambda >= Lambda_min && lambda < Lambda_max)) return 0;
     size_t i = std::min(size_t(lambda - Lambda_min), table.Size() - 1);

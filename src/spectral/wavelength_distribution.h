@@ -8,6 +8,9 @@
 // 1000-2000 K is sampled where its colour comes from and its small Z keeps samples too. The mixture
 // is tabulated over 1-nm bins from 360 to 830 nm (piecewise constant, sampled and evaluated
 // from the same table, so estimates stay unbiased whatever the spectrum).
+//
+// Beyond the visible (a film whose sensor covers another band: Film "thermal"), uniform over
+// that band, stratified as SampledWavelengths::SampleUniform.
 #pragma once
 
 #include <span>
@@ -26,10 +29,12 @@ class WavelengthDistribution {
     // emitted times each; emitted: non-negative values at the centres of kBins 1-nm bins from
     // Lambda_min. All zero: the visible density.
     WavelengthDistribution(std::span<const Float> emitted, Float visibleShare);
+    // Uniform over [lambdaMin, lambdaMax] (nm, lambdaMin < lambdaMax).
+    static WavelengthDistribution Band(Float lambdaMin, Float lambdaMax);
     static constexpr int kBins = int(Lambda_max - Lambda_min);
 
-    // Whether this is the visible density (no table).
-    bool IsVisible() const { return table.Size() == 0; }
+    // Whether this is the visible density (no table, no band).
+    bool IsVisible() const { return table.Size() == 0 && !(bandMax > bandMin); }
     // The wavelengths for a path from one uniform sample.
     SampledWavelengths Sample(Float u) const;
     // The density per nm at lambda.
@@ -37,6 +42,7 @@ class WavelengthDistribution {
 
   private:
     PiecewiseConstant1D table;
+    Float bandMin = 0, bandMax = 0;  // a band (Band) when bandMax > bandMin
 };
 
 }  // namespace kiln

@@ -57,11 +57,13 @@ std::vector<double> CosineNodes(const EmissivityTables& tables) {
 }  // namespace
 
 // SampledAlbedoTable
-SampledAlbedoTable::SampledAlbedoTable(const Material& material, const EmissivityTables&) {
+SampledAlbedoTable::SampledAlbedoTable(const Material& material, const EmissivityTables& tables) {
     constexpr int nCos = 16, nLambda = 8, nSamples = 4096;
     std::vector<float> c, l;
     for (int i = 0; i < nCos; ++i) c.push_back(EmissivityTables::CosineNode(i, nCos));
-    for (int i = 0; i < nLambda; ++i) l.push_back(360.f + (830.f - 360.f) * i / (nLambda - 1));
+    const SpectralRange& range = tables.Range();
+    for (int i = 0; i < nLambda; ++i)
+        l.push_back(range.min + (range.max - range.min) * i / (nLambda - 1));
     cosines = TableAxis(std::move(c));
     lambdas = TableAxis(std::move(l));
     albedo.assign(size_t(nCos) * nLambda, 0);
@@ -116,8 +118,15 @@ CoatedDiffuseEmissivity::CoatedDiffuseEmissivity(const CoatedDiffuseMaterial& m,
     alphas = AlphaAxis(m.URoughness(), m.VRoughness(), m.RemapRoughness());
     // A dispersive coat: eta at wavelength nodes
     bool dispersive = !m.Eta().Is<ConstantSpectrum>();
-    lambdas = dispersive ? TableAxis({360.f, 420.f, 480.f, 540.f, 600.f, 660.f, 720.f, 830.f})
-                         : TableAxis({550.f});
+    // (over the visible: 360, 420, ..., 720 and 830 nm; beyond it, as many nodes spread over
+    // the scene's range in the same proportions)
+    const SpectralRange& range = t.Range();
+    std::vector<float> nodes;
+    for (float l : {360.f, 420.f, 480.f, 540.f, 600.f, 660.f, 720.f, 830.f})
+        nodes.push_back(range.IsVisible()
+                            ? l
+                            : range.min + (range.max - range.min) * (l - 360.f) / (830.f - 360.f));
+    lambdas = dispersive ? TableAxis(nodes) : TableAxis({550.f});
     std::vector<double> mus = CosineNodes(t);
     const int nCos = int(mus.size()), nA = alphas.Size(), nL = lambdas.Size();
     nCoefficients = m.MaxDepth() / 2 + 2;

@@ -13,12 +13,15 @@ float EmissivityTables::CosineNode(int i, int n) {
     return float(x * x * (2 - x) * 0.5 + x * 0.5);  // spacing at 0 half that at 1
 }
 
-EmissivityTables::EmissivityTables() {
-    constexpr int nCos = 64, nLambda = 95, nAlpha = 48;
+EmissivityTables::EmissivityTables(SpectralRange range) : range(range) {
+    constexpr int nCos = 64, nLambda = 95, nFine = 471, nAlpha = 48;
     std::vector<float> c, l, fine, a;
     for (int i = 0; i < nCos; ++i) c.push_back(CosineNode(i, nCos));
-    for (int i = 0; i < nLambda; ++i) l.push_back(360.f + 5.f * i);
-    for (int i = 0; i <= 470; ++i) fine.push_back(360.f + float(i));
+    // Exact steps of 5 and 1 nm over the visible range
+    const double step = (double(range.max) - range.min) / (nLambda - 1);
+    const double fineStep = (double(range.max) - range.min) / (nFine - 1);
+    for (int i = 0; i < nLambda; ++i) l.push_back(float(range.min + step * i));
+    for (int i = 0; i < nFine; ++i) fine.push_back(float(range.min + fineStep * i));
     const double logMin = std::log(1e-3), logMax = std::log(4.0);
     for (int i = 0; i < nAlpha; ++i)
         a.push_back(float(logMin + (logMax - logMin) * i / (nAlpha - 1)));

@@ -7,12 +7,14 @@
 
 #include "base/table_axis.h"
 #include "materials/bxdfs/conductor_albedo.h"
+#include "spectral/spectral_range.h"
 
 namespace kiln {
 
 class EmissivityTables {
   public:
-    EmissivityTables();
+    // Tables over wavelength cover range (the scene's: SpectralRange).
+    explicit EmissivityTables(SpectralRange range = {});
     ~EmissivityTables();
     EmissivityTables(const EmissivityTables&) = delete;
     EmissivityTables& operator=(const EmissivityTables&) = delete;
@@ -20,11 +22,15 @@ class EmissivityTables {
     // cos theta_o in [0, 1]: 64 nodes, spaced twice as densely at grazing as at normal
     // incidence, where albedos change fastest.
     const TableAxis& Cosines() const { return cosines; }
-    // Wavelengths 360-830 nm in 5 nm steps.
+    // The wavelengths the tables cover.
+    const SpectralRange& Range() const { return range; }
+    // 95 wavelengths over the range: 360-830 nm in 5 nm steps in the visible.
     const TableAxis& Wavelengths() const { return wavelengths; }
-    // Wavelengths 360-830 nm in 1 nm steps, for conductors, whose Fresnel reflectance follows
-    // measured optical constants that change quickly with wavelength (gold's albedo changes
-    // by up to 1.5e-3 between 5 nm nodes, less than 1e-4 between 1 nm nodes).
+    // 471 wavelengths over the range: 360-830 nm in 1 nm steps in the visible, for conductors,
+    // whose Fresnel reflectance follows measured optical constants that change quickly with
+    // wavelength (gold's albedo changes by up to 1.5e-3 between 5 nm nodes, less than 1e-4
+    // between 1 nm nodes). Optical constants change more slowly in the infrared, where the
+    // same number of nodes is spread over the wider band.
     const TableAxis& FineWavelengths() const { return fineWavelengths; }
     // log(alpha) for Trowbridge-Reitz alpha from 1e-3 (smooth below) to 4 (clamped above).
     const TableAxis& LogAlphas() const { return logAlphas; }
@@ -49,6 +55,7 @@ class EmissivityTables {
     void FillConductorGrid(std::vector<float>& table,
                            ConductorAlbedoMoments::Weights (*compute)(double, double)) const;
 
+    SpectralRange range;
     TableAxis cosines, wavelengths, fineWavelengths, logAlphas;
     std::vector<float> conductorMoments, conductorPolarizationMoments;
 };

@@ -24,6 +24,7 @@
 #include "spectral/planck.h"
 #include "spectral/polarization.h"
 #include "spectral/sampled_spectrum.h"
+#include "spectral/spectral_range.h"
 #include "thermal/emission_model.h"
 
 namespace kiln {
@@ -82,15 +83,17 @@ SampledSpectrum HemisphericalAlbedo(const R& r, const SampledWavelengths& lambda
     return sum;
 }
 
-// Radiant exitance over 360-830 nm from both sides, W m^-2: 2 pi scale times the integral of
-// B(lambda, T) over the band (exact: planck_band_radiance) for additive and diffuse; for
-// kirchhoff times the hemispherical emissivity 1 - HemisphericalAlbedo averaged with weights B
-// at the midpoints of 8 equal intervals of the band (exact for an emissivity constant over
-// the band). For power estimates (light selection), not for radiance.
+// Radiant exitance over the band (the scene's wavelengths, by default 360-830 nm) from both
+// sides, W m^-2: 2 pi scale times the integral of B(lambda, T) over the band (exact:
+// planck_band_radiance) for additive and diffuse; for kirchhoff times the hemispherical
+// emissivity 1 - HemisphericalAlbedo averaged with weights B at the midpoints of 8 equal
+// intervals of the band (exact for an emissivity constant over the band). For power estimates
+// (light selection), not for radiance.
 template <SurfaceReflectance R>
-Float VisibleExitance(EmissionModel model, Float T, Float scale, const R& r) {
+Float BandExitance(EmissionModel model, Float T, Float scale, const R& r,
+                   const SpectralRange& band = {}) {
     if (model == EmissionModel::None || !(T > 0)) return 0;
-    constexpr Float lambdaMin = 360, lambdaMax = 830;
+    const Float lambdaMin = band.min, lambdaMax = band.max;
     double M = 2 * Pi * double(scale) * planck_band_radiance(lambdaMin, lambdaMax, T);
     if (model == EmissionModel::Kirchhoff) {
         // The midpoints (2k + 1) / 16 of the band, as two sets of four equally spaced ones

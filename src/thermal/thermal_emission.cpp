@@ -42,12 +42,12 @@ template SampledSpectrum ThermalEmission::L<SampledSpectrum>(const SurfaceIntera
 template Stokes ThermalEmission::L<Stokes>(const SurfaceInteraction&, const BSDF&, Vector3f,
                                            const SampledWavelengths&) const;
 
-Float ThermalEmission::VisibleExitance(const SurfaceInteraction& si, const BSDF& bsdf) const {
+Float ThermalEmission::BandExitance(const SurfaceInteraction& si, const BSDF& bsdf) const {
     if (model != EmissionModel::Kirchhoff)
-        return kiln::VisibleExitance(model, Temperature(si), scale, NoReflectance{});
+        return kiln::BandExitance(model, Temperature(si), scale, NoReflectance{}, band);
     if (!bsdf) return 0;
-    return kiln::VisibleExitance(model, Temperature(si), scale,
-                                 albedo->Reflectance(si.material, bsdf, &si));
+    return kiln::BandExitance(model, Temperature(si), scale,
+                              albedo->Reflectance(si.material, bsdf, &si), band);
 }
 
 }  // namespace kiln

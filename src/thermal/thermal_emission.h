@@ -9,6 +9,7 @@
 #include "base/interaction.h"
 #include "materials/bxdfs/bsdf.h"
 #include "spectral/polarization.h"
+#include "spectral/spectral_range.h"
 #include "textures/texture.h"
 #include "thermal/emission_model.h"
 
@@ -19,10 +20,10 @@ class MaterialAlbedo;
 class ThermalEmission {
   public:
     // temperature: kelvin; albedo: the material's (needed for kirchhoff, else may be null);
-    // scale: times B (1: absolute units).
+    // scale: times B (1: absolute units); band: the scene's wavelengths (BandExitance).
     ThermalEmission(FloatTexture temperature, EmissionModel model, const MaterialAlbedo* albedo,
-                    Float scale = 1)
-        : temperature(temperature), model(model), albedo(albedo), scale(scale) {}
+                    Float scale = 1, SpectralRange band = {})
+        : temperature(temperature), model(model), albedo(albedo), scale(scale), band(band) {}
 
     EmissionModel Model() const { return model; }
     // Whether the temperature texture uses the screen-space footprint.
@@ -37,15 +38,17 @@ class ThermalEmission {
     template <typename Radiance = SampledSpectrum>
     Radiance L(const SurfaceInteraction& si, const BSDF& bsdf, Vector3f w,
                const SampledWavelengths& lambda) const;
-    // Radiant exitance at si over 360-830 nm, both sides, W m^-2 (surface_emission.h's
-    // VisibleExitance: for the power estimates light selection uses).
-    Float VisibleExitance(const SurfaceInteraction& si, const BSDF& bsdf) const;
+    // Radiant exitance at si over the band, both sides, W m^-2 (surface_emission.h's
+    // BandExitance: for the power estimates light selection uses).
+    Float BandExitance(const SurfaceInteraction& si, const BSDF& bsdf) const;
+    const SpectralRange& Band() const { return band; }
 
   private:
     FloatTexture temperature;
     EmissionModel model;
     const MaterialAlbedo* albedo;
     Float scale;
+    SpectralRange band;
 };
 
 }  // namespace kiln

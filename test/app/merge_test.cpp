@@ -10,12 +10,14 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/command_line.h"
 #include "app/merge.h"
 #include "app_test_util.h"
+#include "core/film/thermal_sensor.h"
 
 namespace kiln {
 namespace {
@@ -193,6 +195,43 @@ TEST(Merge, SamplesAreWeightedBySamplesPerPixel) {
     // The same seed twice is the same samples
     EXPECT_EQ(Kiln({"merge", "--samples", a, a, "-o", dir / "aa.exr"}), 1);
     EXPECT_FALSE(fs::exists(dir / "aa.exr"));
+}
+
+// Thermal films: the merged L is the weighted mean, T the temperature the sensor reports for
+// it (from the parts' kiln:thermal metadata), not the mean of the parts' temperatures
+TEST(Merge, ThermalSamplesReportTheTemperatureOfTheMergedRadiance) {
+    Dir dir;
+    std::string scene = dir / "thermal.pbrt";
+    std::ofstream(scene) << "Film \"thermal\" \"string sensor\" \"mwir\" \"float emissivity\" 0.8 "
+                            "\"float reflectedtemperature\" 290 \"integer xresolution\" 12 "
+                            "\"integer yresolution\" 10\n"
+                            "Sampler \"independent\" \"integer pixelsamples\" 2\n"
+                            "LookAt 0 0 -4 0 0 0 0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
+                            "WorldBegin\nMaterial \"conductor\" \"float roughness\" 0.3 "
+                            "\"float temperature\" 800\nShape \"sphere\" \"float radius\" 1\n";
+    std::string a = dir / "a.exr", b = dir / "b.exr", out = dir / "ab.exr";
+    ASSERT_EQ(Kiln({scene, "--seed", "1", "-o", a}), 0);
+    ASSERT_EQ(Kiln({scene, "--seed", "2", "--spp", "6", "-o", b}), 0);
+    ASSERT_EQ(Kiln({"merge", "--samples", a, b, "-o", out}), 0);
+    ImageMetadata meta;
+    Image m = Image::Read(out, &meta);
+    std::optional<ThermalSensor> sensor = ThermalSensor::FromSettings(meta.strings["kiln:thermal"]);
+    ASSERT_TRUE(sensor);
+    EXPECT_EQ(sensor->Emissivity(), 0.8f);
+    Image ia = Image::Read(a), ib = Image::Read(b);
+    const int L = m.ChannelIndex("L"), T = m.ChannelIndex("T");
+    ASSERT_GE(L, 0);
+    ASSERT_GE(T, 0);
+    int hot = 0;
+    for (int y = 0; y < 10; ++y)
+        for (int x = 0; x < 12; ++x) {
+            float la = ia.GetChannel({x, y}, L), lb = ib.GetChannel({x, y}, L);
+            float merged = float((2.0 * la + 6.0 * lb) / 8);
+            ASSERT_FLOAT_EQ(m.GetChannel({x, y}, L), merged);
+            ASSERT_FLOAT_EQ(m.GetChannel({x, y}, T), float(sensor->ApparentTemperature(merged)));
+            hot += m.GetChannel({x, y}, T) > 0;
+        }
+    EXPECT_GT(hot, 10);
 }
 
 // Parts that no render of kiln's could have written are refused, with nothing written: a

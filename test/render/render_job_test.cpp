@@ -140,7 +140,7 @@ TEST(RenderJob, NewFramesRenderWhatFreshLoadsOfThoseFramesRender) {
     ASSERT_FALSE(scene->varyingThermalLights.empty());
     auto power = [&] {
         Float p = 0;
-        for (const ThermalAreaLight* l : scene->varyingThermalLights) p += l->VisiblePower();
+        for (const ThermalAreaLight* l : scene->varyingThermalLights) p += l->BandPower();
         return p;
     };
     Float power0 = power();

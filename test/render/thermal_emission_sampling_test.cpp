@@ -2,7 +2,7 @@
 // of the hot shape (by power where the temperature varies over it, else by area) with the
 // surface's own Kirchhoff emission, evaluated with the job's shader. Each sample's pdfPos must
 // be PDF_Le's, and the estimate E[L |cos| / (pdfPos pdfDir)] over wavelengths uniform in
-// 360-830 nm must give the emitted power the light estimated at load (VisiblePower, a 32 x 32
+// 360-830 nm must give the emitted power the light estimated at load (BandPower, a 32 x 32
 // midpoint rule over the shape of the exitance the thermal module integrates), for a sphere and
 // a bilinear patch with a temperature gradient and a uniformly hot sphere.
 #include <gtest/gtest.h>
@@ -64,7 +64,7 @@ TEST(ThermalEmissionSampling, PowerAndDensities) {
             sum2 += v * v;
         }
         double mean = sum / n, se = std::sqrt((sum2 / n - mean * mean) / n);
-        double power = t->VisiblePower();
+        double power = t->BandPower();
         std::printf("%-18s power %.5g W from SampleLe, %.5g W at load (standard error %.2g)\n",
                     c.name, mean, power, se);
         EXPECT_NEAR(mean, power, 5 * se + 0.01 * power);

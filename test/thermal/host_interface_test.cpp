@@ -122,9 +122,9 @@ TEST(ThermalHostInterface, SmoothMetalEmissionCompletesUnpolarisedEquilibrium) {
     }
 }
 
-// VisibleExitance: 2 pi integral over 360-830 nm of B (1 - hemispherical albedo), against a
+// BandExitance: 2 pi integral over 360-830 nm of B (1 - hemispherical albedo), against a
 // fine midpoint rule of the same integral (exact for a grey surface, at any temperature).
-TEST(ThermalHostInterface, VisibleExitanceIntegratesTheEmission) {
+TEST(ThermalHostInterface, BandExitanceIntegratesTheEmission) {
     LambertianReflectance r{0.25f};
     for (Float T : {500.f, 800.f, 1500.f, 3000.f, 20000.f}) {
         double sum = 0;
@@ -132,13 +132,13 @@ TEST(ThermalHostInterface, VisibleExitanceIntegratesTheEmission) {
         for (int i = 0; i < n; ++i)
             sum += planck_radiance(360 + (i + 0.5) * 470.0 / n, T) * 470.0 / n;
         double expected = 2 * Pi * 0.75 * sum;
-        Float M = VisibleExitance(EmissionModel::Kirchhoff, T, 1, r);
+        Float M = BandExitance(EmissionModel::Kirchhoff, T, 1, r);
         EXPECT_NEAR(M, expected, 1e-5 * expected) << T;
-        EXPECT_FLOAT_EQ(VisibleExitance(EmissionModel::Additive, T, 1, r), M / 0.75f);
-        EXPECT_EQ(VisibleExitance(EmissionModel::None, T, 1, r), 0);
+        EXPECT_FLOAT_EQ(BandExitance(EmissionModel::Additive, T, 1, r), M / 0.75f);
+        EXPECT_EQ(BandExitance(EmissionModel::None, T, 1, r), 0);
     }
-    EXPECT_EQ(VisibleExitance(EmissionModel::Kirchhoff, 0, 1, r), 0);
-    EXPECT_EQ(VisibleExitance(EmissionModel::Kirchhoff, std::nanf(""), 1, r), 0);
+    EXPECT_EQ(BandExitance(EmissionModel::Kirchhoff, 0, 1, r), 0);
+    EXPECT_EQ(BandExitance(EmissionModel::Kirchhoff, std::nanf(""), 1, r), 0);
 }
 
 TEST(ThermalHostInterface, VolumeEmissionPerModel) {

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "base/system_memory.h"
+#include "core/film/thermal_colormap.h"
 #include "core/parser/parameter_dictionary.h"
 
 namespace kiln {
@@ -20,9 +21,31 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
                          const Request& request) {
     if (!colorSpace) colorSpace = &RGBColorSpace::sRGB();
     Options o;
-    if (type != "rgb" && type != "gbuffer" && type != "spectral")
+    if (type != "rgb" && type != "gbuffer" && type != "spectral" && type != "thermal")
         diag.Warn(loc, "film \"" + type + "\" is not supported; using \"rgb\"");
     o.filename = params.GetOneString("filename", "pbrt.exr");
+    if (type == "thermal") {
+        o.thermal = ThermalSensor::Create(params, loc);
+        const std::string ext = FileExtension(o.filename);
+        if (ext == "pfm" || ext == "hdr")
+            throw SceneError(params.Loc("filename", loc),
+                             "the thermal film writes EXR (L and T) or a picture of T (PNG, "
+                             "JPEG, ...), not ." +
+                                 ext,
+                             o.filename);
+        for (const char* name : {"stokes", "writeaovs"})
+            if (params.GetOneBool(name, false))
+                throw SceneError(params.Loc(name),
+                                 "the thermal film does not record \"" + std::string(name) + "\"",
+                                 name);
+        if (request.stokes.value_or(false))
+            throw SceneError(loc, "the thermal film does not record Stokes layers", "thermal");
+        if (params.GetOneFloat("exposure", 0) != 0)
+            throw SceneError(params.Loc("exposure"),
+                             "the thermal film records radiance and temperature, without "
+                             "\"exposure\"",
+                             "exposure");
+    }
     if (type == "spectral") {
         o.spectralBuckets = params.GetOneInt("nbuckets", 16);
         o.lambdaMin = params.GetOneFloat("lambdamin", Lambda_min);
@@ -138,7 +161,9 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
         throw SceneError(resolutionLoc, e.what(), "xresolution");
     }
 
-    o.savefp16 = params.GetOneBool("savefp16", true);
+    // Half floats would round a temperature near 300 K to 0.25 K and near 3000 K to 2 K: a
+    // thermal film writes 32-bit floats unless told otherwise
+    o.savefp16 = params.GetOneBool("savefp16", !o.thermal);
     o.maxComponentValue = params.GetOneFloat("maxcomponentvalue", Infinity);
     o.diagonal = params.GetOneFloat("diagonal", 35) * 0.001f;
     if (!(o.diagonal > 0 && std::isfinite(o.diagonal)))
@@ -176,7 +201,10 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
         }
     }
     o.stokes = stokes;
-    PixelSensor sensor = PixelSensor::Create(params, colorSpace, exposureTime, loc, diag);
+    // A thermal film's "sensor" is its band (ThermalSensor); its pixel sensor is not used
+    PixelSensor sensor = o.thermal
+                             ? PixelSensor(colorSpace, 0, 1)
+                             : PixelSensor::Create(params, colorSpace, exposureTime, loc, diag);
     return arena.New<RGBFilm>(o, sensor, filter, colorSpace, outputFromRender);
 }
 
@@ -184,7 +212,8 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
 RGBFilm::RGBFilm(const Options& options, const PixelSensor& sensor, const Filter& filter,
                  const RGBColorSpace* cs, const Transform& outputFromRender)
     : opts(options), sensor(sensor), filter(filter), colorSpace(cs ? cs : &RGBColorSpace::sRGB()) {
-    outputRGBFromSensorRGB = Mul(colorSpace->RGBFromXYZ(), sensor.XYZFromSensorRGB);
+    outputRGBFromSensorRGB = opts.thermal ? ColorMatrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}
+                                          : Mul(colorSpace->RGBFromXYZ(), sensor.XYZFromSensorRGB);
     size_t n = size_t(std::max<int64_t>(0, opts.pixelBounds.Area()));
     pixels.resize(n);
     if (opts.writeAOVs) aovs = GBufferLayers(n, outputFromRender);
@@ -219,7 +248,7 @@ void RGBFilm::AddSample(Point2i pPixel, const SampledSpectrum& L, const Stokes* 
     };
     if (!(std::isfinite(weight) && L.IsFinite() && (!S || S->IsFinite()))) return reject();
     // Sensor response, clamped to maxComponentValue preserving ratios (pbrt-v4).
-    RGB rgb = sensor.ToSensorRGB(L, lambda);
+    RGB rgb = Response(L, lambda);
     auto finite = [](const RGB& c) {
         return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
     };
@@ -231,7 +260,7 @@ void RGBFilm::AddSample(Point2i pPixel, const SampledSpectrum& L, const Stokes* 
     bool withStokes = S && !stokesPixels.empty();
     if (withStokes)
         for (int k = 1; k < 4; ++k) {
-            stokes[k - 1] = sensor.ToSensorRGB((*S)[k], lambda) * scale;
+            stokes[k - 1] = Response((*S)[k], lambda) * scale;
             if (!finite(stokes[k - 1])) return reject();
         }
     Pixel& px = pixels[idx];
@@ -266,7 +295,7 @@ void RGBFilm::EnableSplats() {
 void RGBFilm::AddSplat(Point2f pFilm, const SampledSpectrum& L, const SampledWavelengths& lambda) {
     auto reject = [&] { nonFiniteCount.fetch_add(1, std::memory_order_relaxed); };
     if (!L.IsFinite() || !std::isfinite(pFilm.x) || !std::isfinite(pFilm.y)) return reject();
-    RGB rgb = sensor.ToSensorRGB(L, lambda);
+    RGB rgb = Response(L, lambda);
     if (!std::isfinite(rgb.r) || !std::isfinite(rgb.g) || !std::isfinite(rgb.b)) return reject();
     Float m = std::max({rgb.r, rgb.g, rgb.b});
     if (m > opts.maxComponentValue) rgb = rgb * (opts.maxComponentValue / m);
@@ -307,6 +336,7 @@ RGB RGBFilm::GetPixelRGB(Point2i p) const {
         double s = splatScale / double(filter.Integral());
         for (int c = 0; c < 3; ++c) rgb[c] += Float(s * splats[i + size_t(c)].load());
     }
+    if (opts.thermal) return rgb;  // in-band radiance, unscaled
     return Mul(outputRGBFromSensorRGB, rgb) * std::exp2(opts.exposureEV);
 }
 
@@ -330,6 +360,22 @@ std::optional<Point2i> RGBFilm::FirstNonFinitePixel() const {
 Image RGBFilm::GetImage(ImageMetadata* metadata) const {
     const Bounds2i& b = opts.pixelBounds;
     Point2i res(b.pMax.x - b.pMin.x, b.pMax.y - b.pMin.y);
+    if (opts.thermal) {
+        // In-band radiance and the temperature the sensor reports
+        Image image(PixelFormat::Float, res, {"L", "T"});
+        for (int y = 0; y < res.y; ++y)
+            for (int x = 0; x < res.x; ++x) {
+                Float L = GetPixelRGB({x + b.pMin.x, y + b.pMin.y}).r;
+                image.SetChannel({x, y}, 0, L);
+                image.SetChannel({x, y}, 1, Float(opts.thermal->ApparentTemperature(L)));
+            }
+        if (metadata) {
+            metadata->pixelBounds = b;
+            metadata->fullResolution = opts.fullResolution;
+            metadata->colorSpace = colorSpace;
+        }
+        return image;
+    }
     std::vector<std::string> names = {"R", "G", "B"};
     if (!aovs.Empty())
         names.insert(names.end(), GBufferLayers::ChannelNames().begin(),
@@ -382,8 +428,17 @@ void RGBFilm::WriteImage(const std::string& filename, ImageMetadata metadata,
     const bool part = b.pMin.x != 0 || b.pMin.y != 0 || b.pMax.x != opts.fullResolution.x ||
                       b.pMax.y != opts.fullResolution.y;
     metadata.strings["kiln:savefp16"] = opts.savefp16 ? "true" : "false";
+    if (opts.thermal) metadata.strings["kiln:thermal"] = opts.thermal->Settings();
     // The display view the film asks for (kiln convert uses it unless told otherwise)
     metadata.strings["kiln:view"] = viewOverride.empty() ? opts.view : viewOverride;
+    if (opts.thermal && ext != "exr") {
+        // The picture of the temperature channel, with its scale bar
+        if (ext == "pfm" || ext == "hdr")
+            throw std::runtime_error(
+                filename + ": the thermal film writes EXR or a picture format, not ." + ext);
+        ThermalPicture(image, image.ChannelIndex("T")).Write(filename, metadata);
+        return;
+    }
     if (ext == "exr") {
         if (opts.savefp16 && !part) {
             // Half floats end at 65504, which absolute thermal radiance passes near 6000 K:

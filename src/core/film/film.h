@@ -22,6 +22,7 @@
 #include "core/film/filter.h"
 #include "core/film/gbuffer_layers.h"
 #include "core/film/spectral_buckets.h"
+#include "core/film/thermal_sensor.h"
 #include "core/film/visible_surface.h"
 #include "core/image/display.h"
 #include "core/image/image.h"
@@ -95,10 +96,16 @@ class RGBFilm {
     // (360), "float lambdamax" (830) within 360-830 nm; the EXR gains the buckets' mean
     // spectral radiance (SpectralBuckets; not scaled by the sensor or "exposure"); the scene's
     // "filename" must be an EXR, as in pbrt-v4.
-    // type: "rgb" | "gbuffer" | "spectral"; others warn and use "rgb". exposureTime: camera shutter
-    // interval, s. colorSpace: output colour space (nullptr: sRGB). Throws SceneError.
-    // request: what the render asks besides the scene's parameters (RenderOptions): pixel
-    // bounds that replace the scene's crop window and pixel bounds, a crop window that
+    // type "thermal" (kiln; "savefp16" defaults to false): an infrared camera or pyrometer (ThermalSensor: "string sensor",
+    // "float emissivity", "float reflectedtemperature"); the scene renders the sensor's band
+    // (Range), each pixel the in-band radiance (W m^-2 sr^-1), and the EXR has channels L (that
+    // radiance) and T (the apparent temperature the sensor reports, K); other picture formats
+    // (PNG, JPEG, ...) get T colour-mapped with a scale bar (thermal_colormap.h); not PFM or HDR.
+    // No "stokes", AOVs or "exposure".
+    // type: "rgb" | "gbuffer" | "spectral" | "thermal"; others warn and use "rgb". exposureTime:
+    // camera shutter interval, s. colorSpace: output colour space (nullptr: sRGB). Throws
+    // SceneError. request: what the render asks besides the scene's parameters (RenderOptions):
+    // pixel bounds that replace the scene's crop window and pixel bounds, a crop window that
     // replaces the scene's, whether to record Stokes layers, and the camera's placement (the
     // "camera" and "world" spaces of the AOV layers; identity: render space).
     struct Request {
@@ -126,6 +133,7 @@ class RGBFilm {
         bool stokes = false;
         int spectralBuckets = 0;  // 0: no spectral layer
         Float lambdaMin = Lambda_min, lambdaMax = Lambda_max;
+        std::optional<ThermalSensor> thermal;  // film "thermal"
     };
     // outputFromRender: render space to the AOV layers' space (opts.aovSpace).
     RGBFilm(const Options& options, const PixelSensor& sensor, const Filter& filter,
@@ -160,6 +168,11 @@ class RGBFilm {
     bool UsesVisibleSurface() const { return opts.writeAOVs; }
     // Whether the film records the Stokes components (film "stokes").
     bool WritesStokes() const { return opts.stokes; }
+
+    // The wavelengths the film's sensor responds to: the visible range, or a thermal sensor's
+    // band.
+    SpectralRange Range() const { return opts.thermal ? opts.thermal->Band() : SpectralRange{}; }
+    const ThermalSensor* Thermal() const { return opts.thermal ? &*opts.thermal : nullptr; }
 
     // The wavelengths of one path sample, drawn by the distribution scene creation chose
     // (the visible density unless set).
@@ -238,6 +251,15 @@ class RGBFilm {
         double rgbSum[3][3] = {};  // sensor RGB of S1, S2, S3, weighted
     };
     size_t PixelIndex(Point2i p) const;
+    // The sensor's response to a path sample: sensor RGB, or for a thermal film the in-band
+    // radiance in all three components
+    RGB Response(const SampledSpectrum& L, const SampledWavelengths& lambda) const {
+        if (opts.thermal) {
+            Float v = opts.thermal->InBandRadiance(L, lambda);
+            return RGB(v, v, v);
+        }
+        return sensor.ToSensorRGB(L, lambda);
+    }
     void AddSample(Point2i pPixel, const SampledSpectrum& L, const Stokes* S,
                    const SampledWavelengths& lambda, const VisibleSurface* visibleSurface,
                    Float weight);

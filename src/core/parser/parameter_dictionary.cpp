@@ -181,7 +181,9 @@ std::vector<Spectrum> ParameterDictionary::ExtractSpectra(const ParsedParameter&
             value.push_back(p.floats[i + 1]);
         }
         p.lookedUp = true;
-        return {Spectrum(PiecewiseLinearSpectrum(lambda, value))};
+        PiecewiseLinearSpectrum s(lambda, value);
+        if (type != SpectrumType::Illuminant) s.HoldEndsBeyondVisible();
+        return {Spectrum(std::move(s))};
     }
     // Named spectra or files, one spectrum per string.
     return ToArray<Spectrum>(p, p.strings, 1, [&](const std::string* s) -> Spectrum {
@@ -198,6 +200,7 @@ std::vector<Spectrum> ParameterDictionary::ExtractSpectra(const ParsedParameter&
         if (!read)
             Fail(p, "'" + *s + "' is neither a named spectrum nor a readable spectrum file" +
                         (error.empty() ? std::string() : " (" + error + ")"));
+        if (type != SpectrumType::Illuminant) read->HoldEndsBeyondVisible();
         return std::move(*read);
     });
 }

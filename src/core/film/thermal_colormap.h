@@ -1,0 +1,18 @@
+// The picture a thermal camera shows: temperature mapped to colour (an "iron" palette: black,
+// violet, red, orange, yellow, white from the coldest to the hottest pixel of the frame), with a
+// scale bar on the right labelled with both ends in kelvin.
+#pragma once
+
+#include "core/image/image.h"
+
+namespace kiln {
+
+// The palette's colour (sRGB-encoded components in [0, 1]) at t in [0, 1] (clamped).
+RGB IronPalette(Float t);
+
+// A picture of the temperature channel T (K) of `thermal`: linear RGB (Float) to be written
+// in an 8-bit format, the image widened by a scale bar; the range runs from the lowest to the
+// highest finite positive temperature (a frame of one temperature gets a 1 K range around it).
+Image ThermalPicture(const Image& thermal, int temperatureChannel);
+
+}  // namespace kiln

@@ -1,0 +1,116 @@
+#include "core/film/thermal_sensor.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "core/parser/diagnostics.h"
+#include "core/parser/parameter_dictionary.h"
+#include "spectral/planck.h"
+
+namespace kiln {
+
+namespace {
+
+std::string Nm(Float v) {
+    std::string s = std::to_string(v);
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+    return s;
+}
+
+}  // namespace
+
+ThermalSensor ThermalSensor::Create(const ParameterDictionary& params, const FileLoc& loc) {
+    ThermalSensor s;
+    s.name = params.GetOneString("sensor", "lwir");
+    const FileLoc sensorLoc = params.Loc("sensor", loc);
+    // The named bands (nm)
+    struct Named {
+        const char* name;
+        Float min, max;
+    };
+    static constexpr Named kBands[] = {
+        {"lwir", 8000, 14000}, {"mwir", 3000, 5000}, {"swir", 900, 1700}, {"nir", 750, 1100}};
+    bool named = false;
+    for (const Named& b : kBands)
+        if (s.name == b.name) {
+            s.band = SpectralRange{b.min, b.max};
+            named = true;
+        }
+    if (s.name == "pyrometer") {
+        if (!params.Has("wavelength"))
+            throw SceneError(sensorLoc, "the pyrometer needs its \"float wavelength\" (nm)",
+                             s.name);
+        Float centre = params.GetOneFloat("wavelength", 0);
+        Float width = params.GetOneFloat("bandwidth", 10);
+        if (!(width > 0 && width <= 1000))
+            throw SceneError(params.Loc("bandwidth", loc),
+                             "the pyrometer's \"bandwidth\" must be more than 0 and at most "
+                             "1000 nm",
+                             Nm(width));
+        s.band = SpectralRange{centre - width / 2, centre + width / 2};
+        if (!(s.band.min >= kSpectralRangeMin && s.band.max <= kSpectralRangeMax))
+            throw SceneError(params.Loc("wavelength", loc),
+                             "the pyrometer's band must lie within 300 nm - 20 um", Nm(centre));
+    } else if (s.name == "band") {
+        s.band =
+            SpectralRange{params.GetOneFloat("lambdamin", 0), params.GetOneFloat("lambdamax", 0)};
+        if (!(s.band.min >= kSpectralRangeMin && s.band.max <= kSpectralRangeMax &&
+              s.band.min < s.band.max))
+            throw SceneError(params.Loc("lambdamin", params.Loc("lambdamax", sensorLoc)),
+                             "the thermal film's band must satisfy 300 <= \"lambdamin\" < "
+                             "\"lambdamax\" <= 20000 (nm)",
+                             "lambdamin");
+    } else if (!named) {
+        throw SceneError(sensorLoc,
+                         "unknown thermal sensor \"" + s.name +
+                             "\" (expected \"lwir\", \"mwir\", \"swir\", \"nir\", \"pyrometer\" "
+                             "or \"band\")",
+                         s.name);
+    }
+    s.emissivity = params.GetOneFloat("emissivity", 1);
+    if (!(s.emissivity > 0 && s.emissivity <= 1))
+        throw SceneError(params.Loc("emissivity", loc),
+                         "the thermal film's \"emissivity\" setting must be more than 0 and at "
+                         "most 1",
+                         Nm(s.emissivity));
+    s.reflectedTemperature = params.GetOneFloat("reflectedtemperature", 0);
+    if (!(s.reflectedTemperature >= 0 && s.reflectedTemperature <= 1e6f))
+        throw SceneError(params.Loc("reflectedtemperature", loc),
+                         "the thermal film's \"reflectedtemperature\" must be 0 to 1e6 K",
+                         Nm(s.reflectedTemperature));
+    return s;
+}
+
+double ThermalSensor::ApparentTemperature(double L) const {
+    double reflected = emissivity < 1 && reflectedTemperature > 0
+                           ? (1 - double(emissivity)) *
+                                 planck_band_radiance(band.min, band.max, reflectedTemperature)
+                           : 0;
+    double own = (L - reflected) / double(emissivity);
+    if (!(own > 0)) return 0;
+    return band_radiance_temperature(band.min, band.max, own);
+}
+
+std::string ThermalSensor::Settings() const {
+    char text[128];
+    std::snprintf(text, sizeof(text), "%.9g %.9g %.9g %.9g", double(band.min), double(band.max),
+                  double(emissivity), double(reflectedTemperature));
+    return text;
+}
+
+std::optional<ThermalSensor> ThermalSensor::FromSettings(std::string_view settings) {
+    std::istringstream in{std::string(settings)};
+    ThermalSensor s;
+    if (!(in >> s.band.min >> s.band.max >> s.emissivity >> s.reflectedTemperature))
+        return std::nullopt;
+    if (!(s.band.min >= kSpectralRangeMin && s.band.max <= kSpectralRangeMax &&
+          s.band.min < s.band.max && s.emissivity > 0 && s.emissivity <= 1 &&
+          s.reflectedTemperature >= 0 && s.reflectedTemperature <= 1e6f))
+        return std::nullopt;
+    s.name = "band";
+    return s;
+}
+
+}  // namespace kiln

@@ -1,0 +1,207 @@
+// Film "thermal": infrared cameras and pyrometers. A closed cavity at one temperature is a
+// blackbody in every band, whatever it holds (Kirchhoff from each surface's own BSDF, with the
+// emissivity tables built over the sensor's band): the in-band radiance must be Planck's
+// integral over the band and the reported temperature the cavity's. The camera's emissivity
+// setting and reflected temperature recover a grey surface's own temperature.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include "base/statistics.h"
+#include "render_test_util.h"
+#include "spectral/planck.h"
+
+namespace kiln {
+namespace {
+
+// The mean of a thermal film's channel over its pixels, with its standard error
+RunningStats ChannelStats(const testing::RenderedScene& r, const char* channel) {
+    Image img = r.scene->job->film->GetImage(nullptr);
+    int c = img.ChannelIndex(channel);
+    EXPECT_GE(c, 0) << channel;
+    RunningStats s;
+    for (int y = 0; y < img.Resolution().y; ++y)
+        for (int x = 0; x < img.Resolution().x; ++x) s.Add(img.GetChannel({x, y}, c));
+    return s;
+}
+
+// A closed cavity (a textured diffuse wall) around rough gold, coated diffuse and smooth
+// silver, every surface at the ambient temperature T, seen by the film `film`
+std::string Cavity(const std::string& film, double T, int spp) {
+    std::ostringstream s;
+    s << "Option \"float ambienttemperature\" " << T << "\n"
+      << film << " \"integer xresolution\" 20 \"integer yresolution\" 20\n"
+      << "Sampler \"zsobol\" \"integer pixelsamples\" " << spp << "\n"
+      << "Integrator \"path\" \"integer maxdepth\" 200\n"
+      << "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 50\n"
+      << "WorldBegin\n"
+      << "Texture \"checks\" \"spectrum\" \"checkerboard\" \"float uscale\" 8 \"float vscale\" 8"
+         " \"rgb tex1\" [0.9 0.8 0.7] \"rgb tex2\" [0.1 0.2 0.05]\n"
+      << "Material \"diffuse\" \"texture reflectance\" \"checks\"\n"
+      << "Shape \"sphere\" \"float radius\" 6\n"
+      << "AttributeBegin Translate -0.8 0 0.5\n"
+      << "Material \"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\""
+         " \"float roughness\" 0.2\n"
+      << "Shape \"sphere\" \"float radius\" 0.7\nAttributeEnd\n"
+      << "AttributeBegin Translate 0.8 0 0.5\n"
+      << "Material \"coateddiffuse\" \"rgb reflectance\" [0.3 0.5 0.7] \"float roughness\" 0.1\n"
+      << "Shape \"sphere\" \"float radius\" 0.6\nAttributeEnd\n"
+      << "AttributeBegin Translate 0 0.9 1\n"
+      << "Material \"conductor\" \"spectrum eta\" \"metal-Ag-eta\" \"spectrum k\" \"metal-Ag-k\""
+         " \"float roughness\" 0\n"
+      << "Shape \"sphere\" \"float radius\" 0.4\nAttributeEnd\n";
+    return s.str();
+}
+
+struct Band {
+    const char* film;
+    double lambdaMin, lambdaMax, T;
+};
+
+// What ctest prints for a parameter (instead of its bytes)
+inline void PrintTo(const Band& b, std::ostream* os) { *os << b.film << " at " << b.T << " K"; }
+
+class ThermalCavity : public ::testing::TestWithParam<Band> {};
+
+TEST_P(ThermalCavity, ReadsTheCavityTemperatureAndPlancksBandRadiance) {
+    const Band& band = GetParam();
+    testing::RenderedScene r = testing::RenderText(Cavity(band.film, band.T, 512));
+    for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
+    const SpectralRange range = r.scene->spectralRange;
+    EXPECT_NEAR(range.min, band.lambdaMin, 1e-3);
+    EXPECT_NEAR(range.max, band.lambdaMax, 1e-3);
+    const double Lb = planck_band_radiance(band.lambdaMin, band.lambdaMax, band.T);
+    RunningStats L = ChannelStats(r, "L"), T = ChannelStats(r, "T");
+    const double ratio = L.Mean() / Lb, se = L.StandardError() / Lb;
+    // What a 1 % error in radiance makes of the temperature: d ln L / d ln T
+    const double dLnL = planck_band_radiance(band.lambdaMin, band.lambdaMax, band.T * 1.001) / Lb;
+    const double kelvinPerRelative = band.T * 0.001 / (dLnL - 1);
+    std::printf("%s at %.0f K: L %.5f of Planck's (se %.5f), T %.3f K (se %.3f K)\n", band.film,
+                band.T, ratio, se, T.Mean(), T.StandardError());
+    EXPECT_LT(4 * se, 0.005);  // the test can see a 0.5 % error
+    EXPECT_NEAR(ratio, 1, 4 * se + 1e-3);
+    EXPECT_NEAR(T.Mean(), band.T, 4 * T.StandardError() + 1e-3 * kelvinPerRelative);
+    // The temperature of the mean radiance, as a camera averaging the frame would report
+    const ThermalSensor& sensor = *r.scene->job->film->Thermal();
+    EXPECT_NEAR(sensor.ApparentTemperature(L.Mean()), band.T, (4 * se + 1e-3) * kelvinPerRelative);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Bands, ThermalCavity,
+    ::testing::Values(Band{"Film \"thermal\" \"string sensor\" \"lwir\"", 8000, 14000, 300},
+                      Band{"Film \"thermal\" \"string sensor\" \"mwir\"", 3000, 5000, 700},
+                      Band{"Film \"thermal\" \"string sensor\" \"pyrometer\" "
+                           "\"float wavelength\" 653",
+                           648, 658, 2000},
+                      Band{"Film \"thermal\" \"string sensor\" \"band\" \"float lambdamin\" 300 "
+                           "\"float lambdamax\" 20000",
+                           300, 20000, 1000}),
+    [](const ::testing::TestParamInfo<Band>& info) {
+        return std::to_string(int(info.param.lambdaMin)) + "_" +
+               std::to_string(int(info.param.lambdaMax)) + "nm";
+    });
+
+// A grey plate (emissivity 0.4: diffuse reflectance 0.6) at 500 K inside a closed room at 300 K:
+// it sends 0.4 Lb(500) of its own and 0.6 Lb(300) of the room's. An LWIR camera set to
+// emissivity 0.4 and reflected temperature 300 K reads 500 K; set to emissivity 1 it reads the
+// blackbody temperature of what arrives, lower.
+TEST(ThermalFilm, EmissivitySettingAndReflectedTemperatureRecoverTheSurfaceTemperature) {
+    auto scene = [](const std::string& settings) {
+        return "Option \"float ambienttemperature\" 300\n"
+               "Film \"thermal\" \"string sensor\" \"lwir\" " +
+               settings +
+               " \"integer xresolution\" 8 \"integer yresolution\" 8\n"
+               "Sampler \"zsobol\" \"integer pixelsamples\" 64\n"
+               "Integrator \"path\" \"integer maxdepth\" 100\n"
+               "LookAt 0 0 -2  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 10\n"
+               "WorldBegin\n"
+               "Material \"diffuse\" \"rgb reflectance\" [0.6 0.6 0.6]\n"
+               "Shape \"sphere\" \"float radius\" 20\n"
+               "AttributeBegin\n"
+               "Material \"diffuse\" \"rgb reflectance\" [0.6 0.6 0.6] \"float temperature\" 500\n"
+               "Shape \"bilinearmesh\" \"point3 P\" [-1 -1 0  1 -1 0  -1 1 0  1 1 0]\n"
+               "AttributeEnd\n";
+    };
+    testing::RenderedScene set =
+        testing::RenderText(scene("\"float emissivity\" 0.4 \"float reflectedtemperature\" 300"));
+    for (const auto& w : set.warnings) ADD_FAILURE() << w.message;
+    RunningStats T = ChannelStats(set, "T"), L = ChannelStats(set, "L");
+    const double expected =
+        0.4 * planck_band_radiance(8000, 14000, 500) + 0.6 * planck_band_radiance(8000, 14000, 300);
+    std::printf("plate: L %.5f of expected (se %.5f), T %.3f K (se %.3f)\n", L.Mean() / expected,
+                L.StandardError() / expected, T.Mean(), T.StandardError());
+    EXPECT_NEAR(L.Mean() / expected, 1, 4 * L.StandardError() / expected + 1e-3);
+    EXPECT_NEAR(T.Mean(), 500, 4 * T.StandardError() + 0.5);
+    testing::RenderedScene plain = testing::RenderText(scene(""));
+    double apparent = band_radiance_temperature(8000, 14000, expected);
+    EXPECT_NEAR(ChannelStats(plain, "T").Mean(), apparent, 1);
+    EXPECT_LT(apparent, 450);
+}
+
+// A picture format gets the temperature colour-mapped, with a scale bar on the right: the
+// hottest pixel white, the coldest black, the bar's top white and its bottom black
+TEST(ThermalFilm, PicturesMapTemperatureToColourWithAScaleBar) {
+    testing::RenderedScene r = testing::RenderText(
+        "Film \"thermal\" \"string sensor\" \"mwir\" \"integer xresolution\" 64 "
+        "\"integer yresolution\" 32\n"
+        "Sampler \"zsobol\" \"integer pixelsamples\" 16\n"
+        "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"orthographic\" \"float screenwindow\" [-2 2 -1 1]\n"
+        "WorldBegin\n"
+        "Material \"diffuse\" \"rgb reflectance\" [0 0 0]\n"
+        "Shape \"bilinearmesh\" \"point3 P\" [-2 -1 0  0 -1 0  -2 1 0  0 1 0] "
+        "\"float temperature\" 400\n"
+        "Shape \"bilinearmesh\" \"point3 P\" [0 -1 0  2 -1 0  0 1 0  2 1 0] "
+        "\"float temperature\" 900\n");
+    namespace fs = std::filesystem;
+    fs::path dir = fs::path(KILN_BINARY_DIR) / "test-output";
+    fs::create_directories(dir);
+    fs::path png = dir / "thermal-picture.png";
+    r.scene->job->film->WriteImage(png.string(), ImageMetadata());
+    Image picture = Image::Read(png.string());
+    ASSERT_GT(picture.Resolution().x, 64);  // the bar
+    EXPECT_EQ(picture.Resolution().y, 32);
+    auto luminance = [&](int x, int y) {
+        return picture.GetChannel({x, y}, 0) + picture.GetChannel({x, y}, 1) +
+               picture.GetChannel({x, y}, 2);
+    };
+    EXPECT_LT(luminance(16, 16), 0.05f);  // 400 K: the coldest
+    EXPECT_GT(luminance(48, 16), 2.9f);   // 900 K: the hottest
+    int barX = picture.Resolution().x - 2;
+    EXPECT_GT(luminance(barX, 8), luminance(barX, 16));
+    EXPECT_GT(luminance(barX, 16), luminance(barX, 23));
+}
+
+// The parameters are checked where they are written
+TEST(ThermalFilm, BadParametersAreLocatedErrors) {
+    auto error = [](const std::string& film) -> std::string {
+        Diagnostics diag(nullptr);
+        try {
+            testing::BuildScene(film + "\nWorldBegin\n", diag);
+        } catch (const SceneError& e) {
+            return e.Message() + " [" + e.Token() + "] line " + std::to_string(e.Loc().line);
+        }
+        return "";
+    };
+    EXPECT_NE(error("Film \"thermal\" \"string sensor\" \"xray\"").find("unknown thermal sensor"),
+              std::string::npos);
+    EXPECT_NE(error("Film \"thermal\" \"string sensor\" \"pyrometer\"").find("wavelength"),
+              std::string::npos);
+    EXPECT_NE(error("Film \"thermal\" \"string sensor\" \"pyrometer\" \"float wavelength\" 100")
+                  .find("300 nm - 20 um"),
+              std::string::npos);
+    EXPECT_NE(error("Film \"thermal\" \"float emissivity\" 0").find("emissivity"),
+              std::string::npos);
+    EXPECT_NE(error("Film \"thermal\" \"string filename\" \"a.pfm\"").find("EXR"),
+              std::string::npos);
+    EXPECT_NE(error("Film \"thermal\" \"string sensor\" \"band\" \"float lambdamin\" 900 "
+                    "\"float lambdamax\" 800")
+                  .find("lambdamin"),
+              std::string::npos);
+    EXPECT_NE(error("Film \"thermal\"\n  \"bool stokes\" true").find("line 2"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace kiln
