@@ -9,6 +9,7 @@
 
 #include "app/output_check.h"
 #include "core/film/film.h"
+#include "core/film/thermal_colormap.h"
 #include "core/image/display.h"
 #include "core/image/image.h"
 #include "render/auto_exposure.h"
@@ -89,6 +90,23 @@ int RunConvert(const std::vector<std::string>& args) {
         return 2;
     }
     try {
+        // A thermal film's EXR (L and T, no R): the picture of its temperatures
+        if (ins.size() == 1) {
+            ImageMetadata m;
+            Image image = Image::Read(ins[0], &m);
+            const int T = image.ChannelIndex("T");
+            if (T >= 0 && image.ChannelIndex("L") >= 0 && image.ChannelIndex("R") < 0) {
+                for (const std::string& out : outs) {
+                    if (IsLinearFormat(FileExtension(out)))
+                        throw std::runtime_error(out +
+                                                 ": a thermal image (L, T) converts to "
+                                                 "picture formats (PNG, JPEG, ...) only");
+                    m.strings["kiln:convertedFrom"] = ins[0];
+                    ThermalPicture(image, T).Write(out, m);
+                }
+                return 0;
+            }
+        }
         // The inputs' R, G, B side by side, left to right (the first one's metadata)
         ImageMetadata metadata;
         Image rgb;

@@ -608,6 +608,7 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
         options.emission, scene.media, scene.arena, diag);
     scene.cameraMedium = MediumIndex(desc.camera.medium, media, desc.camera.loc);
     scene.spectralRange = scene.job->film->Range();
+    WarnOfColoursBeyondTheVisible(desc, scene.spectralRange, diag);
     scene.emissivityTables = std::make_unique<EmissivityTables>(scene.spectralRange);
     scene.emissivityTables->polarized = NeedsPolarization(scene, materials);
     // The shader thermal lights estimate their power with: the job's but for the texture

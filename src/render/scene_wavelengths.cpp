@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "render/scene.h"
+#include "render/scene_description.h"
 #include "spectral/planck.h"
 
 namespace kiln {
@@ -62,6 +63,35 @@ WavelengthDistribution CreateWavelengthDistribution(const Scene& scene, Float* v
     WavelengthDistribution d(emitted, share);
     if (!d.IsVisible()) *visibleShare = share;
     return d;
+}
+
+void WarnOfColoursBeyondTheVisible(const SceneDescription& desc, const SpectralRange& range,
+                                   Diagnostics& diag) {
+    if (range.IsVisible()) return;
+    FileLoc firstLoc;
+    std::string firstWhat;
+    int count = 0;
+    auto found = [&](const FileLoc& loc, const std::string& what) {
+        if (count++ == 0) firstLoc = loc, firstWhat = what;
+    };
+    auto look = [&](const ParameterDictionary& params) {
+        for (const ParsedParameter& p : params.Parameters())
+            if (p.type == "rgb") found(p.loc, "'rgb " + p.name + "'");
+    };
+    for (const SceneEntity& m : desc.materials) look(m.parameters);
+    for (const auto& [name, m] : desc.namedMaterials) look(m.parameters);
+    for (const auto& [name, t] : desc.spectrumTextures) {
+        look(t.parameters);
+        if (t.texName == "imagemap") found(t.loc, "the image map \"" + name + "\"");
+    }
+    if (count == 0) return;
+    diag.Warn(firstLoc, "RGB colours say nothing beyond the visible: in this render of " +
+                            std::to_string(int(range.min)) + "-" + std::to_string(int(range.max)) +
+                            " nm, " + firstWhat +
+                            (count > 1 ? " and " + std::to_string(count - 1) + " other RGB colours"
+                                       : std::string()) +
+                            " of materials and textures hold their values at 360 or 830 nm "
+                            "(give spectra for infrared properties)");
 }
 
 }  // namespace kiln

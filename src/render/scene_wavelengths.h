@@ -2,11 +2,20 @@
 // chosen from what the scene's hot matter radiates.
 #pragma once
 
+#include "core/parser/diagnostics.h"
+#include "spectral/spectral_range.h"
 #include "spectral/wavelength_distribution.h"
 
 namespace kiln {
 
 class Scene;
+struct SceneDescription;
+
+// One warning, at the first of them, when a scene rendered beyond the visible (range) gives
+// materials or textures RGB colours or RGB image maps: an RGB says nothing outside 360-830 nm,
+// and holds its value at the nearer end there.
+void WarnOfColoursBeyondTheVisible(const SceneDescription& desc, const SpectralRange& range,
+                                   Diagnostics& diag);
 
 // Uniform over the scene's wavelengths when they are not the visible ones (Film "thermal").
 // The visible density when nothing in the scene glows thermally, or Integrator

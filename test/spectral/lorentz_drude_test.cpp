@@ -1,0 +1,114 @@
+// The Lorentz-Drude optical constants of Rakic et al. (1998) and the named metals they extend
+// into the infrared: the model as refractiveindex.info tabulates it, continuity where the
+// measured tables end, the visible tables untouched, and aluminium's infrared emissivity against
+// an independent fit (Rakic 1995).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "spectral/lorentz_drude.h"
+#include "spectral/named_spectra.h"
+#include "spectral/named_spectra_data.h"
+#include "spectral/spectrum.h"
+
+namespace kiln {
+namespace {
+
+struct Row {
+    double lambda, n, k;
+};
+
+std::vector<Row> ReadNk(const std::string& file) {
+    std::ifstream in(std::string(KILN_SHARED_DIR) + "/data/" + file);
+    std::vector<Row> rows;
+    std::string line;
+    std::getline(in, line);  // header
+    while (std::getline(in, line)) {
+        std::replace(line.begin(), line.end(), ',', ' ');
+        std::istringstream ls(line);
+        Row r;
+        if (ls >> r.lambda >> r.n >> r.k) rows.push_back(r);
+    }
+    return rows;
+}
+
+double NormalEmissivity(std::complex<double> nk) { return 1 - std::norm((nk - 1.0) / (nk + 1.0)); }
+
+std::complex<double> Named(const std::string& metal, double lambda) {
+    return {(*GetNamedSpectrum("metal-" + metal + "-eta"))(Float(lambda)),
+            (*GetNamedSpectrum("metal-" + metal + "-k"))(Float(lambda))};
+}
+
+// refractiveindex.info's tabulation of the same model (4 significant figures), 248 nm - 12.4 um
+TEST(LorentzDrude, ReproducesTheTabulatedModel) {
+    for (const char* metal : {"W", "Pt"}) {
+        std::vector<Row> rows = ReadNk(std::string("alt/nk_") + metal + "_RakicLD1998.csv");
+        if (rows.empty()) GTEST_SKIP() << "reference data " KILN_SHARED_DIR "/data not available";
+        for (const Row& r : rows) {
+            std::complex<double> nk = *LorentzDrudeIndex(metal, r.lambda);
+            ASSERT_NEAR(nk.real(), r.n, 1e-3 * r.n + 1e-3) << metal << " at " << r.lambda;
+            ASSERT_NEAR(nk.imag(), r.k, 1e-3 * r.k + 1e-3) << metal << " at " << r.lambda;
+        }
+    }
+    EXPECT_FALSE(LorentzDrudeIndex("Fe", 1000));
+}
+
+// The named metals cover 300 nm - 20 um: the visible values are the tables', the far infrared
+// the model's, and no step where the tables end (neighbouring nodes differ by less than 10 %)
+TEST(LorentzDrude, NamedMetalsReachTwentyMicrometresWithoutSteps) {
+    for (const char* metal : {"Ag", "Au", "Cu", "Al", "Cr", "Ni", "Pt", "Ti", "W"}) {
+        SCOPED_TRACE(metal);
+        for (const char* part : {"-eta", "-k"}) {
+            const std::string name = std::string("metal-") + metal + part;
+            const auto* pl = GetNamedSpectrum(name)->GetIf<PiecewiseLinearSpectrum>();
+            ASSERT_NE(pl, nullptr);
+            EXPECT_LE(pl->Lambdas().front(), 300);
+            EXPECT_GE(pl->Lambdas().back(), 20000);
+            // The table it was built from: its nodes are kept, and from its last one on the
+            // values move by less than 10 % (plus 0.02) from node to node
+            const NamedSpectrumTable* table = nullptr;
+            for (auto tables : {PbrtNamedSpectrumTables(), MeasuredNamedSpectrumTables()})
+                for (const NamedSpectrumTable& t : tables)
+                    if (name == t.name) table = &t;
+            ASSERT_NE(table, nullptr);
+            for (size_t i = 0; i + 1 < table->interleaved.size(); i += 2)
+                EXPECT_FLOAT_EQ((*pl)(table->interleaved[i]), table->interleaved[i + 1]);
+            const Float end = table->interleaved[table->interleaved.size() - 2];
+            std::span<const Float> l = pl->Lambdas(), v = pl->Values();
+            for (size_t i = 1; i < l.size(); ++i)
+                if (l[i - 1] >= end)
+                    ASSERT_LT(std::abs(v[i] - v[i - 1]), 0.1 * std::max(v[i], v[i - 1]) + 0.02)
+                        << name << " at " << l[i] << " nm";
+        }
+        // Far beyond the tables: the model
+        std::complex<double> model = *LorentzDrudeIndex(metal, 10000);
+        std::complex<double> named = Named(metal, 10000);
+        EXPECT_NEAR(named.real(), model.real(), 1e-3 * model.real());
+        EXPECT_NEAR(named.imag(), model.imag(), 1e-3 * model.imag());
+    }
+}
+
+// Aluminium's normal emissivity from 2 to 20 um against Rakic (1995)'s fit to other
+// measurements (nk_Al.csv, tabulated to 200 um): within 12 %
+TEST(LorentzDrude, AluminiumInfraredEmissivityAgreesWithAnIndependentFit) {
+    std::vector<Row> rows = ReadNk("nk_Al.csv");
+    if (rows.empty()) GTEST_SKIP() << "reference data " KILN_SHARED_DIR "/data not available";
+    int compared = 0;
+    for (const Row& r : rows) {
+        if (r.lambda < 2000 || r.lambda > 20000) continue;
+        double kiln = NormalEmissivity(Named("Al", r.lambda));
+        double reference = NormalEmissivity({r.n, r.k});
+        EXPECT_NEAR(kiln / reference, 1, 0.12) << "at " << r.lambda << " nm";
+        ++compared;
+    }
+    EXPECT_GE(compared, 3);
+}
+
+}  // namespace
+}  // namespace kiln
