@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "nk_csv.h"
 #include "spectral/lorentz_drude.h"
 #include "spectral/named_spectra.h"
 #include "spectral/named_spectra_data.h"
@@ -20,23 +21,8 @@
 namespace kiln {
 namespace {
 
-struct Row {
-    double lambda, n, k;
-};
-
-std::vector<Row> ReadNk(const std::string& file) {
-    std::ifstream in(std::string(KILN_SHARED_DIR) + "/data/" + file);
-    std::vector<Row> rows;
-    std::string line;
-    std::getline(in, line);  // header
-    while (std::getline(in, line)) {
-        std::replace(line.begin(), line.end(), ',', ' ');
-        std::istringstream ls(line);
-        Row r;
-        if (ls >> r.lambda >> r.n >> r.k) rows.push_back(r);
-    }
-    return rows;
-}
+using Row = test::NK;
+const auto ReadNk = test::ReadNkCSV;
 
 double NormalEmissivity(std::complex<double> nk) { return 1 - std::norm((nk - 1.0) / (nk + 1.0)); }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "nk_csv.h"
 #include "spectral/color.h"
 #include "spectral/named_spectra.h"
 
@@ -14,23 +15,8 @@ using namespace kiln;
 
 namespace {
 
-struct NK {
-    double lambda, n, k;
-};
-
-std::vector<NK> ReadCSV(const std::string& file) {
-    std::ifstream in(std::string(KILN_SHARED_DIR) + "/data/" + file);
-    std::vector<NK> rows;
-    std::string line;
-    std::getline(in, line);  // header
-    while (std::getline(in, line)) {
-        std::replace(line.begin(), line.end(), ',', ' ');
-        std::istringstream ls(line);
-        NK r;
-        if (ls >> r.lambda >> r.n >> r.k) rows.push_back(r);
-    }
-    return rows;
-}
+using test::NK;
+const auto ReadCSV = test::ReadNkCSV;
 
 // Every CSV row inside the visible range is reproduced to float precision (beyond the measured
 // tables, the metals follow the Lorentz-Drude model: lorentz_drude_test.cpp).
