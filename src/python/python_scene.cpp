@@ -144,6 +144,8 @@ class PythonScene {
                 scene->SetAnimation(animation);
             scene->SetJob(options, diag);
         }
+        // A thermal film's in-band radiance and temperature; any other film's RGB
+        if (scene->job->film->Thermal()) return RenderNow(threads).Array({"L", "T"});
         return RenderNow(threads).Array({"R", "G", "B"});
     }
 

@@ -280,3 +280,25 @@ def test_bad_input_raises_located_errors(tmp_path):
         scene.write(str(tmp_path / "no-such-folder" / "x.exr"))
     with pytest.raises(ValueError, match="wavelength"):
         kiln.emissivity("conductor", GOLD, 0.0, 1200.0)
+
+
+def test_a_thermal_film_renders_radiance_and_temperature():
+    """Film "thermal": render returns L (in-band radiance) and T (the reported temperature)."""
+    scene = kiln.load_string("""
+Option "float ambienttemperature" 300
+Film "thermal" "string sensor" "lwir" "integer xresolution" 8 "integer yresolution" 6
+Sampler "zsobol" "integer pixelsamples" 16
+LookAt 0 0 -3 0 0 0 0 1 0
+Camera "perspective" "float fov" 40
+WorldBegin
+Material "diffuse" "spectrum reflectance" [300 0.5 20000 0.5]
+Shape "sphere" "float radius" 10
+""")
+    image = scene.render(seed=1)
+    assert image.shape == (6, 8, 2)
+    L, T = image[..., 0], image[..., 1]
+    # A closed room at 300 K is a blackbody: 8-14 um radiance and temperature
+    lam = np.linspace(8000.0, 14000.0, 6001)
+    band = np.trapz(kiln.planck(lam, 300.0), lam)
+    assert abs(L.mean() / band - 1) < 0.02
+    assert abs(T.mean() - 300) < 2
