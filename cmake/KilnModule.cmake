@@ -15,13 +15,15 @@ function(kiln_add_module name dir)
     endif()
 endfunction()
 
-# kiln_add_tests(NAME DIR DEPS... [STATISTICAL FILTER]): one GoogleTest executable from
-# DIR/*_test.cpp, registered with ctest. KILN_SOURCE_DIR and KILN_SHARED_DIR (../shared beside
-# the checkout) are defined. STATISTICAL: a GoogleTest filter ("Suite.*:Other/*") of the tests
-# that are Monte Carlo renders taking seconds each; they are labelled `statistical`, which the
-# sanitizer stage leaves out (scripts/sanitize.sh: ctest -LE statistical).
+# kiln_add_tests(NAME DIR DEPS... [STATISTICAL FILTER] [RELEASE_ONLY FILTER]): one GoogleTest
+# executable from DIR/*_test.cpp, registered with ctest. KILN_SOURCE_DIR and KILN_SHARED_DIR
+# (../shared beside the checkout) are defined. STATISTICAL: a GoogleTest filter
+# ("Suite.*:Other/*") of the tests that are Monte Carlo renders taking seconds each; they are
+# labelled `statistical`. RELEASE_ONLY: a filter of tests that check something other than
+# kiln's code (the documentation's commands), labelled `releaseonly`. The sanitizer stage
+# leaves both out (scripts/sanitize.sh: ctest -LE).
 function(kiln_add_tests name dir)
-    cmake_parse_arguments(PARSE_ARGV 2 arg "" "STATISTICAL" "")
+    cmake_parse_arguments(PARSE_ARGV 2 arg "" "STATISTICAL;RELEASE_ONLY" "")
     file(GLOB srcs CONFIGURE_DEPENDS "${dir}/*_test.cpp")
     if(NOT srcs)
         return()
@@ -38,10 +40,19 @@ function(kiln_add_tests name dir)
         KILN_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
         KILN_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared"
         KILN_BINARY_DIR="${PROJECT_BINARY_DIR}")
-    if(arg_STATISTICAL)
-        gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 TEST_FILTER "${arg_STATISTICAL}"
-                             PROPERTIES TIMEOUT 600 LABELS statistical)
-        gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 TEST_FILTER "-${arg_STATISTICAL}"
+    set(others "")
+    foreach(label statistical releaseonly)
+        string(TOUPPER ${label} key)
+        string(REPLACE "RELEASEONLY" "RELEASE_ONLY" key ${key})
+        if(arg_${key})
+            gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 TEST_FILTER "${arg_${key}}"
+                                 PROPERTIES TIMEOUT 600 LABELS ${label})
+            string(APPEND others "${others_separator}${arg_${key}}")
+            set(others_separator ":")
+        endif()
+    endforeach()
+    if(others)
+        gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 TEST_FILTER "-${others}"
                              PROPERTIES TIMEOUT 600)
     else()
         gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600)

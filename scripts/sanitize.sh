@@ -77,7 +77,8 @@ fi
 echo "kiln: sanitizer build and fuzzing: ${SECONDS} s" >&2
 
 cd "$build"
-# Every test but the Monte Carlo checks labelled `statistical` and the installation test
-# labelled `packaging` (CMakeLists.txt), which the release stage runs
-ctest --output-on-failure -j "$jobs" --timeout 1800 -LE "statistical|packaging"
+# Every test but the Monte Carlo checks labelled `statistical`, the installation tests labelled
+# `packaging` and the documentation's commands labelled `releaseonly` (CMakeLists.txt), which
+# the release stage runs
+ctest --output-on-failure -j "$jobs" --timeout 1800 -LE "statistical|packaging|releaseonly"
 echo "kiln: sanitizer stage: ${SECONDS} s" >&2

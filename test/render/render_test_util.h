@@ -111,6 +111,15 @@ std::string CavityCaseName(const ::testing::TestParamInfo<std::tuple<Case, bool>
     return id + (std::get<1>(info.param) ? "_Meshes" : "_Spheres");
 }
 
+// Each case once, in spheres and meshes by turns (the first case in spheres): every case and
+// both geometries are rendered, at half the cost of every case in both.
+template <typename Case>
+std::vector<std::tuple<Case, bool>> AlternatingGeometry(std::vector<Case> cases) {
+    std::vector<std::tuple<Case, bool>> params;
+    for (size_t i = 0; i < cases.size(); ++i) params.emplace_back(cases[i], i % 2 == 1);
+    return params;
+}
+
 // Luminance Y of a film pixel (colour space of the film).
 inline Float PixelY(const Scene& scene, Point2i p) {
     RGB rgb = scene.job->film->GetPixelRGB(p);
