@@ -96,18 +96,18 @@ class RGBFilm {
     // (360), "float lambdamax" (830) within 360-830 nm; the EXR gains the buckets' mean
     // spectral radiance (SpectralBuckets; not scaled by the sensor or "exposure"); the scene's
     // "filename" must be an EXR, as in pbrt-v4.
-    // type "thermal" (kiln; "savefp16" defaults to false): an infrared camera or pyrometer (ThermalSensor: "string sensor",
-    // "float emissivity", "float reflectedtemperature"); the scene renders the sensor's band
-    // (Range), each pixel the in-band radiance (W m^-2 sr^-1), and the EXR has channels L (that
-    // radiance) and T (the apparent temperature the sensor reports, K); other picture formats
-    // (PNG, JPEG, ...) get T colour-mapped with a scale bar (thermal_colormap.h); not PFM or HDR.
-    // No "stokes", AOVs or "exposure".
-    // type: "rgb" | "gbuffer" | "spectral" | "thermal"; others warn and use "rgb". exposureTime:
-    // camera shutter interval, s. colorSpace: output colour space (nullptr: sRGB). Throws
-    // SceneError. request: what the render asks besides the scene's parameters (RenderOptions):
-    // pixel bounds that replace the scene's crop window and pixel bounds, a crop window that
-    // replaces the scene's, whether to record Stokes layers, and the camera's placement (the
-    // "camera" and "world" spaces of the AOV layers; identity: render space).
+    // type "thermal" (kiln; "savefp16" defaults to false): an infrared camera or pyrometer
+    // (ThermalSensor: "string sensor", "float emissivity", "float reflectedtemperature"); the scene
+    // renders the sensor's band (Range), each pixel the in-band radiance (W m^-2 sr^-1), and the
+    // EXR has channels L (that radiance) and T (the apparent temperature the sensor reports, K);
+    // other picture formats (PNG, JPEG, ...) get T colour-mapped with a scale bar
+    // (thermal_colormap.h); not PFM or HDR. No "stokes", AOVs or "exposure". type: "rgb" |
+    // "gbuffer" | "spectral" | "thermal"; others warn and use "rgb". exposureTime: camera shutter
+    // interval, s. colorSpace: output colour space (nullptr: sRGB). Throws SceneError. request:
+    // what the render asks besides the scene's parameters (RenderOptions): pixel bounds that
+    // replace the scene's crop window and pixel bounds, a crop window that replaces the scene's,
+    // whether to record Stokes layers, and the camera's placement (the "camera" and "world" spaces
+    // of the AOV layers; identity: render space).
     struct Request {
         std::optional<Bounds2f> cropWindow;
         std::optional<Bounds2i> pixelBounds;
