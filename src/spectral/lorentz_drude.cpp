@@ -111,21 +111,30 @@ constexpr Metal kMetals[] = {
 
 }  // namespace
 
-std::optional<std::complex<double>> LorentzDrudeIndex(std::string_view metal, double lambda_nm) {
+std::optional<std::complex<double>> LorentzDrudePermittivity(std::string_view metal,
+                                                             double lambda_nm,
+                                                             const LorentzDrudeScaling& s) {
     for (const Metal& m : kMetals) {
         if (m.symbol != metal) continue;
         using C = std::complex<double>;
         const double E = 1239.841984 / lambda_nm, wp2 = m.omegaP * m.omegaP;
         const Oscillator& drude = m.terms[0];
-        C eps = 1.0 - drude.f * wp2 / (E * C(E, drude.gamma));
+        C eps = 1.0 - drude.f * s.drudeStrength * wp2 / (E * C(E, drude.gamma * s.drudeDamping));
         for (size_t j = 1; j < m.terms.size(); ++j) {
             const Oscillator& o = m.terms[j];
             if (o.f == 0) continue;
-            eps += o.f * wp2 / C(o.omega * o.omega - E * E, -E * o.gamma);
+            eps += o.f * s.lorentzStrength * wp2 /
+                   C(o.omega * o.omega - E * E, -E * o.gamma * s.lorentzDamping);
         }
-        return std::sqrt(eps);  // principal root: n > 0, k >= 0 where Im eps >= 0
+        return eps;
     }
     return std::nullopt;
+}
+
+std::optional<std::complex<double>> LorentzDrudeIndex(std::string_view metal, double lambda_nm) {
+    std::optional<std::complex<double>> eps = LorentzDrudePermittivity(metal, lambda_nm);
+    if (!eps) return std::nullopt;
+    return std::sqrt(*eps);  // principal root: n > 0, k >= 0 where Im eps >= 0
 }
 
 }  // namespace kiln

@@ -22,4 +22,17 @@ namespace kiln {
 // W) at lambda_nm; nullopt for other metals.
 std::optional<std::complex<double>> LorentzDrudeIndex(std::string_view metal, double lambda_nm);
 
+// Factors on the model's parameters (spectral/metal_temperature.h varies them with temperature):
+// the Drude term's damping G_0 and strength f_0, the Lorentz dampings G_j and strengths f_j
+// (j >= 1).
+struct LorentzDrudeScaling {
+    double drudeDamping = 1, drudeStrength = 1, lorentzDamping = 1, lorentzStrength = 1;
+};
+
+// The permittivity eps (= (n + i k)^2) of `metal` at lambda_nm with the scaled parameters;
+// nullopt for metals the model lacks.
+std::optional<std::complex<double>> LorentzDrudePermittivity(std::string_view metal,
+                                                             double lambda_nm,
+                                                             const LorentzDrudeScaling& s = {});
+
 }  // namespace kiln
