@@ -25,8 +25,11 @@ _spec = importlib.util.spec_from_file_location(
 wilkie2011 = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(wilkie2011)
 
-SILVER = '"conductor" "spectrum eta" "metal-Ag-eta" "spectrum k" "metal-Ag-k"'
-GOLD = '"conductor" "spectrum eta" "metal-Au-eta" "spectrum k" "metal-Au-k"'
+# Silver and gold at room temperature, as the paper takes them (wilkie2011/generate.py)
+SILVER = ('"conductor" "spectrum eta" "metal-Ag-eta" "spectrum k" "metal-Ag-k"'
+          ' "float opticaltemperature" 293')
+GOLD = ('"conductor" "spectrum eta" "metal-Au-eta" "spectrum k" "metal-Au-k"'
+        ' "float opticaltemperature" 293')
 BLACK_QUARTZ = '"conductor" "spectrum eta" "glass-SiO2" "spectrum k" [360 0 830 0]'
 BLACK_GLASS = '"conductor" "spectrum eta" [360 1.5 830 1.5] "spectrum k" [360 0 830 0]'
 

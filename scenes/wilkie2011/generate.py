@@ -92,11 +92,15 @@ AttributeEnd
 
 
 # Smooth sphere materials of the paper's Figures 5-7 (optical constants: see
-# src/spectral/named_spectra_measured_data.cpp for sources).
+# src/spectral/named_spectra_measured_data.cpp for sources). Silver and gold at room
+# temperature, "float opticaltemperature" 293, as the paper takes them (its Section 2.3): kiln
+# would otherwise take their constants at each sphere's temperature.
 MATERIALS = {
-    "silver": '"conductor" "spectrum eta" "metal-Ag-eta" "spectrum k" "metal-Ag-k"',
+    "silver": '"conductor" "spectrum eta" "metal-Ag-eta" "spectrum k" "metal-Ag-k"'
+              ' "float opticaltemperature" 293',
     "copper": '"conductor" "spectrum eta" "metal-Cu-eta" "spectrum k" "metal-Cu-k"',
-    "gold": '"conductor" "spectrum eta" "metal-Au-eta" "spectrum k" "metal-Au-k"',
+    "gold": '"conductor" "spectrum eta" "metal-Au-eta" "spectrum k" "metal-Au-k"'
+            ' "float opticaltemperature" 293',
     "platinum": '"conductor" "spectrum eta" "metal-Pt-eta" "spectrum k" "metal-Pt-k"',
     "selenium": '"conductor" "spectrum eta" "metal-Se-eta" "spectrum k" "metal-Se-k"',
     # Black quartz: a smooth quartz (fused silica) surface over an opaque black body.

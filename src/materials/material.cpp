@@ -8,6 +8,7 @@
 #include "materials/subsurface_material.h"
 #include "spectral/named_spectra.h"
 #include "textures/basic_textures.h"
+#include "textures/metal_temperature_texture.h"
 #include "textures/texture_parameter_dictionary.h"
 
 namespace kiln {
@@ -37,6 +38,10 @@ const ShadingPerturbation& Material::Perturbation() const {
 
 bool Material::UsesFootprint() const {
     return Dispatch([](const auto* m) { return m->usesFootprint; });
+}
+
+bool Material::UsesTemperature() const {
+    return Dispatch([](const auto* m) { return m->usesTemperature; });
 }
 
 bool Material::MayPassLightStraightThrough() const {
@@ -89,13 +94,50 @@ Spectrum GetEta(const TextureParameterDictionary& params, const std::string& nam
     return eta ? *eta : Constant(def);
 }
 
-// A conductor's eta/k (Cu by default) or "reflectance"; SceneError when both are given.
+// The chemical symbol X of "spectrum eta" "metal-X-eta" with "spectrum k" "metal-X-k", when
+// X's optical constants follow temperature (spectral/metal_temperature.h); "" otherwise.
+std::string MetalWithTemperatureModel(const TextureParameterDictionary& params,
+                                      const std::string& prefix) {
+    std::string eta = params.GetSpectrumName(prefix + "eta"),
+                k = params.GetSpectrumName(prefix + "k");
+    if (!eta.starts_with("metal-") || !eta.ends_with("-eta")) return "";
+    std::string symbol = eta.substr(6, eta.size() - 10);
+    if (k != "metal-" + symbol + "-k" || !HasMetalTemperatureModel(symbol)) return "";
+    return symbol;
+}
+
+// A conductor's eta/k (Cu by default) or "reflectance"; SceneError when both are given. The
+// named metals with a temperature model become textures that follow the surface's temperature,
+// or the temperature "float opticaltemperature" fixes (kelvin; at or below room temperature:
+// the named tables) (for "conductor"; coatedconductor keeps the named tables, as its
+// emissivity tables hold the conductor's constants fixed).
 struct ConductorSpec {
     std::optional<SpectrumTexture> eta, k, reflectance;
 };
 ConductorSpec GetConductor(const TextureParameterDictionary& params, const std::string& prefix,
                            const FileLoc& loc, ObjectArena& arena) {
     ConductorSpec c;
+    if (std::string symbol = MetalWithTemperatureModel(params, prefix);
+        prefix.empty() && !symbol.empty() && !params.Has("reflectance")) {
+        const MetalTemperatureTable* table = MetalTemperatureTable::Find(symbol);
+        Float fixed = 0;
+        if (params.Has("opticaltemperature")) {
+            fixed = params.GetOneFloat("opticaltemperature", 0);
+            if (!(fixed >= 0 && fixed < 1e5f))
+                throw SceneError(params.Loc("opticaltemperature"),
+                                 "\"opticaltemperature\" must be kelvin from 0 to 1e5",
+                                 "opticaltemperature");
+        }
+        if (!params.Has("opticaltemperature") || fixed > table->RoomTemperature()) {
+            params.GetSpectrumTextureOrNull("eta", SpectrumType::Unbounded, arena);  // looked up
+            params.GetSpectrumTextureOrNull("k", SpectrumType::Unbounded, arena);
+            using Part = SpectrumMetalTemperatureTexture::Part;
+            c.eta = arena.New<SpectrumMetalTemperatureTexture>(table, Part::Eta, fixed);
+            c.k = arena.New<SpectrumMetalTemperatureTexture>(table, Part::K, fixed);
+            return c;
+        }
+        // At or below room temperature: the named tables, as constant textures (below)
+    }
     c.eta = params.GetSpectrumTextureOrNull(prefix + "eta", SpectrumType::Unbounded, arena);
     c.k = params.GetSpectrumTextureOrNull(prefix + "k", SpectrumType::Unbounded, arena);
     c.reflectance = params.GetSpectrumTextureOrNull("reflectance", SpectrumType::Albedo, arena);
@@ -122,6 +164,7 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
         m->perturbation = perturbation;
         Material material(m);
         m->usesFootprint = ComputeUsesFootprint(material);
+        m->usesTemperature = ComputeUsesTemperature(material);
         return material;
     };
     if (type.empty() || type == "none" || type == "interface")

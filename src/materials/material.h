@@ -59,6 +59,10 @@ class Material
     // Whether the BSDF depends on the screen-space footprint (a texture filters with it):
     // shading computes footprints only then (decided at creation).
     bool UsesFootprint() const;
+    // Whether the BSDF depends on the surface's temperature (a named metal's optical constants
+    // follow it, spectral/metal_temperature.h): shading evaluates the temperature for the
+    // textures only then (MaterialEvalContext::temperature; decided at creation).
+    bool UsesTemperature() const;
 
     // The material's bump or normal map (shading_perturbation.h); none for mix and interface.
     const ShadingPerturbation& Perturbation() const;

@@ -9,6 +9,7 @@ namespace kiln {
 // kiln's "temperature" and "emission", is the thermal module's: thermal/thermal_properties.h.)
 struct MaterialBase {
     bool usesFootprint = false;        // a texture filters or antialiases with the footprint
+    bool usesTemperature = false;      // a texture follows the surface's temperature
     ShadingPerturbation perturbation;  // bump or normal map (none for mix and interface)
 };
 

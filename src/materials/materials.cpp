@@ -4,6 +4,7 @@
 
 #include "base/rng.h"
 #include "textures/basic_textures.h"
+#include "textures/metal_temperature_texture.h"
 
 namespace kiln {
 
@@ -39,6 +40,17 @@ bool HasUniformParameters(const Material& material) {
     return uniform;
 }
 
+bool ComputeUsesTemperature(const Material& material) {
+    bool uses = false;
+    ForEachTexture(material, [&](const auto& t) {
+        using T = std::decay_t<decltype(t)>;
+        if constexpr (std::is_same_v<T, SpectrumTexture>)
+            if (const auto* m = t.template GetIf<SpectrumMetalTemperatureTexture>())
+                uses |= m->FollowsSurface();
+    });
+    return uses;
+}
+
 bool ComputeUsesFootprint(const Material& material) {
     bool uses = false;
     ForEachTexture(material, [&](const auto& t) { uses |= t.UsesFootprint(); });
@@ -57,6 +69,12 @@ void ConductorEtaK(const std::optional<SpectrumTexture>& eta,
                    const std::optional<SpectrumTexture>& reflectance, const TextureEvalContext& ctx,
                    const SampledWavelengths& lambda, SampledSpectrum* etas, SampledSpectrum* ks) {
     if (eta && k) {
+        // A named metal at temperature: both from one evaluation of its table
+        const auto* hot = eta->GetIf<SpectrumMetalTemperatureTexture>();
+        if (hot && k->Is<SpectrumMetalTemperatureTexture>()) {
+            hot->EvaluateBoth(ctx, lambda, etas, ks);
+            return;
+        }
         *etas = eta->Evaluate(ctx, lambda);
         *ks = k->Evaluate(ctx, lambda);
         return;

@@ -33,6 +33,8 @@ TrowbridgeReitzDistribution RoughnessDistribution(FloatTexture uRoughness, Float
 // Whether every texture of the material is a constant, so that it scatters alike at every point
 // (false for mix materials, which choose a component point by point).
 bool HasUniformParameters(const Material& material);
+// Whether a texture of the material follows the surface's temperature (not through mix).
+bool ComputeUsesTemperature(const Material& material);
 // Whether any texture of the material, or of a mix's components, uses the footprint.
 bool ComputeUsesFootprint(const Material& material);
 // A dielectric's relative IOR at the hero wavelength lambda[0]; terminates the secondary

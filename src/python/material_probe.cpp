@@ -15,6 +15,7 @@
 #include "spectral/color.h"
 #include "spectral/named_spectra.h"
 #include "spectral/planck.h"
+#include "spectral/spectral_range.h"
 #include "textures/texture_parameter_dictionary.h"
 #include "thermal/material_albedo.h"
 
@@ -48,18 +49,31 @@ class MaterialProbe {
         albedo = MaterialAlbedo::Create(*material, tables, arena);
     }
 
-    // The directional albedo A, and R_s = A + a1, R_p = A - a1, at theta (radians) and
-    // lambda (nm).
+    // The directional albedo A, and R_s = A + a1, R_p = A - a1, at theta (radians), lambda
+    // (nm) and the surface's temperature T (K; 0: none, for the materials whose optical
+    // constants follow it).
     struct Reflectance {
         double A, Rs, Rp;
     };
-    Reflectance At(double theta, double lambda_nm) const {
+    Reflectance At(double theta, double lambda_nm, double T) const {
         if (!(theta >= 0 && theta <= M_PI / 2))
             throw py::value_error("theta must be in [0, pi/2] radians (from the normal)");
-        if (!(lambda_nm >= Lambda_min && lambda_nm <= Lambda_max))
+        if (!(lambda_nm >= kSpectralRangeMin && lambda_nm <= kSpectralRangeMax))
             throw py::value_error("wavelength must be within kiln's " +
-                                  std::to_string(int(Lambda_min)) + "-" +
-                                  std::to_string(int(Lambda_max)) + " nm");
+                                  std::to_string(int(kSpectralRangeMin)) + "-" +
+                                  std::to_string(int(kSpectralRangeMax)) + " nm");
+        if (!(T >= 0 && std::isfinite(T)))
+            throw py::value_error("temperature must be a finite number of kelvin >= 0");
+        // The visible range's tables (as a render of the visible), else those over kiln's
+        // whole range (as a render with Film "thermal"), built when first needed
+        const bool visible = lambda_nm >= Lambda_min && lambda_nm <= Lambda_max;
+        if (!visible && !wideAlbedo) {
+            wideTables = std::make_unique<EmissivityTables>(
+                SpectralRange{kSpectralRangeMin, kSpectralRangeMax});
+            wideTables->polarized = tables.polarized;
+            wideAlbedo = MaterialAlbedo::Create(*material, *wideTables, arena);
+        }
+        const MaterialAlbedo* albedo = visible ? this->albedo : wideAlbedo;
         // cos theta = 0 would be a direction in the surface: kept just above it
         double mu = std::max(std::cos(theta), 1e-6);
         Vector3f wo(Float(std::sqrt(1 - mu * mu)), 0, Float(mu));
@@ -69,24 +83,27 @@ class MaterialProbe {
         ctx.dpdus = Vector3f(1, 0, 0);
         ctx.uv = Point2f(0.5f, 0.5f);
         ctx.wo = wo;
+        ctx.temperature = Float(T);
         SampledWavelengths lambda = SampledWavelengths::FromWavelength(Float(lambda_nm));
         BSDF bsdf = material->GetBSDF(ctx, lambda);
         double A = albedo->Evaluate(material, bsdf, wo, lambda)[0];
         double a1 = albedo->LinearPolarization(material, bsdf, wo).s1[0];
         return {A, A + a1, A - a1};
     }
-    double Albedo(double theta, double lambda) const { return At(theta, lambda).A; }
-    double AlbedoS(double theta, double lambda) const { return At(theta, lambda).Rs; }
-    double AlbedoP(double theta, double lambda) const { return At(theta, lambda).Rp; }
+    double Albedo(double theta, double lambda, double T) const { return At(theta, lambda, T).A; }
+    double AlbedoS(double theta, double lambda, double T) const { return At(theta, lambda, T).Rs; }
+    double AlbedoP(double theta, double lambda, double T) const { return At(theta, lambda, T).Rp; }
 
   private:
     Diagnostics diag;
-    ObjectArena arena;
+    mutable ObjectArena arena;
     NamedTextures textures;
     EmissivityTables tables;
     SceneEntity entity;
     const Material* material = nullptr;
     const MaterialAlbedo* albedo = nullptr;
+    mutable std::unique_ptr<EmissivityTables> wideTables;
+    mutable const MaterialAlbedo* wideAlbedo = nullptr;
 };
 
 }  // namespace

@@ -75,6 +75,8 @@ BSDF SceneShader::GetBSDF(SurfaceInteraction& si, SampledWavelengths& lambda) co
     const Material* material = si.material->ChooseMaterial(ctx);
     si.material = material;
     if (!material || material->IsInterface()) return {};
+    // Optical constants that follow the temperature: the one the surface emits at
+    if (si.thermal && material->UsesTemperature()) ctx.temperature = si.thermal->Temperature(si);
     // Bump or normal map: the shading frame the BSDF (and emission) is built in (only the
     // shading frame changes; the geometric normal stays)
     if (const ShadingPerturbation& p = material->Perturbation(); p.Any()) {

@@ -107,6 +107,7 @@ std::vector<int> ThermalEmitters::CreateLights(std::span<const Shape> shapes, co
             SurfaceInteraction si =
                 shapes.front().InteractionAt(ss->intr.p, 0, Vector3f(ss->intr.n));
             si.material = heat.material;
+            si.thermal = heat.emission;  // as a ray hit there reports it (the shader reads both)
             SampledWavelengths lambda = SampledWavelengths::FromWavelength(550);
             BSDF bsdf = shader.GetBSDF(si, lambda);
             uniform = ThermalAreaLight::Uniform{heat.emission->BandExitance(si, bsdf),

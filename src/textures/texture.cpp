@@ -7,6 +7,7 @@
 #include "textures/checkerboard_texture.h"
 #include "textures/float_texture_extension.h"
 #include "textures/image_texture.h"
+#include "textures/metal_temperature_texture.h"
 #include "textures/noise_textures.h"
 #include "textures/texture_parameter_dictionary.h"
 

@@ -38,6 +38,7 @@ class FloatDotsTexture;
 class FloatTextureExtension;
 class MarbleTexture;
 class SpectrumDotsTexture;
+class SpectrumMetalTemperatureTexture;
 class SpectrumConstantTexture;
 class SpectrumBilerpTexture;
 class SpectrumCheckerboardTexture;
@@ -76,7 +77,7 @@ class SpectrumTexture
                        const SpectrumCheckerboardTexture*, const SpectrumDirectionMixTexture*,
                        const SpectrumImageTexture*, const SpectrumMixTexture*,
                        const SpectrumScaledTexture*, const MarbleTexture*,
-                       const SpectrumDotsTexture*> {
+                       const SpectrumDotsTexture*, const SpectrumMetalTemperatureTexture*> {
   public:
     using ClosedSet::ClosedSet;
 

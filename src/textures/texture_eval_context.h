@@ -29,6 +29,9 @@ struct TextureEvalContext {
     const TriangleMesh* mesh = nullptr;  // triangle hits only (not owned)
     int triIndex = 0;
     std::array<Float, 3> b = {0, 0, 0};  // barycentrics of p in triangle triIndex
+    // The surface's temperature, kelvin, for materials whose textures depend on it
+    // (Material::UsesTemperature; set by the scene's shader); 0: none given
+    Float temperature = 0;
 
     TextureEvalContext() = default;
     TextureEvalContext(const SurfaceInteraction& si)

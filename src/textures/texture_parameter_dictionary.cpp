@@ -47,6 +47,9 @@ std::string TextureParameterDictionary::TypeOf(const std::string& name) const {
     return dict->TypeOf(name);
 }
 bool TextureParameterDictionary::Has(const std::string& name) const { return dict->Has(name); }
+std::string TextureParameterDictionary::GetSpectrumName(const std::string& name) const {
+    return dict->GetSpectrumName(name);
+}
 FileLoc TextureParameterDictionary::Loc(const std::string& name) const { return dict->Loc(name); }
 FileLoc TextureParameterDictionary::Loc(const std::string& name, const FileLoc& absent) const {
     return dict->Loc(name, absent);

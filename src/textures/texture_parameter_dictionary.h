@@ -37,6 +37,7 @@ class TextureParameterDictionary {
     std::vector<std::string> GetStringArray(const std::string& name) const;
     std::string TypeOf(const std::string& name) const;
     bool Has(const std::string& name) const;
+    std::string GetSpectrumName(const std::string& name) const;
     FileLoc Loc(const std::string& name) const;
     FileLoc Loc(const std::string& name, const FileLoc& absent) const;
     const RGBColorSpace* ColorSpace() const;

@@ -132,11 +132,13 @@ def test_set_temperature_of_a_texture_an_object_and_a_shape():
     scene.set_temperature("slab", 1500, kind="object")
     hotter = scene.render(spp=8, seed=5, emission="diffuse")
     assert hotter[FLOOR].mean() > 10 * warm[FLOOR].mean()
-    # The sphere (shape 0) at 0 K does not glow: only the floor's glow reflects in it
-    glowing = scene.render(spp=8, seed=5)
+    # The sphere (shape 0) at 0 K does not glow. (Emitting as a blackbody that reflects
+    # nothing, the sphere's pixels show its own glow alone: with Kirchhoff emission gold's
+    # reflectance changes with its temperature too, metal_temperature.h)
+    glowing = scene.render(spp=8, seed=5, emission="diffuse")
     scene.set_shape_temperature(0, 0)
-    dark = scene.render(spp=8, seed=5)
-    assert dark[SPHERE].mean() < glowing[SPHERE].mean()
+    dark = scene.render(spp=8, seed=5, emission="diffuse")
+    assert dark[SPHERE].mean() < 0.5 * glowing[SPHERE].mean()
 
 
 def test_frames_follow_the_animation_without_reloading():
@@ -201,6 +203,26 @@ def test_smooth_metal_emissivity_is_one_minus_fresnel(metal):
     # Arrays broadcast
     curve = kiln.emissivity("conductor", params, np.linspace(0, 1.5, 7), 600.0)
     assert curve.shape == (7,)
+
+
+def test_named_metals_follow_the_surface_temperature_into_the_infrared():
+    W = {"spectrum eta": "metal-W-eta", "spectrum k": "metal-W-k"}
+    # Tungsten at its melting point through a 653 nm pyrometer: measured 3208 +- 10 K
+    # (Cezairliyan and Miiller 1982); kiln's hot tungsten is fitted to other measurements
+    e = kiln.emissivity("conductor", W, 0.0, 653.0, temperature=3695.0)
+    T = kiln.radiance_temperature(653.0, e * kiln.planck(653.0, 3695.0))
+    assert abs(T - 3208) < 15
+    assert kiln.emissivity("conductor", W, 0.0, 653.0) > e + 0.08  # the room's constants
+    # Beyond the visible: polished gold at 10 um, and more emissive when hot (electrons
+    # scatter more)
+    gold = kiln.emissivity("conductor", GOLD, 0.0, 10000.0)
+    assert 0.008 < gold < 0.02
+    assert kiln.emissivity("conductor", GOLD, 0.0, 10000.0, temperature=600.0) > 1.3 * gold
+    # Arrays of temperatures broadcast
+    assert kiln.emissivity("conductor", W, 0.0, 653.0, temperature=[1000.0, 2000.0]).shape == (2,)
+    for bad in ({"wavelength": 25000.0}, {"wavelength": 600.0, "temperature": -1.0}):
+        with pytest.raises(ValueError):
+            kiln.emissivity("conductor", W, 0.0, **bad)
 
 
 def test_other_materials():
@@ -279,7 +301,7 @@ def test_bad_input_raises_located_errors(tmp_path):
     with pytest.raises(RuntimeError, match="no-such-folder"):
         scene.write(str(tmp_path / "no-such-folder" / "x.exr"))
     with pytest.raises(ValueError, match="wavelength"):
-        kiln.emissivity("conductor", GOLD, 0.0, 1200.0)
+        kiln.emissivity("conductor", GOLD, 0.0, 25000.0)
 
 
 def test_a_thermal_film_renders_radiance_and_temperature():

@@ -112,6 +112,12 @@ const Case kCases[] = {
     // An RGL measured BRDF (its albedo tabulated per file, thermal/measured_emissivity.h)
     {"measured, RGL file", "\"measured\" \"string filename\" \"" KILN_SOURCE_DIR
                            "/test/regression/pbrt_features/measured-ggx.bsdf\""},
+    // Tungsten's optical constants follow the temperature (spectral/metal_temperature.h; so do
+    // gold's and silver's above): at 1000 K partly the named table's, at 5000 K the melting
+    // point's; smooth, so the polarised cavity sees its polarised emission
+    {"tungsten, smooth, constants at temperature",
+     "\"conductor\" \"spectrum eta\" \"metal-W-eta\" \"spectrum k\" \"metal-W-k\" "
+     "\"float roughness\" 0"},
 };
 
 // Polarised transport: the cavity must also be unpolarised. Reflection from metals polarises
@@ -167,7 +173,8 @@ INSTANTIATE_TEST_SUITE_P(Cavities, Equilibrium,
 INSTANTIATE_TEST_SUITE_P(Cavities, PolarizedEquilibrium,
                          ::testing::ValuesIn(testing::AlternatingGeometry<Case>(
                              {kCases[0], kCases[1], kCases[2], kCases[3], kCases[4], kCases[5],
-                              kCases[6], kCases[8], kCases[9], kCases[11], kCases[12]})),
+                              kCases[6], kCases[8], kCases[9], kCases[11], kCases[12],
+                              kCases[std::size(kCases) - 1]})),
                          testing::CavityCaseName<Case>);
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "materials/bxdfs/fresnel.h"
 #include "materials/bxdfs/fresnel_mueller.h"
 #include "render_test_util.h"
+#include "spectral/metal_temperature.h"
 #include "spectral/named_spectra.h"
 #include "spectral/planck.h"
 
@@ -173,8 +174,11 @@ TEST(PolarizedRender, ThermalEmissionIsPolarisedAsFresnelSaysAndOrthogonalToRefl
     CheckEmissionPolarisation(
         "\"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\"",
         [](Float l) {
-            return std::complex<Float>((*GetNamedSpectrum("metal-Au-eta"))(l),
-                                       (*GetNamedSpectrum("metal-Au-k"))(l));
+            // Gold's constants at the disk's 1200 K (spectral/metal_temperature.h)
+            SampledSpectrum eta, k;
+            MetalTemperatureTable::Find("Au")->Evaluate(SampledWavelengths::FromWavelength(l), 1200,
+                                                        &eta, &k);
+            return std::complex<Float>(eta[0], k[0]);
         });
     // An opaque dielectric (black glass: Fresnel reflection of n = 1.5, the rest absorbed):
     // totally polarised reflection at Brewster's angle (56.3 degrees), weakly polarised glow

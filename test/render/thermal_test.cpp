@@ -11,6 +11,7 @@
 #include "lights/thermal_area_light.h"
 #include "render_test_util.h"
 #include "spectral/cie.h"
+#include "spectral/metal_temperature.h"
 #include "spectral/named_spectra.h"
 #include "spectral/planck.h"
 
@@ -144,13 +145,20 @@ XYZ GlowXYZ(const std::string& material) {
     return sum / Float(b.Area());
 }
 
-// XYZ of B(T) (1 - R_normal(lambda)) for a metal's named eta and k: the prediction.
+// XYZ of B(T) (1 - R_normal(lambda)) for a metal's named eta and k, at T for the metals whose
+// constants follow temperature (spectral/metal_temperature.h): the prediction.
 XYZ PredictedGlowXYZ(const std::string& metal, double T) {
     const Spectrum* eta = GetNamedSpectrum("metal-" + metal + "-eta");
     const Spectrum* k = GetNamedSpectrum("metal-" + metal + "-k");
+    const MetalTemperatureTable* hot = MetalTemperatureTable::Find(metal);
     double X = 0, Y = 0, Z = 0;
     for (int l = 360; l <= 830; ++l) {
         double n = (*eta)(Float(l)), kk = (*k)(Float(l));
+        if (hot) {
+            SampledSpectrum e, kt;
+            hot->Evaluate(SampledWavelengths::FromWavelength(Float(l)), Float(T), &e, &kt);
+            n = e[0], kk = kt[0];
+        }
         double R = ((n - 1) * (n - 1) + kk * kk) / ((n + 1) * (n + 1) + kk * kk);
         double L = planck_radiance(l, T) * (1 - R);
         X += L * CIE_X(Float(l));

@@ -303,6 +303,12 @@ std::string ParameterDictionary::GetTexture(const std::string& name) const {
     return ToOne<std::string>(*p, p->strings, 1, [](const std::string* v) { return *v; });
 }
 
+std::string ParameterDictionary::GetSpectrumName(const std::string& name) const {
+    const ParsedParameter* p = Find(name, {});
+    if (!p || p->type != "spectrum" || !p->floats.empty() || p->strings.size() != 1) return "";
+    return GetNamedSpectrum(p->strings[0]) ? p->strings[0] : "";
+}
+
 // Queries
 bool ParameterDictionary::Has(const std::string& name) const { return Find(name, {}) != nullptr; }
 

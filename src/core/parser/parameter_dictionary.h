@@ -74,6 +74,9 @@ class ParameterDictionary {
 
     // The value of a "texture name" parameter, "" if none.
     std::string GetTexture(const std::string& name) const;
+    // The name of the named spectrum ("metal-W-eta") a "spectrum" parameter gives, "" if it
+    // gives anything else or is absent (does not mark it as looked up).
+    std::string GetSpectrumName(const std::string& name) const;
 
     // Queries (do not mark parameters as looked up)
     bool Has(const std::string& name) const;

@@ -138,6 +138,7 @@ constexpr std::string_view kNames[] = {
     "ny",
     "nz",
     "octaves",
+    "opticaltemperature",
     "outside",
     "p0",
     "p1",

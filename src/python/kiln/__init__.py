@@ -87,28 +87,36 @@ def _probe(material, params):
     return _kiln._MaterialProbe(material, material_parameters(params))
 
 
-def directional_albedo(material, params=None, theta=0.0, wavelength=550.0, polarized=False):
+def directional_albedo(material, params=None, theta=0.0, wavelength=550.0, polarized=False,
+                       temperature=None):
     """The directional-hemispherical reflectance A(theta, wavelength) of a pbrt-v4 material
     ("diffuse", "conductor", "dielectric", "coateddiffuse", "coatedconductor", ...) made from
     `params`, as kiln's thermal module computes it (closed forms and load-time tables, no Monte
-    Carlo). theta in radians from the normal, wavelength in nm (360-830); both may be arrays.
-    polarized=True returns (R_s, R_p), the reflectance of light polarised perpendicular and
-    parallel to the plane of incidence (their mean is A)."""
+    Carlo). theta in radians from the normal, wavelength in nm (300-20000: the visible range's
+    tables within 360-830 nm, as a render of the visible, those of Film "thermal" beyond);
+    both may be arrays. temperature (K, may be an array): the surface's, for the conductors
+    whose named optical constants follow it (metal-W, metal-Au, metal-Ag); None: the named
+    tables. polarized=True returns (R_s, R_p), the reflectance of light polarised perpendicular
+    and parallel to the plane of incidence (their mean is A)."""
     p = _probe(material, params)
+    T = 0.0 if temperature is None else temperature
     if polarized:
-        return p.albedo_s(theta, wavelength), p.albedo_p(theta, wavelength)
-    return p.albedo(theta, wavelength)
+        return p.albedo_s(theta, wavelength, T), p.albedo_p(theta, wavelength, T)
+    return p.albedo(theta, wavelength, T)
 
 
-def emissivity(material, params=None, theta=0.0, wavelength=550.0, polarized=False):
-    """Kirchhoff's emissivity 1 - A(theta, wavelength) of the material (see directional_albedo):
-    a hot surface of it emits B(wavelength, T) times this. polarized=True returns (e_s, e_p) =
-    (1 - R_s, 1 - R_p): the emission polarised perpendicular and parallel to the plane of
-    emission, each relative to half the blackbody's."""
+def emissivity(material, params=None, theta=0.0, wavelength=550.0, polarized=False,
+               temperature=None):
+    """Kirchhoff's emissivity 1 - A(theta, wavelength) of the material (see directional_albedo,
+    also for temperature): a hot surface of it emits B(wavelength, T) times this.
+    polarized=True returns (e_s, e_p) = (1 - R_s, 1 - R_p): the emission polarised
+    perpendicular and parallel to the plane of emission, each relative to half the
+    blackbody's."""
     if polarized:
-        rs, rp = directional_albedo(material, params, theta, wavelength, polarized=True)
+        rs, rp = directional_albedo(material, params, theta, wavelength, polarized=True,
+                                    temperature=temperature)
         return 1 - rs, 1 - rp
-    return 1 - directional_albedo(material, params, theta, wavelength)
+    return 1 - directional_albedo(material, params, theta, wavelength, temperature=temperature)
 
 
 def planck(wavelength, temperature):
@@ -148,12 +156,13 @@ hues), then scaled so the largest channel is 1."""
 
 def glow_color(temperature, material=None, params=None, theta=0.0):
     """The colour of a surface glowing at `temperature` K, seen at theta (radians from the
-    normal): Planck's radiance times the material's emissivity (a blackbody when material is
-    None), integrated against the CIE 1931 observer over 360-830 nm at 1 nm."""
+    normal): Planck's radiance times the material's emissivity at that temperature (a blackbody
+    when material is None), integrated against the CIE 1931 observer over 360-830 nm at 1 nm."""
     lam = np.arange(_kiln._lambda_min, _kiln._lambda_max + 1.0)
     radiance = planck(lam, float(temperature))
     if material is not None:
-        radiance = radiance * emissivity(material, params, theta, lam)
+        radiance = radiance * emissivity(material, params, theta, lam,
+                                         temperature=float(temperature))
     cmf = _kiln._cie_xyz(lam)
     XYZ = (radiance[:, None] * cmf).sum(axis=0) / _kiln._cie_y_integral
     total = XYZ.sum()
