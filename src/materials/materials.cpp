@@ -35,7 +35,8 @@ bool HasUniformParameters(const Material& material) {
         if constexpr (std::is_same_v<T, FloatTexture>)
             uniform &= t.template Is<FloatConstantTexture>();
         else
-            uniform &= t.template Is<SpectrumConstantTexture>();
+            uniform &= t.template Is<SpectrumConstantTexture>() ||
+                       t.template Is<SpectrumMetalTemperatureTexture>();
     });
     return uniform;
 }

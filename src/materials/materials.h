@@ -31,7 +31,9 @@ TrowbridgeReitzDistribution RoughnessDistribution(FloatTexture uRoughness, Float
                                                   bool remapRoughness,
                                                   const TextureEvalContext& ctx);
 // Whether every texture of the material is a constant, so that it scatters alike at every point
-// (false for mix materials, which choose a component point by point).
+// of a uniform temperature (false for mix materials, which choose a component point by point;
+// a named metal's constants that follow the temperature count as constant: callers check that
+// the temperature is uniform).
 bool HasUniformParameters(const Material& material);
 // Whether a texture of the material follows the surface's temperature (not through mix).
 bool ComputeUsesTemperature(const Material& material);

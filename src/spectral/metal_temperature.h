@@ -63,6 +63,8 @@ class MetalTemperatureTable {
     // for none: the named tables' values).
     void Evaluate(const SampledWavelengths& lambda, Float T, SampledSpectrum* eta,
                   SampledSpectrum* k) const;
+    // The temperature nodes (K): room temperature to the melting point in 25 K steps
+    const TableAxis& Temperatures() const { return temperatures; }
     // Room temperature (K): the first temperature node.
     Float RoomTemperature() const { return temperatures.Node(0); }
     // The named tables (metal-X-eta, metal-X-k)

@@ -20,6 +20,7 @@ class SpectrumMetalTemperatureTexture {
         : table(table), part(part), fixedTemperature(fixedTemperature) {}
 
     bool UsesFootprint() const { return false; }
+    const MetalTemperatureTable& Table() const { return *table; }
     // Whether the value follows the surface's temperature (else it is fixed)
     bool FollowsSurface() const { return fixedTemperature == 0; }
     SampledSpectrum Evaluate(const TextureEvalContext& ctx,

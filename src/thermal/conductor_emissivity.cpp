@@ -10,6 +10,7 @@
 #include "materials/bxdfs/fresnel.h"
 #include "materials/materials.h"
 #include "textures/basic_textures.h"
+#include "textures/metal_temperature_texture.h"
 
 namespace kiln {
 
@@ -18,7 +19,20 @@ namespace {
 constexpr int H = ConductorAlbedoMoments::kNodes;
 
 bool IsConstant(const std::optional<SpectrumTexture>& t) {
-    return !t || t->Is<SpectrumConstantTexture>();
+    if (!t) return true;
+    // A named metal's constants at a temperature the material fixes
+    if (const auto* m = t->GetIf<SpectrumMetalTemperatureTexture>()) return !m->FollowsSurface();
+    return t->Is<SpectrumConstantTexture>();
+}
+
+// The named metal's table, when eta and k both follow the surface's temperature
+const MetalTemperatureTable* FollowsTemperature(const std::optional<SpectrumTexture>& eta,
+                                                const std::optional<SpectrumTexture>& k) {
+    if (!eta || !k) return nullptr;
+    const auto* e = eta->GetIf<SpectrumMetalTemperatureTexture>();
+    const auto* kk = k->GetIf<SpectrumMetalTemperatureTexture>();
+    if (!e || !kk || !e->FollowsSurface() || !kk->FollowsSurface()) return nullptr;
+    return &e->Table();
 }
 
 // Isotropic alpha standing in for an anisotropic distribution (textured anisotropic roughness
@@ -207,34 +221,43 @@ ConductorEmissivity::ConductorEmissivity(const ConductorMaterial& m, EmissivityT
 
     // Fresnel factors F(mu_j, x) over x, factorised
     bool etaK = m.Eta() && m.K();
+    const MetalTemperatureTable* hot = FollowsTemperature(m.Eta(), m.K());
     if (etaK ? IsConstant(m.Eta()) && IsConstant(m.K()) : IsConstant(m.Reflectance()))
         fresnelAxis = FresnelAxis::Wavelength;
+    else if (hot)
+        fresnelAxis = FresnelAxis::WavelengthTemperature;
     else if (!etaK)
         fresnelAxis = FresnelAxis::Reflectance;
     else
         return;  // textured eta and k: F per sample
     fresnelNodes =
-        fresnelAxis == FresnelAxis::Wavelength ? t.FineWavelengths() : ReflectanceNodes();
-    const int nx = fresnelNodes.Size();
-    std::vector<double> f(size_t(H) * nx);
-    for (int x = 0; x < nx; ++x) {
+        fresnelAxis == FresnelAxis::Reflectance ? ReflectanceNodes() : t.FineWavelengths();
+    if (hot) fresnelTemperatures = TableAxis(hot->Temperatures().Nodes());
+    const int nx = fresnelNodes.Size(), nT = hot ? fresnelTemperatures.Size() : 1;
+    const int columns = nx * nT;  // [T][x]
+    std::vector<double> f(size_t(H) * columns);
+    tbb::parallel_for(0, columns, [&](int column) {
+        const int x = column % nx;
         std::complex<Float> eta;
-        if (fresnelAxis == FresnelAxis::Wavelength) {
-            SampledWavelengths lambda = SampledWavelengths::FromWavelength(fresnelNodes.Node(x));
-            ConductorBxDF b = m.GetBxDF(MaterialEvalContext(), lambda);
-            eta = {b.Eta()[0], b.K()[0]};
-        } else {
+        if (fresnelAxis == FresnelAxis::Reflectance) {
             Float r = fresnelNodes.Node(x);
             eta = {1, 2 * std::sqrt(r) / std::sqrt(1 - r)};
+        } else {
+            SampledWavelengths lambda = SampledWavelengths::FromWavelength(fresnelNodes.Node(x));
+            MaterialEvalContext ctx;
+            if (hot) ctx.temperature = fresnelTemperatures.Node(column / nx);
+            ConductorBxDF b = m.GetBxDF(ctx, lambda);
+            eta = {b.Eta()[0], b.K()[0]};
         }
         for (int j = 0; j < H; ++j)
-            f[size_t(j) * nx + x] = FrComplex(Float(ConductorAlbedoMoments::Node(j)), eta);
-    }
-    LowRankFactors factors = FactorLowRank(f, H, nx, 1e-5);
+            f[size_t(j) * columns + column] =
+                FrComplex(Float(ConductorAlbedoMoments::Node(j)), eta);
+    });
+    LowRankFactors factors = FactorLowRank(f, H, columns, 1e-5);
     const int rank = factors.rank;
     stride = (rank + 3) / 4 * 4;  // rows padded with zeros to whole groups of four
-    basis.assign(size_t(nx) * stride, 0.f);
-    for (int x = 0; x < nx; ++x)
+    basis.assign(size_t(columns) * stride, 0.f);
+    for (int x = 0; x < columns; ++x)
         for (int r = 0; r < rank; ++r)
             basis[size_t(x) * stride + r] = float(factors.v[size_t(x) * rank + r]);
     const std::vector<float>& w = moments ? *moments : weights;
@@ -247,7 +270,9 @@ ConductorEmissivity::ConductorEmissivity(const ConductorMaterial& m, EmissivityT
             projected[c * stride + r] = float(g);
         }
     if (!moments) {
-        weights.clear();  // only the projections are needed
+        // Only the projections are needed (but for Fresnel factors per sample, without a
+        // temperature)
+        if (fresnelAxis != FresnelAxis::WavelengthTemperature) weights.clear();
         return;
     }
     // Textured roughness: the projections resampled (cubic in log alpha, as Cells interpolates
@@ -274,7 +299,7 @@ ConductorEmissivity::ConductorEmissivity(const ConductorMaterial& m, EmissivityT
 }
 
 int ConductorEmissivity::Cells(const TrowbridgeReitzDistribution& d, Vector3f wo, int cell[8],
-                               float weight[8]) const {
+                               float weight[8], bool projections) const {
     auto [ci, ct] = tables->Cosines().Locate(std::min<Float>(1, AbsCosTheta(wo)));
     int n = 0;
     if (uniformAlpha) {
@@ -286,7 +311,7 @@ int ConductorEmissivity::Cells(const TrowbridgeReitzDistribution& d, Vector3f wo
                 cell[n] = (ci + c) * azimuths.n + node[a];
                 weight[n++] = (c ? ct : 1 - ct) * nodeWeight[a];
             }
-    } else if (fineLogAlphas.Size() > 0) {
+    } else if (projections && fineLogAlphas.Size() > 0) {
         // The resampled projections: linear in log alpha
         const int na = fineLogAlphas.Size();
         auto [ai, at] = fineLogAlphas.Locate(std::log(std::max(EquivalentAlpha(d), 1e-4f)));
@@ -310,15 +335,18 @@ int ConductorEmissivity::Cells(const TrowbridgeReitzDistribution& d, Vector3f wo
 }
 
 SampledSpectrum ConductorEmissivity::Albedo(const ConductorBxDF& bxdf, Vector3f wo,
-                                            const SampledWavelengths& lambda) const {
+                                            const SampledWavelengths& lambda,
+                                            Float temperature) const {
     const TrowbridgeReitzDistribution& distrib = bxdf.Distribution();
     if (distrib.EffectivelySmooth())
         return FrComplex(std::min<Float>(1, AbsCosTheta(wo)), bxdf.Eta(), bxdf.K());
     int cell[8];
     float cellWeight[8];
-    const int cells = Cells(distrib, wo, cell, cellWeight);
     SampledSpectrum A;
-    if (fresnelAxis != FresnelAxis::PerSample) {
+    const bool perSample = fresnelAxis == FresnelAxis::PerSample ||
+                           (fresnelAxis == FresnelAxis::WavelengthTemperature && temperature < 0);
+    if (!perSample) {
+        const int cells = Cells(distrib, wo, cell, cellWeight, true);
         Float x[NSpectrumSamples];
         for (int i = 0; i < NSpectrumSamples; ++i) {
             x[i] = lambda[i];
@@ -327,28 +355,39 @@ SampledSpectrum ConductorEmissivity::Albedo(const ConductorBxDF& bxdf, Vector3f 
                 x[i] = k2 / (4 + k2);
             }
         }
-        FactorisedLookup l{projected.data(), cell,         cellWeight, cells,
-                           basis.data(),     fresnelNodes, x};
-        switch (stride) {
-            case 4:
-                return l.Apply<4>();
-            case 8:
-                return l.Apply<8>();
-            case 12:
-                return l.Apply<12>();
-            case 16:
-                return l.Apply<16>();
-            case 20:
-                return l.Apply<20>();
-            case 24:
-                return l.Apply<24>();
-            case 28:
-                return l.Apply<28>();
-            default:
-                return l.Apply<32>();
-        }
+        auto lookup = [&](const float* slice) {
+            FactorisedLookup l{projected.data(), cell, cellWeight, cells, slice, fresnelNodes, x};
+            switch (stride) {
+                case 4:
+                    return l.Apply<4>();
+                case 8:
+                    return l.Apply<8>();
+                case 12:
+                    return l.Apply<12>();
+                case 16:
+                    return l.Apply<16>();
+                case 20:
+                    return l.Apply<20>();
+                case 24:
+                    return l.Apply<24>();
+                case 28:
+                    return l.Apply<28>();
+                default:
+                    return l.Apply<32>();
+            }
+        };
+        if (fresnelAxis != FresnelAxis::WavelengthTemperature) return lookup(basis.data());
+        // Linear between the two temperature nodes around the surface's
+        auto [j, tT] = fresnelTemperatures.Locate(temperature);
+        const size_t slice = size_t(fresnelNodes.Size()) * stride;
+        SampledSpectrum a0 = lookup(basis.data() + size_t(j) * slice);
+        if (tT == 0) return a0;
+        SampledSpectrum a1 = lookup(basis.data() + size_t(fresnelTemperatures.Next(j)) * slice);
+        return (1 - tT) * a0 + tT * a1;
     }
-    // Textured eta and k: W_j at wo, F(mu_j) per wavelength
+    // Textured eta and k: W_j at wo, F(mu_j) per wavelength (the cells of the moment weights,
+    // where the projections have an axis of their own)
+    const int cells = Cells(distrib, wo, cell, cellWeight, false);
     const std::vector<float>& table = moments ? *moments : weights;
     float w[H] = {};
     for (int k = 0; k < cells; ++k)
@@ -381,7 +420,7 @@ ReflectedPolarization ConductorEmissivity::LinearPolarization(const ConductorBxD
     if (!polarizationWeights.empty()) {
         int cell[8];
         float cellWeight[8];
-        const int cells = Cells(d, wo, cell, cellWeight);
+        const int cells = Cells(d, wo, cell, cellWeight, false);
         for (int k = 0; k < cells; ++k) {
             const float* row = &polarizationWeights[size_t(cell[k]) * 2 * H];
             for (int j = 0; j < H; ++j) {

@@ -11,7 +11,9 @@
 //
 // The Fresnel factors F(mu_j, x) vary along one parameter x: the wavelength (constant optical
 // constants or reflectance; 1 nm nodes), or the reflectance itself (textured "reflectance":
-// eta = 1 and k from r, as pbrt-v4). Tabulated over x, they are factorised,
+// eta = 1 and k from r, as pbrt-v4), or the wavelength and the temperature (named metals whose
+// constants follow the surface's temperature, spectral/metal_temperature.h: the table's 25 K
+// temperature nodes, linear between two of them). Tabulated over x, they are factorised,
 // F(mu_j, x) ~ sum_r U_jr V_r(x), to the rank that reproduces them to 1e-5
 // (base/low_rank.h; rank 7 for pbrt's named metals, up to 13 over reflectance), so a
 // lookup interpolates rank-many values over the cosine and roughness once, and rank-many per
@@ -40,9 +42,13 @@ class ConductorEmissivity {
   public:
     ConductorEmissivity(const ConductorMaterial& material, EmissivityTables& tables);
 
-    // Albedo of bxdf (built by the material) seen from wo (local shading frame).
-    SampledSpectrum Albedo(const ConductorBxDF& bxdf, Vector3f wo,
-                           const SampledWavelengths& lambda) const;
+    // Albedo of bxdf (built by the material) seen from wo (local shading frame). temperature:
+    // the one the bxdf's constants were taken at (K; 0: none), for NeedsTemperature(); < 0:
+    // unknown (the Fresnel factors are then evaluated from the bxdf's constants).
+    SampledSpectrum Albedo(const ConductorBxDF& bxdf, Vector3f wo, const SampledWavelengths& lambda,
+                           Float temperature = -1) const;
+    // Whether the tables are over temperature too (the material's constants follow it).
+    bool NeedsTemperature() const { return fresnelAxis == FresnelAxis::WavelengthTemperature; }
 
     // The polarisation of what bxdf reflects towards wo (local frame). Smooth conductors:
     // S1 = (Rs - Rp) / 2, S2 = 0. Rough ones: sums over the Fresnel nodes of weights
@@ -77,10 +83,12 @@ class ConductorEmissivity {
 
   private:
     // What the Fresnel factors vary with across the material's surface points and wavelengths
-    enum class FresnelAxis { Wavelength, Reflectance, PerSample };
-    // Table cells (cosine x azimuth or cosine x alpha) and weights around wo; returns the count
-    int Cells(const TrowbridgeReitzDistribution& d, Vector3f wo, int cell[8],
-              float weight[8]) const;
+    enum class FresnelAxis { Wavelength, WavelengthTemperature, Reflectance, PerSample };
+    // Table cells (cosine x azimuth or cosine x alpha) and weights around wo; returns the count.
+    // projections: of the projected rows (which textured roughness resamples to a finer alpha
+    // axis), else of the moment weights.
+    int Cells(const TrowbridgeReitzDistribution& d, Vector3f wo, int cell[8], float weight[8],
+              bool projections) const;
 
     const EmissivityTables* tables;
     FresnelAxis fresnelAxis = FresnelAxis::PerSample;
@@ -101,6 +109,7 @@ class ConductorEmissivity {
     // of `stride` floats (the rank rounded up to a multiple of four, zero-padded)
     int stride = 0;
     TableAxis fresnelNodes;
+    TableAxis fresnelTemperatures;  // WavelengthTemperature: basis is [T][x][r]
     std::vector<float> basis, projected;
     // Textured roughness with factorised Fresnel factors: projected is [cos][fine alpha][r]
     // over this log-alpha axis (four times finer than the shared table's)

@@ -6,6 +6,7 @@
 #include "materials/materials.h"
 #include "materials/subsurface_material.h"
 #include "textures/basic_textures.h"
+#include "thermal/thermal_emission.h"
 
 namespace kiln {
 
@@ -84,7 +85,12 @@ SampledSpectrum MaterialAlbedo::EvaluateLocal(const Material* material, const BS
             return SampledSpectrum(1.f);
         } else if constexpr (std::is_same_v<K, ConductorEmissivity>) {
             const ConductorBxDF* c = bxdf.GetIf<ConductorBxDF>();
-            return c ? k.Albedo(*c, wo, lambda) : SampledSpectrum(1.f);
+            if (!c) return SampledSpectrum(1.f);
+            // The temperature the scene's shader built the BSDF at (none without si: then the
+            // Fresnel factors come from the BSDF's constants)
+            Float T = -1;
+            if (k.NeedsTemperature() && si) T = si->thermal ? si->thermal->Temperature(*si) : 0;
+            return k.Albedo(*c, wo, lambda, T);
         } else if constexpr (std::is_same_v<K, CoatedDiffuseEmissivity>) {
             const CoatedDiffuseBxDF* c = bxdf.GetIf<CoatedDiffuseBxDF>();
             return c ? k.Albedo(*c, wo, lambda) : SampledSpectrum(1.f);

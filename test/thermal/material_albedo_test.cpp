@@ -137,6 +137,43 @@ TEST(EmissivityTest, RoughConductorTablesMatchTheBSDF) {
     }
 }
 
+// Named metals whose constants follow the surface's temperature: the tables over wavelength and
+// temperature (25 K nodes) against the Fresnel factors of the BSDF's own constants, at random
+// directions, wavelengths over the visible and temperatures up to the melting point
+TEST(EmissivityTest, ConductorTablesFollowTheTemperature) {
+    Fixture f;
+    RNG rng(26);
+    for (const char* metal : {"W", "Au", "Ag"})
+        for (bool textured : {false, true}) {
+            std::string s = metal;
+            ParsedParameterVector p = {Strings("spectrum", "eta", {"metal-" + s + "-eta"}),
+                                       Strings("spectrum", "k", {"metal-" + s + "-k"})};
+            p.push_back(textured ? Texture("roughness", "ramp") : Float1("roughness", 0.3f));
+            const Material* m = f.Make("conductor", p);
+            ASSERT_TRUE(m->UsesTemperature());
+            ConductorEmissivity e(*m->GetIf<ConductorMaterial>(), f.tables);
+            ASSERT_TRUE(e.NeedsTemperature());
+            double worst = 0;
+            for (int i = 0; i < 400; ++i) {
+                Float T = 300 + 3400 * rng.UniformFloat();
+                Vector3f wo = SampleUniformHemisphere({rng.UniformFloat(), rng.UniformFloat()});
+                MaterialEvalContext ctx = Context({rng.UniformFloat(), rng.UniformFloat()}, wo);
+                ctx.temperature = T;
+                SampledWavelengths lambda = SampledWavelengths::SampleVisible(rng.UniformFloat());
+                BSDF bsdf = m->GetBSDF(ctx, lambda);
+                const ConductorBxDF& c = *bsdf.GetBxDF().GetIf<ConductorBxDF>();
+                Vector3f local = bsdf.RenderToLocal(wo);
+                SampledSpectrum tabulated = e.Albedo(c, local, lambda, T);
+                SampledSpectrum exact = e.Albedo(c, local, lambda, -1);
+                for (int j = 0; j < NSpectrumSamples; ++j)
+                    worst = std::max(worst, double(std::abs(tabulated[j] - exact[j])));
+            }
+            std::printf("%s, %s roughness: largest albedo difference %.2e\n", metal,
+                        textured ? "textured" : "uniform", worst);
+            EXPECT_LT(worst, 1e-3) << metal;  // as the tables of constant metals
+        }
+}
+
 TEST(EmissivityTest, CoatedTablesMatchTheBSDF) {
     Fixture f;
     struct Case {
