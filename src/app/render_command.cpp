@@ -264,6 +264,13 @@ int RenderFrame(const CommandLineOptions& options, LoadedScene& loaded, std::opt
                                           ? std::vector<std::string>{scene->job->film->Filename()}
                                           : outputPatterns)
         outputs.push_back(frame ? FrameFilename(pattern, *frame) : pattern);
+    // What the film writes is known only now: -o outputs in formats this film cannot write
+    // (a thermal film's PFM) fail before rendering
+    for (const std::string& out : outputPatterns.empty() ? std::vector<std::string>{} : outputs)
+        if (std::string why = scene->job->film->OutputFormatProblem(out); !why.empty()) {
+            std::cerr << "kiln: " << out << ": " << why << "; nothing rendered\n";
+            return 2;
+        }
     // The scene file's own output is known only now: checked before rendering, as -o was
     // before parsing
     if (outputPatterns.empty()) {

@@ -110,5 +110,20 @@ TEST_F(OutputCheckCLI, TheScenesOwnOutputIsCheckedBeforeRendering) {
     EXPECT_NE(log.find("nothing rendered"), std::string::npos) << log;
 }
 
+// A format the film cannot write (a thermal film's PFM) is known once the scene is read: it
+// fails before rendering, and no output is written
+TEST_F(OutputCheckCLI, OutputsTheFilmCannotWriteFailBeforeRendering) {
+    std::string text = testing::ReadAll(scene);
+    text.replace(text.find("Film \"rgb\""), 10, "Film \"thermal\" \"string sensor\" \"mwir\"");
+    std::ofstream(scene) << text;
+    EXPECT_EQ(Run(Q(scene) + " -o t.exr -o t.pfm"), 2);
+    EXPECT_NE(log.find("t.pfm: the thermal film writes EXR"), std::string::npos) << log;
+    EXPECT_NE(log.find("nothing rendered"), std::string::npos) << log;
+    EXPECT_EQ(Lines(log), 1) << log;
+    EXPECT_FALSE(fs::exists(dir / "t.exr"));
+    EXPECT_EQ(Run(Q(scene) + " -o t.exr -o t.png"), 0) << log;
+    EXPECT_TRUE(fs::exists(dir / "t.exr") && fs::exists(dir / "t.png"));
+}
+
 }  // namespace
 }  // namespace kiln

@@ -26,13 +26,8 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
     o.filename = params.GetOneString("filename", "pbrt.exr");
     if (type == "thermal") {
         o.thermal = ThermalSensor::Create(params, loc);
-        const std::string ext = FileExtension(o.filename);
-        if (ext == "pfm" || ext == "hdr")
-            throw SceneError(params.Loc("filename", loc),
-                             "the thermal film writes EXR (L and T) or a picture of T (PNG, "
-                             "JPEG, ...), not ." +
-                                 ext,
-                             o.filename);
+        if (std::string why = ThermalOutputFormatProblem(o.filename); !why.empty())
+            throw SceneError(params.Loc("filename", loc), why, o.filename);
         for (const char* name : {"stokes", "writeaovs"})
             if (params.GetOneBool(name, false))
                 throw SceneError(params.Loc(name),
@@ -433,9 +428,8 @@ void RGBFilm::WriteImage(const std::string& filename, ImageMetadata metadata,
     metadata.strings["kiln:view"] = viewOverride.empty() ? opts.view : viewOverride;
     if (opts.thermal && ext != "exr") {
         // The picture of the temperature channel, with its scale bar
-        if (ext == "pfm" || ext == "hdr")
-            throw std::runtime_error(
-                filename + ": the thermal film writes EXR or a picture format, not ." + ext);
+        if (std::string why = ThermalOutputFormatProblem(filename); !why.empty())
+            throw std::runtime_error(filename + ": " + why);
         ThermalPicture(image, image.ChannelIndex("T")).Write(filename, metadata);
         return;
     }
@@ -477,6 +471,12 @@ void RGBFilm::WriteImage(const std::string& filename, ImageMetadata metadata,
         settings.view = viewOverride.empty() ? opts.view : viewOverride;
         ToDisplayImage(image, *colorSpace, settings).Write(filename, metadata);
     }
+}
+
+std::string RGBFilm::ThermalOutputFormatProblem(const std::string& filename) {
+    const std::string ext = FileExtension(filename);
+    if (ext != "pfm" && ext != "hdr") return "";
+    return "the thermal film writes EXR (L and T) or a picture of T (PNG, JPEG, ...), not ." + ext;
 }
 
 void RGBFilm::Clear() {

@@ -173,6 +173,12 @@ class RGBFilm {
     // band.
     SpectralRange Range() const { return opts.thermal ? opts.thermal->Band() : SpectralRange{}; }
     const ThermalSensor* Thermal() const { return opts.thermal ? &*opts.thermal : nullptr; }
+    // Why this film cannot write an image named filename, "" if it can (a thermal film writes
+    // EXR or a picture of T, not PFM or HDR); checked before rendering (kiln -o).
+    std::string OutputFormatProblem(const std::string& filename) const {
+        return opts.thermal ? ThermalOutputFormatProblem(filename) : std::string();
+    }
+    static std::string ThermalOutputFormatProblem(const std::string& filename);
 
     // The wavelengths of one path sample, drawn by the distribution scene creation chose
     // (the visible density unless set).

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/image/image.h"
+#include "spectral/color.h"
 
 namespace kiln {
 
