@@ -12,6 +12,18 @@ namespace kiln {
 
 WavelengthDistribution CreateWavelengthDistribution(const Scene& scene, Float* visibleShare) {
     *visibleShare = 1;
+    // A sensor's spectral response: in proportion to it, over 4096 bins of its band
+    if (const ThermalSensor* sensor = scene.job->film->Thermal(); sensor && sensor->Response()) {
+        constexpr int kResponseBins = 4096;
+        const SpectralRange band = scene.spectralRange;
+        const double width = (double(band.max) - band.min) / kResponseBins;
+        std::vector<Float> means(kResponseBins);
+        for (int i = 0; i < kResponseBins; ++i)
+            means[size_t(i)] = Float(
+                sensor->Response()->Integral(band.min + i * width, band.min + (i + 1) * width) /
+                width);
+        return WavelengthDistribution::Tabulated(means, band.min, band.max);
+    }
     if (!scene.spectralRange.IsVisible())
         return WavelengthDistribution::Band(scene.spectralRange.min, scene.spectralRange.max);
     if (!scene.integrator.emissionWavelengths) return {};

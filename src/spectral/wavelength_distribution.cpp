@@ -52,6 +52,15 @@ WavelengthDistribution WavelengthDistribution::Band(Float lambdaMin, Float lambd
     return d;
 }
 
+WavelengthDistribution WavelengthDistribution::Tabulated(std::span<const Float> binMeans,
+                                                         Float lambdaMin, Float lambdaMax) {
+    WavelengthDistribution d;
+    d.table = PiecewiseConstant1D(binMeans, lambdaMin, lambdaMax);
+    d.tableMin = lambdaMin;
+    d.binWidth = (lambdaMax - lambdaMin) / Float(binMeans.size());
+    return d;
+}
+
 SampledWavelengths WavelengthDistribution::Sample(Float u) const {
     if (bandMax > bandMin) return SampledWavelengths::SampleUniform(u, bandMin, bandMax);
     if (IsVisible()) return SampledWavelengths::SampleVisible(u);
@@ -62,8 +71,8 @@ SampledWavelengths WavelengthDistribution::Sample(Float u) const {
         int bin = 0;
         Float l = table.Sample(up, &pdf[size_t(i)], &bin);
         // Inside the bin whose density it carries (rounding may reach the next bin's start)
-        Float start = Lambda_min + Float(bin);
-        Float end = start + 1;
+        Float start = tableMin + Float(bin) * binWidth;
+        Float end = tableMin + Float(bin + 1) * binWidth;
         lambda[size_t(i)] = l < start ? start : (l < end ? l : std::nextafter(end, start));
     }
     return SampledWavelengths::FromSamples(lambda, pdf);
@@ -73,8 +82,8 @@ Float WavelengthDistribution::PDF(Float lambda) const {
     if (bandMax > bandMin)
         return lambda >= bandMin && lambda <= bandMax ? 1 / (bandMax - bandMin) : 0;
     if (IsVisible()) return SampledWavelengths::VisibleWavelengthPDF(lambda);
-    if (!(lambda >= Lambda_min && lambda < Lambda_max)) return 0;
-    size_t i = std::min(size_t(lambda - Lambda_min), table.Size() - 1);
+    if (!(lambda >= tableMin && lambda < tableMin + binWidth * Float(table.Size()))) return 0;
+    size_t i = std::min(size_t((lambda - tableMin) / binWidth), table.Size() - 1);
     return table.Func(i) / table.Integral();
 }
 

@@ -10,7 +10,9 @@
 // from the same table, so estimates stay unbiased whatever the spectrum).
 //
 // Beyond the visible (a film whose sensor covers another band: Film "thermal"), uniform over
-// that band, stratified as SampledWavelengths::SampleUniform.
+// that band, stratified as SampledWavelengths::SampleUniform; for a sensor with a spectral
+// response, in proportion to the response (its mean over each of 4096 bins across the band,
+// piecewise constant: the density is positive wherever the response is).
 #pragma once
 
 #include <span>
@@ -31,6 +33,10 @@ class WavelengthDistribution {
     WavelengthDistribution(std::span<const Float> emitted, Float visibleShare);
     // Uniform over [lambdaMin, lambdaMax] (nm, lambdaMin < lambdaMax).
     static WavelengthDistribution Band(Float lambdaMin, Float lambdaMax);
+    // In proportion to binMeans, the means of a non-negative function over equal bins spanning
+    // [lambdaMin, lambdaMax] (some positive).
+    static WavelengthDistribution Tabulated(std::span<const Float> binMeans, Float lambdaMin,
+                                            Float lambdaMax);
     static constexpr int kBins = int(Lambda_max - Lambda_min);
 
     // Whether this is the visible density (no table, no band).
@@ -42,7 +48,8 @@ class WavelengthDistribution {
 
   private:
     PiecewiseConstant1D table;
-    Float bandMin = 0, bandMax = 0;  // a band (Band) when bandMax > bandMin
+    Float tableMin = Lambda_min, binWidth = 1;  // the table's bins
+    Float bandMin = 0, bandMax = 0;             // a band (Band) when bandMax > bandMin
 };
 
 }  // namespace kiln

@@ -113,6 +113,36 @@ INSTANTIATE_TEST_SUITE_P(
                std::to_string(int(info.param.lambdaMax)) + "nm";
     });
 
+// A sensor with a spectral response (a triangle over 7-13 um peaking at 10 um): the cavity reads
+// the response-weighted Planck integral and its temperature; wavelengths are drawn in
+// proportion to the response
+TEST(ThermalFilm, ResponseSensorReadsTheCavity) {
+    const double T = 300;
+    testing::RenderedScene r = testing::RenderText(
+        Cavity("Film \"thermal\" \"string sensor\" \"response\" \"spectrum response\" "
+               "[7000 0 10000 1 13000 0]",
+               T, 256));
+    ExpectOnlyTheRGBWarning(r);
+    const ThermalSensor& sensor = *r.scene->job->film->Thermal();
+    ASSERT_TRUE(sensor.Response());
+    EXPECT_EQ(r.scene->spectralRange.min, 7000);
+    EXPECT_EQ(r.scene->spectralRange.max, 13000);
+    // Drawn in proportion to the response: density 0 at the band's ends, 1/3000 per nm at 10 um
+    const WavelengthDistribution& d = r.scene->wavelengths;
+    EXPECT_NEAR(d.PDF(10000), 1 / 3000.0, 1e-6);
+    EXPECT_NEAR(d.PDF(8500), 0.5 / 3000.0, 1e-6);
+    EXPECT_EQ(d.PDF(6000), 0);
+    const double Lb = sensor.Response()->BandRadiance(T);
+    RunningStats L = ChannelStats(r, "L"), Tr = ChannelStats(r, "T");
+    std::printf(
+        "response 7-13 um at %.0f K: L %.5f of the Planck integral (se %.5f), T %.3f K "
+        "(se %.3f K)\n",
+        T, L.Mean() / Lb, L.StandardError() / Lb, Tr.Mean(), Tr.StandardError());
+    EXPECT_LT(4 * L.StandardError() / Lb, 0.005);
+    EXPECT_NEAR(L.Mean() / Lb, 1, 4 * L.StandardError() / Lb + 1e-3);
+    EXPECT_NEAR(Tr.Mean(), T, 4 * Tr.StandardError() + 0.05);
+}
+
 // A grey plate (emissivity 0.4: diffuse reflectance 0.6) at 500 K inside a closed room at 300 K:
 // it sends 0.4 Lb(500) of its own and 0.6 Lb(300) of the room's. An LWIR camera set to
 // emissivity 0.4 and reflected temperature 300 K reads 500 K; set to emissivity 1 it reads the

@@ -7,6 +7,7 @@
 #include "core/parser/diagnostics.h"
 #include "core/parser/parameter_dictionary.h"
 #include "spectral/planck.h"
+#include "spectral/spectrum.h"
 
 namespace kiln {
 
@@ -62,11 +63,31 @@ ThermalSensor ThermalSensor::Create(const ParameterDictionary& params, const Fil
                              "the thermal film's band must satisfy 300 <= \"lambdamin\" < "
                              "\"lambdamax\" <= 20000 (nm)",
                              "lambdamin");
+    } else if (s.name == "response") {
+        std::optional<Spectrum> r =
+            params.GetOneSpectrum("response", std::nullopt, SpectrumType::Illuminant);
+        if (!r)
+            throw SceneError(sensorLoc,
+                             "the \"response\" sensor needs its \"spectrum response\" "
+                             "(wavelength-value pairs in nm, or a spectrum file)",
+                             s.name);
+        const PiecewiseLinearSpectrum* table = r->GetIf<PiecewiseLinearSpectrum>();
+        if (!table)
+            throw SceneError(params.Loc("response", loc),
+                             "the sensor's \"response\" must be wavelength-value pairs (nm) or a "
+                             "spectrum file",
+                             "response");
+        try {
+            s.response.emplace(table->Lambdas(), table->Values());
+        } catch (const std::invalid_argument& e) {
+            throw SceneError(params.Loc("response", loc), e.what(), "response");
+        }
+        s.band = s.response->Support();
     } else if (!named) {
         throw SceneError(sensorLoc,
                          "unknown thermal sensor \"" + s.name +
-                             "\" (expected \"lwir\", \"mwir\", \"swir\", \"nir\", \"pyrometer\" "
-                             "or \"band\")",
+                             "\" (expected \"lwir\", \"mwir\", \"swir\", \"nir\", \"pyrometer\", "
+                             "\"band\" or \"response\")",
                          s.name);
     }
     s.emissivity = params.GetOneFloat("emissivity", 1);
@@ -83,21 +104,34 @@ ThermalSensor ThermalSensor::Create(const ParameterDictionary& params, const Fil
     return s;
 }
 
+double ThermalSensor::BlackbodyRadiance(double T) const {
+    return response ? response->BandRadiance(T) : planck_band_radiance(band.min, band.max, T);
+}
+
 double ThermalSensor::ApparentTemperature(double L) const {
     double reflected = emissivity < 1 && reflectedTemperature > 0
-                           ? (1 - double(emissivity)) *
-                                 planck_band_radiance(band.min, band.max, reflectedTemperature)
+                           ? (1 - double(emissivity)) * BlackbodyRadiance(reflectedTemperature)
                            : 0;
     double own = (L - reflected) / double(emissivity);
     if (!(own > 0)) return 0;
-    return band_radiance_temperature(band.min, band.max, own);
+    return response ? response->Temperature(own)
+                    : band_radiance_temperature(band.min, band.max, own);
 }
 
 std::string ThermalSensor::Settings() const {
     char text[128];
     std::snprintf(text, sizeof(text), "%.9g %.9g %.9g %.9g", double(band.min), double(band.max),
                   double(emissivity), double(reflectedTemperature));
-    return text;
+    std::string s = text;
+    if (response) {
+        s += " response";
+        for (size_t i = 0; i < response->Lambdas().size(); ++i) {
+            std::snprintf(text, sizeof(text), " %.9g %.9g", double(response->Lambdas()[i]),
+                          double(response->Values()[i]));
+            s += text;
+        }
+    }
+    return s;
 }
 
 std::optional<ThermalSensor> ThermalSensor::FromSettings(std::string_view settings) {
@@ -110,6 +144,23 @@ std::optional<ThermalSensor> ThermalSensor::FromSettings(std::string_view settin
           s.reflectedTemperature >= 0 && s.reflectedTemperature <= 1e6f))
         return std::nullopt;
     s.name = "band";
+    std::string word;
+    if (in >> word) {
+        if (word != "response") return std::nullopt;
+        std::vector<float> numbers, lambdas, values;
+        float x;
+        while (in >> x) numbers.push_back(x);
+        if (!in.eof() || numbers.size() % 2 != 0) return std::nullopt;
+        for (size_t i = 0; i < numbers.size(); i += 2)
+            lambdas.push_back(numbers[i]), values.push_back(numbers[i + 1]);
+        try {
+            s.response.emplace(lambdas, values);
+        } catch (const std::invalid_argument&) {
+            return std::nullopt;
+        }
+        if (!(s.response->Support() == s.band)) return std::nullopt;
+        s.name = "response";
+    }
     return s;
 }
 

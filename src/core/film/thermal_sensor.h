@@ -10,18 +10,24 @@
 //   "pyrometer"  "float wavelength" (nm, required) and "float bandwidth" (nm, default 10): the
 //                band of that width centred there
 //   "band"       "float lambdamin" and "float lambdamax" (nm)
+//   "response"   "spectrum response": a relative spectral response (wavelength-value pairs in nm,
+//                or a spectrum file), piecewise linear, 0 beyond its points
+//                (sensor_response.h); the band is where it is not 0. The pixel measures
+//                integral R L dlambda and the reported temperature inverts integral R B.
 // Every band lies within 300 nm - 20 um.
 //   "float emissivity" (0 < e <= 1, default 1) and "float reflectedtemperature" (K, default 0):
 //   the camera's emissivity setting and reflected apparent temperature, as thermal cameras
 //   offer them. The reported temperature T solves
 //     e Lb(T) + (1 - e) Lb(T_refl) = L,  Lb(T) = integral over the band of B(lambda, T),
-//   so a surface of emissivity e surrounded by matter at T_refl reads its own temperature.
+//   so a surface of emissivity e surrounded by matter at T_refl reads its own temperature
+//   (Lb weighted by the response for "response").
 #pragma once
 
 #include <optional>
 #include <string>
 #include <string_view>
 
+#include "core/film/sensor_response.h"
 #include "core/parser/file_loc.h"
 #include "spectral/sampled_spectrum.h"
 #include "spectral/spectral_range.h"
@@ -40,17 +46,26 @@ class ThermalSensor {
     Float Emissivity() const { return emissivity; }
     Float ReflectedTemperature() const { return reflectedTemperature; }
 
+    // The response ("response" sensors; nullptr for a flat band)
+    const SensorResponse* Response() const { return response ? &*response : nullptr; }
+
     // One path sample's estimate of the in-band radiance, W m^-2 sr^-1: the mean over the
-    // wavelengths the path still carries of L / pdf.
+    // wavelengths the path still carries of R L / pdf (R = 1 for a flat band).
     Float InBandRadiance(const SampledSpectrum& L, const SampledWavelengths& lambda) const {
-        return SafeDiv(L, lambda.PDF()).Average();
+        if (!response) return SafeDiv(L, lambda.PDF()).Average();
+        SampledSpectrum r;
+        for (int i = 0; i < NSpectrumSamples; ++i) r[i] = (*response)(lambda[i]);
+        return SafeDiv(L * r, lambda.PDF()).Average();
     }
+    // What a blackbody at T gives, Lb(T), W m^-2 sr^-1.
+    double BlackbodyRadiance(double T) const;
     // The temperature the sensor reports for in-band radiance L, K (0 where L is not more than
     // what the reflected temperature accounts for).
     double ApparentTemperature(double L) const;
 
     // What ApparentTemperature depends on, as text for an image's metadata ("kiln:thermal":
-    // band ends in nm, emissivity, reflected temperature), and back (nullopt if malformed):
+    // band ends in nm, emissivity, reflected temperature, then "response" and the response's
+    // wavelength-value pairs when it has one), and back (nullopt if malformed):
     // kiln merge computes the temperature of merged radiance with it.
     std::string Settings() const;
     static std::optional<ThermalSensor> FromSettings(std::string_view settings);
@@ -59,6 +74,7 @@ class ThermalSensor {
     std::string name;
     SpectralRange band;
     Float emissivity = 1, reflectedTemperature = 0;
+    std::optional<SensorResponse> response;
 };
 
 }  // namespace kiln

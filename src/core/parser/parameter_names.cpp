@@ -159,6 +159,7 @@ constexpr std::string_view kNames[] = {
     "regularize",
     "remaproughness",
     "rendercoordsys",
+    "response",
     "retardance",
     "roughness",
     "samplebsdf",
