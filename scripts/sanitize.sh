@@ -7,12 +7,12 @@
 # `statistical` (the release stage, scripts/test.sh, runs those). A crashing input is kept in
 # build-sanitize/fuzz/TARGET/; add it to test/fuzz/corpus/TARGET once fixed, so it stays a
 # regression input.
-#   scripts/sanitize.sh [SECONDS]    (default 10 per target; 0 skips fuzzing)
+#   scripts/sanitize.sh [SECONDS]    (default 6 per target; 0 skips fuzzing)
 # Fuzzing for hours: build-sanitize/fuzz_parser -max_total_time=3600 DIR test/fuzz/corpus/parser
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${KILN_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
-seconds="${1:-10}"
+seconds="${1:-6}"
 
 # clang and its runtimes (libFuzzer, sanitizers) come from Debian's packages
 source "$root/scripts/packages.sh"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds kiln and its tests (installing missing packages first) and runs the whole suite; then
 # the sanitizer stage (scripts/sanitize.sh: a clang build with AddressSanitizer and
-# UndefinedBehaviorSanitizer, each libFuzzer target fuzzed for KILN_FUZZ_SECONDS, default 10,
+# UndefinedBehaviorSanitizer, each libFuzzer target fuzzed for KILN_FUZZ_SECONDS, default 6,
 # and the suite again under the sanitizers but for the Monte Carlo checks labelled
 # `statistical`). KILN_QUICK=1 skips that stage.
 set -euo pipefail
@@ -14,5 +14,5 @@ start=$SECONDS
     ctest --output-on-failure -j "$(nproc 2>/dev/null || echo 2)" --timeout 900)
 echo "kiln: release tests: $((SECONDS - start)) s" >&2
 if [ "${KILN_QUICK:-0}" != 1 ]; then
-    "$root/scripts/sanitize.sh" "${KILN_FUZZ_SECONDS:-10}"
+    "$root/scripts/sanitize.sh" "${KILN_FUZZ_SECONDS:-6}"
 fi
