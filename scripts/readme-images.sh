@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Renders the small images of README.md and the user guide (docs/guide/) into docs/images/.
-# Usage: scripts/readme-images.sh [spp] [all|thermal|paper|polarization|media]   (default 64 all)
+# Usage: scripts/readme-images.sh [spp] [all|thermal|paper|polarization|media|infrared]
+#        (default 64 all)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 kiln="${KILN_BUILD_DIR:-$root/build}/kiln"
@@ -84,6 +85,11 @@ render "$media/lava-smoke.pbrt" "$tmp/lava-smoke.png"
 oiiotool "$tmp/lava-smoke.png" --resize 66.67% -o "$out/lava-smoke.png"
 fi
 [ "$mode" = media ] && exit 0
+# Infrared (docs/guide/infrared.md): a 653 nm pyrometer's temperatures of hot tungsten wires
+if [ "$mode" = all ] || [ "$mode" = infrared ]; then
+render "$root/scenes/infrared/pyrometer-filament.pbrt" "$out/pyrometer-filament.png"
+fi
+[ "$mode" = infrared ] && exit 0
 # Temperature fields (scenes/thermal/): gradient, per-vertex lava, heat map, cooling blade
 for scene in heated-bar lava heat-map; do
     render "$root/scenes/thermal/$scene.pbrt" "$tmp/$scene.png"

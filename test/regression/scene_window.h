@@ -35,7 +35,8 @@ inline std::unique_ptr<Scene> LoadScene(const std::string& file, const RenderOpt
 }
 
 // A window (NDC) of a loaded scene at spp samples per pixel with the given seed: a new render
-// job of the same scene (Scene::SetJob), nothing re-parsed or rebuilt.
+// job of the same scene (Scene::SetJob), nothing re-parsed or rebuilt. R, G and B, or a thermal
+// film's in-band radiance L (its temperature T is not linear in the samples).
 inline Image RenderWindow(Scene& scene, const Bounds2f& window, int spp, int seed) {
     Diagnostics diag(nullptr);
     RenderOptions job;
@@ -46,7 +47,9 @@ inline Image RenderWindow(Scene& scene, const Bounds2f& window, int spp, int see
     RenderSettings settings;
     Render(scene, settings);
     EXPECT_EQ(scene.job->film->NonFiniteSampleCount(), 0);
-    return scene.job->film->GetImage(nullptr).SelectChannels({"R", "G", "B"});
+    Image image = scene.job->film->GetImage(nullptr);
+    return scene.job->film->Thermal() ? image.SelectChannels({"L"})
+                                      : image.SelectChannels({"R", "G", "B"});
 }
 
 inline bool IsBlack(const Image& image) {
