@@ -10,25 +10,12 @@
 
 namespace kiln {
 
-WavelengthDistribution CreateWavelengthDistribution(const Scene& scene, Float* visibleShare) {
-    *visibleShare = 1;
-    // A sensor's spectral response: in proportion to it, over 4096 bins of its band
-    if (const ThermalSensor* sensor = scene.job->film->Thermal(); sensor && sensor->Response()) {
-        constexpr int kResponseBins = 4096;
-        const SpectralRange band = scene.spectralRange;
-        const double width = (double(band.max) - band.min) / kResponseBins;
-        std::vector<Float> means(kResponseBins);
-        for (int i = 0; i < kResponseBins; ++i)
-            means[size_t(i)] = Float(
-                sensor->Response()->Integral(band.min + i * width, band.min + (i + 1) * width) /
-                width);
-        return WavelengthDistribution::Tabulated(means, band.min, band.max);
-    }
-    if (!scene.spectralRange.IsVisible())
-        return WavelengthDistribution::Band(scene.spectralRange.min, scene.spectralRange.max);
-    if (!scene.integrator.emissionWavelengths) return {};
-    // Temperatures in bins 1 % wide, with their power over 360-830 nm (W), so that a mesh of a
-    // million hot triangles costs one pass over its lights
+namespace {
+
+// The temperatures of the scene's hot matter in bins 1 % wide, with their power over the
+// scene's band (W), so that a mesh of a million hot triangles costs one pass over its lights;
+// *others: whether anything else emits or an emissive medium's temperature varies
+std::map<int, double> HotPowerByTemperature(const Scene& scene, bool* others) {
     std::map<int, double> binPower;
     auto binOf = [](double T) { return int(std::lround(std::log(T) / std::log(1.01))); };
     // What a hostile scene can make of a temperature or power (0, negative, Inf, NaN): skipped
@@ -36,14 +23,14 @@ WavelengthDistribution CreateWavelengthDistribution(const Scene& scene, Float* v
         return T > 0 && T < 1e30 && power > 0 && std::isfinite(power);
     };
     double lightPower = 0;
-    bool others = false;
+    *others = false;
     for (const Light& light : scene.lights) {
         if (std::optional<Light::ThermalOutput> t = light.Thermal()) {
             if (!usable(t->temperature, t->bandPower)) continue;
             binPower[binOf(t->temperature)] += t->bandPower;
             lightPower += t->bandPower;
         } else {
-            others = true;
+            *others = true;
         }
     }
     if (scene.features.volumetric) {
@@ -53,7 +40,7 @@ WavelengthDistribution CreateWavelengthDistribution(const Scene& scene, Float* v
             if (std::optional<Float> T = m.EmissionTemperature()) {
                 if (usable(*T, 1)) mediumTemperatures.push_back(*T);
             } else {
-                others = true;
+                *others = true;
             }
         }
         double each = mediumTemperatures.empty()
@@ -62,11 +49,68 @@ WavelengthDistribution CreateWavelengthDistribution(const Scene& scene, Float* v
                                 double(mediumTemperatures.size());
         for (Float T : mediumTemperatures) binPower[binOf(T)] += each;
     }
+    return binPower;
+}
+
+double BinTemperature(int bin) { return std::pow(1.01, bin); }
+
+// A thermal film's band: share of the sensor's response (flat, or "response") plus the rest in
+// proportion to the response times the spectrum the hot matter radiates, each temperature's
+// part normalised to its power; over 4096 equal bins of the band
+WavelengthDistribution ThermalBandDistribution(const Scene& scene, Float* visibleShare) {
+    constexpr int kBins = 4096;
+    const SpectralRange band = scene.spectralRange;
+    const SensorResponse* response = scene.job->film->Thermal()->Response();
+    const double width = (double(band.max) - band.min) / kBins;
+    std::vector<double> R(kBins), centre(kBins);
+    double sumR = 0;
+    for (int i = 0; i < kBins; ++i) {
+        const double a = band.min + i * width;
+        centre[size_t(i)] = a + width / 2;
+        R[size_t(i)] = response ? response->Integral(a, a + width) / width : 1;
+        sumR += R[size_t(i)];
+    }
+    bool others = false;
+    std::map<int, double> binPower;
+    if (scene.integrator.emissionWavelengths) binPower = HotPowerByTemperature(scene, &others);
+    std::vector<double> hot(kBins, 0.0);
+    double hotSum = 0;
+    for (const auto& [bin, power] : binPower) {
+        std::vector<double> part(kBins);
+        double partSum = 0;
+        for (int i = 0; i < kBins; ++i) {
+            part[size_t(i)] =
+                R[size_t(i)] * planck_radiance(centre[size_t(i)], BinTemperature(bin));
+            partSum += part[size_t(i)];
+        }
+        if (!(partSum > 0) || !std::isfinite(partSum)) continue;
+        for (int i = 0; i < kBins; ++i) hot[size_t(i)] += power * part[size_t(i)] / partSum;
+        hotSum += power;
+    }
+    const double share = hotSum > 0 ? (others ? 0.75 : 0.5) : 1;
+    std::vector<Float> f(kBins);
+    for (int i = 0; i < kBins; ++i)
+        f[size_t(i)] = Float(share * R[size_t(i)] / sumR +
+                             (hotSum > 0 ? (1 - share) * hot[size_t(i)] / hotSum : 0));
+    *visibleShare = Float(share);
+    return WavelengthDistribution::Tabulated(f, band.min, band.max);
+}
+
+}  // namespace
+
+WavelengthDistribution CreateWavelengthDistribution(const Scene& scene, Float* visibleShare) {
+    *visibleShare = 1;
+    if (scene.job->film->Thermal()) return ThermalBandDistribution(scene, visibleShare);
+    if (!scene.spectralRange.IsVisible())
+        return WavelengthDistribution::Band(scene.spectralRange.min, scene.spectralRange.max);
+    if (!scene.integrator.emissionWavelengths) return {};
+    bool others = false;
+    std::map<int, double> binPower = HotPowerByTemperature(scene, &others);
     if (binPower.empty()) return {};
     // Each bin's spectrum scaled to its power over 360-830 nm
     std::vector<Float> emitted(WavelengthDistribution::kBins, 0.f);
     for (const auto& [bin, power] : binPower) {
-        double T = std::pow(1.01, bin), visible = planck_band_radiance(Lambda_min, Lambda_max, T);
+        double T = BinTemperature(bin), visible = planck_band_radiance(Lambda_min, Lambda_max, T);
         if (!(power > 0) || !(visible > 0)) continue;
         for (int i = 0; i < WavelengthDistribution::kBins; ++i)
             emitted[size_t(i)] += Float(power * planck_radiance(Lambda_min + i + 0.5, T) / visible);

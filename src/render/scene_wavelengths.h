@@ -17,12 +17,16 @@ struct SceneDescription;
 void WarnOfColoursBeyondTheVisible(const SceneDescription& desc, const SpectralRange& range,
                                    Diagnostics& diag);
 
-// Uniform over the scene's wavelengths when they are not the visible ones (Film "thermal").
-// The visible density when nothing in the scene glows thermally, or Integrator
+// A thermal film (Film "thermal", its band): over 4096 equal bins of the band, a share of the
+// sensor's response (uniform for a flat band) plus the rest in proportion to the response
+// times the blackbody spectra of the hot matter below, each weighted by its power over the band
+// (share 0.5, 0.75 with other emitters; 1 when nothing glows thermally or with
+// "wavelengthsampling" "visible").
+// Otherwise the visible density when nothing in the scene glows thermally, or Integrator
 // "wavelengthsampling" "visible". Otherwise the mixture of WavelengthDistribution, its hot part
 // the sum of blackbody spectra of:
-//   thermal lights (hot surfaces), each with its power over 360-830 nm at its power-weighted
-//   mean temperature;
+//   thermal lights (hot surfaces), each with its power over the scene's wavelengths at its
+//   power-weighted mean temperature;
 //   thermal media (volpath only), at MediumEmission::RepresentativeTemperature, together
 //   weighing as much as the thermal lights (1 W each without them).
 // The visible share is 0.5, or 0.75 when other lights or non-thermal emissive media exist

@@ -10,9 +10,10 @@
 // from the same table, so estimates stay unbiased whatever the spectrum).
 //
 // Beyond the visible (a film whose sensor covers another band: Film "thermal"), uniform over
-// that band, stratified as SampledWavelengths::SampleUniform; for a sensor with a spectral
-// response, in proportion to the response (its mean over each of 4096 bins across the band,
-// piecewise constant: the density is positive wherever the response is).
+// that band, stratified as SampledWavelengths::SampleUniform, or a table over equal bins of it
+// (Tabulated: piecewise constant, sampled and evaluated from the same table; scene creation
+// makes it from the sensor's response and what the hot matter radiates,
+// render/scene_wavelengths.h).
 #pragma once
 
 #include <span>
