@@ -18,9 +18,11 @@
 // measured temperatures and beyond the last one along the least-squares slope through all of
 // them (the free-electron damping, which dominates the change, follows the resistivity, linear
 // in T for these metals), up to the melting point (gold 1337 K, silver 1235 K), held above.
-// Beyond the measurements' longest wavelength the change is the Lorentz-Drude model's for a
-// Drude damping scaled to match the measured change of Im eps over their last 15 % of
-// wavelength; over that last 15 % the two go over linearly.
+// Beyond the measurements' longest wavelength the change is the Lorentz-Drude model's with its
+// Drude damping and strength scaled so that the model's change matches the measured one (Im
+// and Re eps, means over the measurements' last 15 % of wavelength; the factors found at each
+// measured temperature and the melting point, linear in T between); over that last 15 % the
+// two go over linearly.
 //
 // Each metal's change is tabulated on first use (as the named spectra are built) over 300 nm -
 // 20 um (1 % geometric steps) and temperature (25 K steps): eps(lambda, T) = w(T)
