@@ -17,6 +17,7 @@ namespace kiln {
 namespace {
 
 constexpr int H = ConductorAlbedoMoments::kNodes;
+constexpr size_t kTemperatureStride = 4;
 
 bool IsConstant(const std::optional<SpectrumTexture>& t) {
     if (!t) return true;
@@ -232,7 +233,15 @@ ConductorEmissivity::ConductorEmissivity(const ConductorMaterial& m, EmissivityT
         return;  // textured eta and k: F per sample
     fresnelNodes =
         fresnelAxis == FresnelAxis::Reflectance ? ReflectanceNodes() : t.FineWavelengths();
-    if (hot) fresnelTemperatures = TableAxis(hot->Temperatures().Nodes());
+    if (hot) {
+        // Every fourth of the metal's 25 K nodes (100 K; the last one too): the Fresnel factors
+        // change slowly with temperature
+        const std::vector<float>& all = hot->Temperatures().Nodes();
+        std::vector<float> nodes;
+        for (size_t i = 0; i < all.size(); i += kTemperatureStride) nodes.push_back(all[i]);
+        if (nodes.back() != all.back()) nodes.push_back(all.back());
+        fresnelTemperatures = TableAxis(std::move(nodes));
+    }
     const int nx = fresnelNodes.Size(), nT = hot ? fresnelTemperatures.Size() : 1;
     const int columns = nx * nT;  // [T][x]
     std::vector<double> f(size_t(H) * columns);

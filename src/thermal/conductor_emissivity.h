@@ -12,8 +12,9 @@
 // The Fresnel factors F(mu_j, x) vary along one parameter x: the wavelength (constant optical
 // constants or reflectance; 1 nm nodes), or the reflectance itself (textured "reflectance":
 // eta = 1 and k from r, as pbrt-v4), or the wavelength and the temperature (named metals whose
-// constants follow the surface's temperature, spectral/metal_temperature.h: the table's 25 K
-// temperature nodes, linear between two of them). Tabulated over x, they are factorised,
+// constants follow the surface's temperature, spectral/metal_temperature.h: every fourth of its
+// table's 25 K nodes, 100 K apart, linear between two of them; at most 5.7e-4 in albedo from
+// the Fresnel factors of the constants themselves). Tabulated over x, they are factorised,
 // F(mu_j, x) ~ sum_r U_jr V_r(x), to the rank that reproduces them to 1e-5
 // (base/low_rank.h; rank 7 for pbrt's named metals, up to 13 over reflectance), so a
 // lookup interpolates rank-many values over the cosine and roughness once, and rank-many per

@@ -138,7 +138,7 @@ TEST(EmissivityTest, RoughConductorTablesMatchTheBSDF) {
 }
 
 // Named metals whose constants follow the surface's temperature: the tables over wavelength and
-// temperature (25 K nodes) against the Fresnel factors of the BSDF's own constants, at random
+// temperature (100 K nodes) against the Fresnel factors of the BSDF's own constants, at random
 // directions, wavelengths over the visible and temperatures up to the melting point
 TEST(EmissivityTest, ConductorTablesFollowTheTemperature) {
     Fixture f;
