@@ -12,11 +12,15 @@ Scene::~Scene() = default;
 
 std::string SceneFeatures::ToString() const {
     auto onOff = [](bool b) { return b ? "on" : "off"; };
-    char wavelengths[96] = "by the visible density";
+    const char* base =
+        sensorResponseWavelengths ? "the thermal sensor's response" : "the visible density";
+    char wavelengths[128];
     if (wavelengthVisibleShare < 1)
         std::snprintf(wavelengths, sizeof(wavelengths),
-                      "%.0f %% by the visible density, the rest by hot matter's spectrum",
-                      100 * wavelengthVisibleShare);
+                      "%.0f %% by %s, the rest by hot matter's %s", 100 * wavelengthVisibleShare,
+                      base, sensorResponseWavelengths ? "spectrum times it" : "spectrum");
+    else
+        std::snprintf(wavelengths, sizeof(wavelengths), "by %s", base);
     char buf[1200];
     std::snprintf(
         buf, sizeof(buf),

@@ -114,9 +114,11 @@ struct SceneFeatures {
     // Emissive media whose emission volpath integrates exactly along ray segments
     // (Scene::exactEmissionMedia)
     int exactEmissionMedia = 0;
-    // The share of the visible density in the film's wavelength distribution (1: visible
-    // density alone; less where hot matter's spectrum makes the rest: scene_wavelengths.h)
+    // The share of the visible density (a thermal film: of its sensor's response) in the film's
+    // wavelength distribution (1: it alone; less where hot matter's spectrum makes the rest:
+    // scene_wavelengths.h)
     Float wavelengthVisibleShare = 1;
+    bool sensorResponseWavelengths = false;  // a thermal film: the base density is its response
     double mediumSamplerSeconds = 0;
     bool volumetric = false, genericVolumes = false;
     bool unnormalizedLightSamples = false;  // Light::HasUnnormalizedSamples (pbrt-v4 compatibility)

@@ -637,6 +637,7 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
     scene.features.exactEmissionMedia =
         int(std::count(scene.exactEmissionMedia.begin(), scene.exactEmissionMedia.end(), 1));
     scene.wavelengths = CreateWavelengthDistribution(scene, &scene.features.wavelengthVisibleShare);
+    scene.features.sensorResponseWavelengths = scene.job->film->Thermal() != nullptr;
     scene.job->film->SetWavelengths(scene.wavelengths);
     DecideBidirectional(scene, desc, diag);
     if (!scene.integrator.volumetric && !scene.media.empty())
