@@ -72,7 +72,7 @@ const NamedSpectra& AllNamedSpectra() {
     static const NamedSpectra all = [] {
         NamedSpectra n;
         for (auto tables : {PbrtNamedSpectrumTables(), CameraNamedSpectrumTables(),
-                            MeasuredNamedSpectrumTables()})
+                            MeasuredNamedSpectrumTables(), GlassNamedSpectrumTables()})
             for (const NamedSpectrumTable& t : tables) {
                 n.names.push_back(t.name);
                 std::optional<std::vector<float>> extended =

@@ -23,5 +23,7 @@ std::span<const NamedSpectrumTable> PbrtNamedSpectrumTables();
 std::span<const NamedSpectrumTable> CameraNamedSpectrumTables();
 // kiln's own named spectra of measured optical constants (named_spectra_measured_data.cpp).
 std::span<const NamedSpectrumTable> MeasuredNamedSpectrumTables();
+// kiln's named glass spectra through the infrared, n and k (named_spectra_glass_data.cpp).
+std::span<const NamedSpectrumTable> GlassNamedSpectrumTables();
 
 }  // namespace kiln
