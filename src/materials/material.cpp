@@ -58,6 +58,11 @@ std::optional<Spectrum> Material::InteriorEta() const {
     return std::nullopt;
 }
 
+std::optional<Spectrum> Material::InteriorExtinction() const {
+    if (const DielectricMaterial* d = GetIf<DielectricMaterial>()) return d->K();
+    return std::nullopt;
+}
+
 // Material creation
 namespace {
 
@@ -205,7 +210,15 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
     if (type == "dielectric") {
         Spectrum eta = GetEta(params, "eta", 1.5f);
         auto [u, v] = GetRoughness(params, "", arena);
-        return make(arena.New<DielectricMaterial>(eta, u, v, remap()));
+        // kiln: an absorbing dielectric (glass through the infrared)
+        std::optional<Spectrum> k;
+        if (params.Has("k")) {
+            k = GetEta(params, "k", 0);
+            if (k->Is<ConstantSpectrum>() && !(k->MaxValue() >= 0 && k->MaxValue() < 1e10f))
+                throw SceneError(params.Loc("k"), "\"k\" must be 0 or more and finite", "k");
+            if (k->Is<ConstantSpectrum>() && k->MaxValue() == 0) k.reset();
+        }
+        return make(arena.New<DielectricMaterial>(eta, u, v, remap(), k));
     }
     if (type == "thindielectric")
         return make(arena.New<ThinDielectricMaterial>(GetEta(params, "eta", 1.5f)));

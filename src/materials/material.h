@@ -71,6 +71,10 @@ class Material
     // every other material (thin dielectrics enclose nothing; conductors and coatings are
     // opaque; a mix has no single one).
     std::optional<Spectrum> InteriorEta() const;
+    // The extinction coefficient k of that body (a dielectric's "spectrum k", dimensionless;
+    // nullopt without one): it absorbs 4 pi k / lambda per unit length, which scene creation
+    // gives a body without an interior medium of its own as one (render/scene_media.h).
+    std::optional<Spectrum> InteriorExtinction() const;
 
     // Whether some point of the surface may pass light straight through (BxDFFlags::
     // StraightThrough: a non-dispersive thindielectric, alone or in a mix): the integrators

@@ -115,8 +115,14 @@ ConductorBxDF ConductorMaterial::GetBxDF(const MaterialEvalContext& ctx,
 DielectricBxDF DielectricMaterial::GetBxDF(const MaterialEvalContext& ctx,
                                            SampledWavelengths& lambda) const {
     Float sampledEta = SampleEta(eta, lambda);
-    return DielectricBxDF(sampledEta,
-                          RoughnessDistribution(uRoughness, vRoughness, remapRoughness, ctx));
+    // An absorbing interface follows one wavelength when k varies with it, as for eta
+    Float sampledK = 0;
+    if (k) {
+        sampledK = std::max<Float>(0, (*k)(lambda[0]));
+        if (!k->Is<ConstantSpectrum>()) lambda.TerminateSecondary();
+    }
+    return DielectricBxDF(
+        sampledEta, RoughnessDistribution(uRoughness, vRoughness, remapRoughness, ctx), sampledK);
 }
 
 // ThinDielectricMaterial Method Definitions

@@ -104,24 +104,28 @@ class ConductorMaterial : public MaterialBase {
 };
 
 // DielectricMaterial Definition
-// Smooth or rough glass-like interface; eta is the IOR inside relative to outside.
+// Smooth or rough glass-like interface; eta is the IOR inside relative to outside. kiln: k,
+// the extinction coefficient of the inside (complex index eta + i k; "spectrum k").
 class DielectricMaterial : public MaterialBase {
   public:
     DielectricMaterial(Spectrum eta, FloatTexture uRoughness, FloatTexture vRoughness,
-                       bool remapRoughness)
+                       bool remapRoughness, std::optional<Spectrum> k = std::nullopt)
         : eta(eta),
+          k(k),
           uRoughness(uRoughness),
           vRoughness(vRoughness),
           remapRoughness(remapRoughness) {}
     DielectricBxDF GetBxDF(const MaterialEvalContext& ctx, SampledWavelengths& lambda) const;
 
     const Spectrum& Eta() const { return eta; }
+    const std::optional<Spectrum>& K() const { return k; }
     const FloatTexture& URoughness() const { return uRoughness; }
     const FloatTexture& VRoughness() const { return vRoughness; }
     bool RemapRoughness() const { return remapRoughness; }
 
   private:
     Spectrum eta;
+    std::optional<Spectrum> k;
     FloatTexture uRoughness, vRoughness;
     bool remapRoughness;
 };

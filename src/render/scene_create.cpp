@@ -603,9 +603,13 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
     NamedTextures& textures = CreateTextures(desc, options, scene, diag);
     SceneMaterials materials =
         CreateMaterials(desc, textures, scene.arena, diag, options.layeredMIS);
-    MediumIndices media = CreateMedia(
-        desc, textures, [&](const ShapeSceneEntity& s) { return materials.Of(s); },
-        options.emission, scene.media, scene.arena, diag);
+    auto materialOf = [&](const ShapeSceneEntity& s) { return materials.Of(s); };
+    MediumIndices media =
+        CreateMedia(desc, textures, materialOf, options.emission, scene.media, scene.arena, diag);
+    CreateAbsorbingGlassMedia(
+        desc, textures, materialOf,
+        [&](const ShapeSceneEntity& s) -> const ThermalProperties& { return materials.HeatOf(s); },
+        options.emission, scene.media, media, scene.arena);
     scene.cameraMedium = MediumIndex(desc.camera.medium, media, desc.camera.loc);
     scene.spectralRange = scene.job->film->Range();
     WarnOfColoursBeyondTheVisible(desc, scene.spectralRange, diag);

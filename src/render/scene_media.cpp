@@ -1,5 +1,11 @@
 #include "render/scene_media.h"
 
+#include <cmath>
+
+#include "media/homogeneous_medium.h"
+#include "spectral/spectral_range.h"
+#include "textures/basic_textures.h"
+
 namespace kiln {
 
 MediumIndices CreateMedia(SceneDescription& desc, const NamedTextures& textures,
@@ -50,6 +56,87 @@ MediumIndices CreateMedia(SceneDescription& desc, const NamedTextures& textures,
     for (const auto& [name, def] : desc.instanceDefinitions)
         for (const ShapeSceneEntity& s : def.shapes) visit(s);
     return indices;
+}
+
+// Absorbing glass
+namespace {
+
+// 4 pi k(lambda) / lambda per metre, tabulated at k's own points (a piecewise-linear k) and
+// steps of 0.5 % over kiln's spectral range
+Spectrum AbsorptionOfExtinction(const Spectrum& k) {
+    std::vector<Float> lambdas;
+    for (double l = kSpectralRangeMin; l < kSpectralRangeMax; l *= 1.005)
+        lambdas.push_back(Float(l));
+    lambdas.push_back(kSpectralRangeMax);
+    if (const PiecewiseLinearSpectrum* table = k.GetIf<PiecewiseLinearSpectrum>())
+        for (Float l : table->Lambdas())
+            if (l > kSpectralRangeMin && l < kSpectralRangeMax) lambdas.push_back(l);
+    std::sort(lambdas.begin(), lambdas.end());
+    lambdas.erase(std::unique(lambdas.begin(), lambdas.end()), lambdas.end());
+    std::vector<Float> sigma;
+    for (Float l : lambdas)
+        sigma.push_back(Float(4 * Pi * std::max<double>(0, k(l)) / (double(l) * 1e-9)));
+    PiecewiseLinearSpectrum s(lambdas, sigma);
+    s.HoldEndsBeyondVisible();
+    return s;
+}
+
+}  // namespace
+
+void CreateAbsorbingGlassMedia(
+    SceneDescription& desc, const NamedTextures& textures,
+    const std::function<const Material*(const ShapeSceneEntity&)>& materialOf,
+    const std::function<const ThermalProperties&(const ShapeSceneEntity&)>& heatOf,
+    std::optional<EmissionModel> modelOverride, std::vector<Medium>& media, MediumIndices& indices,
+    ObjectArena& arena) {
+    std::map<const Material*, Spectrum> absorption;
+    // (material, constant temperature or -1 for none) -> the medium's name
+    std::map<std::pair<const Material*, Float>, std::string> shared;
+    std::optional<FloatTexture> ambient;
+    if (desc.ambientTemperature)
+        ambient = FloatTexture(arena.New<FloatConstantTexture>(*desc.ambientTemperature));
+    auto visit = [&](ShapeSceneEntity& s) {
+        if (s.insideMedium != s.outsideMedium) return;  // the body has its own media
+        const Material* material = materialOf(s);
+        std::optional<Spectrum> k = material ? material->InteriorExtinction() : std::nullopt;
+        if (!k) return;
+        // Its temperature and emission model, in the precedence of thermal emitters
+        TextureParameterDictionary params(&s.parameters, &textures);
+        ThermalProperties own = ReadThermalProperties(params, s.name == "trianglemesh", arena);
+        const ThermalProperties& fromMaterial = heatOf(s);
+        std::optional<FloatTexture> temperature =
+            own.temperature ? own.temperature : fromMaterial.temperature;
+        if (!temperature) temperature = ambient;
+        EmissionModel model =
+            modelOverride
+                ? *modelOverride
+                : own.model.value_or(fromMaterial.model.value_or(EmissionModel::Kirchhoff));
+        Float constant = -1;
+        if (temperature) {
+            const FloatConstantTexture* c = temperature->GetIf<FloatConstantTexture>();
+            constant = c ? c->Evaluate(TextureEvalContext()) : -2;
+        }
+        std::string& name = shared[{material, constant}];
+        if (name.empty() || constant == -2) {
+            name = kAbsorbingGlassMediumPrefix + s.loc.ToString();
+            auto it = absorption.find(material);
+            if (it == absorption.end())
+                it = absorption.emplace(material, AbsorptionOfExtinction(*k)).first;
+            MediumCoefficients c;
+            c.sigma_a = it->second;
+            c.sigma_s = ConstantSpectrum(0);
+            MediumEmission emission =
+                temperature ? MediumEmission::Thermal(*temperature, model) : MediumEmission();
+            Medium medium(arena.New<HomogeneousMedium>(c, std::move(emission)));
+            medium.SetRefractiveIndex(*material->InteriorEta());
+            indices[name] = int(media.size());
+            media.push_back(medium);
+        }
+        s.insideMedium = name;
+    };
+    for (ShapeSceneEntity& s : desc.shapes) visit(s);
+    for (auto& [name, def] : desc.instanceDefinitions)
+        for (ShapeSceneEntity& s : def.shapes) visit(s);
 }
 
 int MediumIndex(const std::string& name, const MediumIndices& media, const FileLoc& loc) {

@@ -17,6 +17,7 @@
 #include "render/medium_emission_sampler.h"
 #include "render/scene_description.h"
 #include "textures/texture_parameter_dictionary.h"
+#include "thermal/thermal_properties.h"
 
 namespace kiln {
 
@@ -34,6 +35,24 @@ MediumIndices CreateMedia(SceneDescription& desc, const NamedTextures& textures,
                           const std::function<const Material*(const ShapeSceneEntity&)>& materialOf,
                           std::optional<EmissionModel> modelOverride, std::vector<Medium>& media,
                           ObjectArena& arena, Diagnostics& diag);
+
+// Absorbing glass (a "dielectric" with "k", Material::InteriorExtinction) gives the bodies it
+// bounds that have no medium of their own (no MediumInterface with two different media) an
+// interior "homogeneous" medium: sigma_a = 4 pi k(lambda) / lambda per unit length, scene units
+// taken as metres; no scattering; the body's refractive index; glowing at the shape's
+// temperature, else its material's, else the scene's ambient one (a float texture evaluated at
+// render-space points inside, as a medium's "temperature"; a mesh's per-vertex temperatures
+// do not reach it), with the shape's, material's or command line's emission model. The media
+// are added to media and indices under names starting with kAbsorbingGlassMediumPrefix, which
+// the shapes' insideMedium then names; bodies of one material at one constant temperature (or
+// without one) share one.
+inline constexpr const char* kAbsorbingGlassMediumPrefix = "kiln:absorbing-glass:";
+void CreateAbsorbingGlassMedia(
+    SceneDescription& desc, const NamedTextures& textures,
+    const std::function<const Material*(const ShapeSceneEntity&)>& materialOf,
+    const std::function<const ThermalProperties&(const ShapeSceneEntity&)>& heatOf,
+    std::optional<EmissionModel> modelOverride, std::vector<Medium>& media, MediumIndices& indices,
+    ObjectArena& arena);
 
 // The index of the medium called name ("" gives -1); SceneError at loc if undefined.
 int MediumIndex(const std::string& name, const MediumIndices& media, const FileLoc& loc);

@@ -48,8 +48,21 @@ const MaterialAlbedo* MaterialAlbedo::Create(const Material& material, Emissivit
         return arena.New<MaterialAlbedo>(
             Subsurface{C, isZero(p.uRoughness) && isZero(p.vRoughness)});
     }
+    if (const DielectricMaterial* d = material.GetIf<DielectricMaterial>(); d && d->K())
+        return arena.New<MaterialAlbedo>(AbsorbingDielectric{});
     return arena.New<MaterialAlbedo>(NonAbsorbing{});
 }
+
+namespace {
+
+// An absorbing dielectric seen from wo (local frame): whether wo lies outside, beyond the cone
+// of directions that refract into the body (only where its real index is below 1)
+bool BeyondRefractionCone(const DielectricBxDF& d, Vector3f wo) {
+    if (d.K() == 0 || CosTheta(wo) <= 0 || d.Eta() >= 1) return false;
+    return Sin2Theta(wo) >= Sqr(d.Eta());
+}
+
+}  // namespace
 
 bool MaterialAlbedo::Exact() const {
     return kind.Dispatch([&](const auto& k) -> bool {
@@ -83,6 +96,10 @@ SampledSpectrum MaterialAlbedo::EvaluateLocal(const Material* material, const BS
             return SampledSpectrum(1.f);
         } else if constexpr (std::is_same_v<K, NonAbsorbing>) {
             return SampledSpectrum(1.f);
+        } else if constexpr (std::is_same_v<K, AbsorbingDielectric>) {
+            const DielectricBxDF* d = bxdf.GetIf<DielectricBxDF>();
+            if (!d || !BeyondRefractionCone(*d, wo)) return SampledSpectrum(1.f);
+            return SampledSpectrum(FrAbsorbingDielectric(CosTheta(wo), d->Eta(), d->K()));
         } else if constexpr (std::is_same_v<K, ConductorEmissivity>) {
             const ConductorBxDF* c = bxdf.GetIf<ConductorBxDF>();
             if (!c) return SampledSpectrum(1.f);
@@ -152,6 +169,13 @@ ReflectedPolarization MaterialAlbedo::LinearPolarizationLocal(const Material* ma
         if constexpr (std::is_same_v<K, ConductorEmissivity>) {
             const ConductorBxDF* c = bsdf.GetBxDF().GetIf<ConductorBxDF>();
             if (c) return k.LinearPolarization(*c, wo);
+        } else if constexpr (std::is_same_v<K, AbsorbingDielectric>) {
+            // Within the cone reflection and transmission polarise oppositely and cancel
+            const DielectricBxDF* d = bsdf.GetBxDF().GetIf<DielectricBxDF>();
+            if (d && BeyondRefractionCone(*d, wo)) {
+                FresnelRsRp R = FrAbsorbingDielectricPolarized(CosTheta(wo), d->Eta(), d->K());
+                return {SampledSpectrum((R.Rs - R.Rp) / 2), SampledSpectrum(0.f)};
+            }
         } else if constexpr (std::is_same_v<K, Mix>) {
             for (const auto& [component, albedo] : k.components)
                 if (component == material)

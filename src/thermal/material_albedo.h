@@ -23,6 +23,12 @@
 //   thindielectric, interface: A = 1, their surfaces emit nothing: a hot transparent body glows
 //                             from its interior medium (volume_emission.h) (a rough dielectric's
 //                             single-scattering energy loss is not emitted either)
+//   absorbing dielectric:     (a "dielectric" with "k") A = 1 too, except from outside where
+//                             the real index is below 1 (glass in its infrared absorption
+//                             bands) and wo lies beyond the cone sin theta < eta that refracts
+//                             into the body: no ray enters there, what is not reflected is
+//                             absorbed at the surface, and A = R(wo) (fresnel.h's
+//                             FrAbsorbingDielectric; smooth; a rough surface uses the same split)
 //   subsurface:               A = R(wo) + (1 - R(wo)) rhoEff C: the smooth boundary's Fresnel
 //                             reflectance R, and of what it transmits the fraction the
 //                             BSSRDF returns (the table's effective albedo at the point's
@@ -119,6 +125,7 @@ class MaterialAlbedo {
 
     struct Diffuse {};
     struct NonAbsorbing {};
+    struct AbsorbingDielectric {};
     struct Subsurface {
         Float exitFraction;  // C above
         bool smooth;         // a smooth boundary (else the smooth Fresnel split approximates)
@@ -127,8 +134,9 @@ class MaterialAlbedo {
         std::vector<std::pair<const Material*, const MaterialAlbedo*>> components;
     };
     // How the albedo is computed, by the material's kind
-    using Kind = ClosedSet<Diffuse, NonAbsorbing, ConductorEmissivity, CoatedDiffuseEmissivity,
-                           CoatedConductorEmissivity, MeasuredEmissivity, Subsurface, Mix>;
+    using Kind = ClosedSet<Diffuse, NonAbsorbing, AbsorbingDielectric, ConductorEmissivity,
+                           CoatedDiffuseEmissivity, CoatedConductorEmissivity, MeasuredEmissivity,
+                           Subsurface, Mix>;
     explicit MaterialAlbedo(Kind kind) : kind(std::move(kind)) {}
 
   private:

@@ -43,6 +43,8 @@ std::vector<BxDF> AllBxDFs() {
             DielectricBxDF(1.5f, smooth),
             DielectricBxDF(1.5f, rough),
             DielectricBxDF(1 / 1.5f, rough),
+            DielectricBxDF(1.209f, smooth, 1.232f),  // soda-lime glass at 9.6 um
+            DielectricBxDF(1.5f, rough, 0.5f),
             ThinDielectricBxDF(1.5f),
             CoatedDiffuseBxDF(DielectricBxDF(1.5f, smooth), DiffuseBxDF(one), 0.01f,
                               SampledSpectrum(0.f), 0, 10, 1),

@@ -164,3 +164,50 @@ TEST(Fresnel, ComplexExtremeOpticalConstantsMatchThePolarisedForm) {
                 }
             }
 }
+
+// Absorbing dielectrics (glass through the infrared): the complex Fresnel reflectance from
+// outside, and from inside that of the outside direction refracting into the inside one
+TEST(Fresnel, AbsorbingDielectricWithoutKIsDielectric) {
+    for (Float n : {1.5f, 1 / 1.5f, 2.4f})
+        for (int i = -100; i <= 100; ++i) {
+            Float c = i / 100.f;
+            EXPECT_EQ(FrAbsorbingDielectric(c, n, 0), FrDielectric(c, n)) << n << " " << c;
+        }
+}
+
+TEST(Fresnel, AbsorbingDielectricFromOutsideIsComplex) {
+    for (auto [n, k] : {std::pair{1.209f, 1.232f}, std::pair{0.4f, 0.3f}, std::pair{2.0f, 2.7f}})
+        for (int i = 0; i <= 50; ++i) {
+            Float c = i / 50.f;
+            EXPECT_NEAR(FrAbsorbingDielectric(c, n, k), FrComplex(c, {n, k}), 1e-6f);
+            FresnelRsRp p = FrAbsorbingDielectricPolarized(c, n, k);
+            EXPECT_NEAR(0.5f * (p.Rs + p.Rp), FrAbsorbingDielectric(c, n, k), 1e-6f);
+        }
+    // Normal incidence: ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2)
+    EXPECT_NEAR(FrAbsorbingDielectric(1, 1.209f, 1.232f),
+                (Sqr(0.209f) + Sqr(1.232f)) / (Sqr(2.209f) + Sqr(1.232f)), 1e-6f);
+}
+
+TEST(Fresnel, AbsorbingDielectricIsReciprocal) {
+    for (auto [n, k] : {std::pair{1.5f, 0.5f}, std::pair{1.209f, 1.232f}, std::pair{0.8f, 2.0f}})
+        for (int i = 1; i <= 60; ++i) {
+            // Outside at cos c_o refracts (real n) to inside at cos c_i
+            Float c_o = i / 60.f;
+            Float sin2_i = (1 - c_o * c_o) / (n * n);
+            if (sin2_i >= 1) continue;
+            Float c_i = std::sqrt(1 - sin2_i);
+            // (the tolerance: the single-precision round trip of a grazing cosine)
+            EXPECT_NEAR(FrAbsorbingDielectric(-c_i, n, k), FrAbsorbingDielectric(c_o, n, k), 1e-4f)
+                << "n " << n << " k " << k << " cos " << c_o;
+            FresnelRsRp in = FrAbsorbingDielectricPolarized(-c_i, n, k),
+                        out = FrAbsorbingDielectricPolarized(c_o, n, k);
+            EXPECT_NEAR(in.Rs, out.Rs, 1e-4f);
+            EXPECT_NEAR(in.Rp, out.Rp, 1e-4f);
+        }
+    // Inside beyond the critical angle (n > 1): total internal reflection
+    EXPECT_EQ(FrAbsorbingDielectric(-0.3f, 1.5f, 0.5f), 1);
+    EXPECT_EQ(FrAbsorbingDielectricPolarized(-0.3f, 1.5f, 0.5f).Rp, 1);
+    // Weak absorption is continuous with the plain dielectric on both sides
+    for (Float c : {0.9f, 0.5f, 0.1f, -0.95f, -0.8f})
+        EXPECT_NEAR(FrAbsorbingDielectric(c, 1.5f, 1e-5f), FrDielectric(c, 1.5f), 1e-5f) << c;
+}

@@ -182,6 +182,13 @@ TEST(SamplingChi2, RoughDielectric) {
                 EXPECT_TRUE(r.passed) << "eta " << eta << " alpha " << alpha << " cos " << cosTheta
                                       << ": " << r.message;
             }
+    // An absorbing dielectric (glass in an infrared absorption band): the same sampling with
+    // its complex Fresnel weights
+    for (Float cosTheta : {0.8f, -0.5f}) {
+        BxDF bxdf = DielectricBxDF(1.5f, TrowbridgeReitzDistribution(0.3f, 0.3f), 0.8f);
+        auto r = TestBxDF(bxdf, Wo(cosTheta), seed++);
+        EXPECT_TRUE(r.passed) << "k 0.8 cos " << cosTheta << ": " << r.message;
+    }
 }
 
 TEST(SamplingChi2, TrowbridgeReitzVisibleNormals) {

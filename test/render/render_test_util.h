@@ -126,6 +126,17 @@ inline Float PixelY(const Scene& scene, Point2i p) {
     return scene.job->film->ColorSpace()->ToXYZ(rgb).Y;
 }
 
+// The mean of a thermal film's channel ("L", "T") over its pixels, with its standard error
+inline RunningStats ThermalChannelStats(const RenderedScene& r, const char* channel) {
+    Image img = r.scene->job->film->GetImage(nullptr);
+    int c = img.ChannelIndex(channel);
+    EXPECT_GE(c, 0) << channel;
+    RunningStats s;
+    for (int y = 0; y < img.Resolution().y; ++y)
+        for (int x = 0; x < img.Resolution().x; ++x) s.Add(img.GetChannel({x, y}, c));
+    return s;
+}
+
 // An equilibrium cavity render at temperature T (label: what it holds): no warnings, and the
 // image mean B(T) within 4 standard errors of the pixel noise (plus 1e-3), the test able to see
 // a 0.5 % error.

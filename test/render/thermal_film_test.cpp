@@ -26,15 +26,8 @@ void ExpectOnlyTheRGBWarning(const testing::RenderedScene& r) {
     EXPECT_GT(r.warnings[0].loc.line, 0);
 }
 
-// The mean of a thermal film's channel over its pixels, with its standard error
 RunningStats ChannelStats(const testing::RenderedScene& r, const char* channel) {
-    Image img = r.scene->job->film->GetImage(nullptr);
-    int c = img.ChannelIndex(channel);
-    EXPECT_GE(c, 0) << channel;
-    RunningStats s;
-    for (int y = 0; y < img.Resolution().y; ++y)
-        for (int x = 0; x < img.Resolution().x; ++x) s.Add(img.GetChannel({x, y}, c));
-    return s;
+    return testing::ThermalChannelStats(r, channel);
 }
 
 // A closed cavity (a textured diffuse wall) around rough gold, coated diffuse and smooth

@@ -50,7 +50,12 @@ std::string Cavity(const VolumeCase& c, bool meshes, double T, int spp) {
                  : "Shape \"sphere\" \"float radius\" 6\n")
       << "AttributeEnd\n";
     if (*c.glass) {
-        s << "AttributeBegin\nMaterial " << c.glass << "\n"
+        // Absorbing glass without a melt: its own medium (from k) glows at the body's temperature
+        if (!*c.inside && std::string(c.glass).find(" k\"") != std::string::npos)
+            s << "AttributeBegin\nAttribute \"shape\" \"float temperature\" " << T << "\n";
+        else
+            s << "AttributeBegin\n";
+        s << "Material " << c.glass << "\n"
           << "MediumInterface \"" << (*c.inside ? "melt" : "") << "\" \"" << (*c.air ? "air" : "")
           << "\"\n"
           << (meshes ? testing::MeshSphere(1.2, 10, 6, 0, 0, 0.3, false)
@@ -105,6 +110,15 @@ const VolumeCase kVolumeCases[] = {
      "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.05 0.1 0.02] \"rgb sigma_s\" [0.2 0.1 "
      "0.3]",
      512},
+    // Absorbing glass (complex index): the body's medium absorbs 4 pi k / lambda (0.46 per unit
+    // at 550 nm: partly transparent), and dispersive soda-lime glass (about 3 per unit: nearly
+    // opaque), rough
+    {"absorbing glass, constant k", "\"dielectric\" \"float eta\" 1.5 \"float k\" 2e-8", "", "",
+     256},
+    {"soda-lime glass",
+     "\"dielectric\" \"spectrum eta\" \"glass-soda-lime-eta\" \"spectrum k\" "
+     "\"glass-soda-lime-k\"",
+     "", "", 1024},
     {"hot air only", "", "",
      "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.2 0.2 0.2] \"rgb sigma_s\" [0.3 0.3 "
      "0.3]",

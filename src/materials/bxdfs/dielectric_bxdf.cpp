@@ -22,7 +22,7 @@ std::optional<BSDFSample> DielectricBxDF::Sample_f(Vector3f wo, Float uc, Point2
     if (wo.z == 0) return {};
     if (eta == 1 || mfDistrib.EffectivelySmooth()) {
         // Specular: choose reflection with probability proportional to R.
-        Float R = FrDielectric(CosTheta(wo), eta), T = 1 - R, pr, pt;
+        Float R = Fr(CosTheta(wo)), T = 1 - R, pr, pt;
         LobeProbabilities(R, T, sampleFlags, &pr, &pt);
         if (pr == 0 && pt == 0) return {};
         if (uc < pr / (pr + pt)) {
@@ -41,7 +41,7 @@ std::optional<BSDFSample> DielectricBxDF::Sample_f(Vector3f wo, Float uc, Point2
 
     // Rough: sample a visible microfacet normal, then reflect or refract about it.
     Vector3f wm = mfDistrib.Sample_wm(wo, u);
-    Float R = FrDielectric(Dot(wo, wm), eta), T = 1 - R, pr, pt;
+    Float R = Fr(Dot(wo, wm)), T = 1 - R, pr, pt;
     LobeProbabilities(R, T, sampleFlags, &pr, &pt);
     if (pr == 0 && pt == 0) return {};
     if (uc < pr / (pr + pt)) {
@@ -108,7 +108,7 @@ std::optional<MicrofacetTerm> DielectricBxDF::Term(Vector3f wo, Vector3f wi,
 SampledSpectrum DielectricBxDF::f(Vector3f wo, Vector3f wi, TransportMode mode) const {
     std::optional<MicrofacetTerm> t = Term(wo, wi, mode);
     if (!t) return {};
-    Float F = FrDielectric(Dot(wo, t->wm), eta);
+    Float F = Fr(Dot(wo, t->wm));
     return SampledSpectrum((t->reflect ? F : 1 - F) * t->scale);
 }
 
@@ -119,7 +119,7 @@ Float DielectricBxDF::PDF(Vector3f wo, Vector3f wi, TransportMode,
     Float etap;
     bool reflect;
     if (!HalfVector(wo, wi, eta, &wm, &etap, &reflect)) return 0;
-    Float R = FrDielectric(Dot(wo, wm), eta), T = 1 - R, pr, pt;
+    Float R = Fr(Dot(wo, wm)), T = 1 - R, pr, pt;
     LobeProbabilities(R, T, sampleFlags, &pr, &pt);
     if (pr == 0 && pt == 0) return 0;
     if (reflect) return mfDistrib.PDF(wo, wm) / (4 * AbsDot(wo, wm)) * pr / (pr + pt);
@@ -133,8 +133,8 @@ MuellerMatrix DielectricBxDF::MuellerF(Vector3f wo, Vector3f wi, TransportMode m
     std::optional<MicrofacetTerm> t = Term(wo, wi, mode);
     if (!t) return {};
     Float cosTheta = Dot(wo, t->wm);
-    MuellerMatrix F = t->reflect ? FresnelReflectionMueller(cosTheta, eta)
-                                 : FresnelTransmissionMueller(cosTheta, eta);
+    MuellerMatrix F = t->reflect ? AbsorbingDielectricReflectionMueller(cosTheta, eta, k)
+                                 : AbsorbingDielectricTransmissionMueller(cosTheta, eta, k);
     return MicrofacetToSurfaceFrame(F, wo, wi, t->wm) * t->scale;
 }
 
@@ -142,8 +142,10 @@ MuellerMatrix DielectricBxDF::MuellerSample(Vector3f wo, const BSDFSample& bs,
                                             TransportMode mode) const {
     if (!bs.IsSpecular()) return MuellerF(wo, bs.wi, mode);
     // Smooth: the plane of incidence contains the normal, so the s axes are the frame's
-    if (bs.IsReflection()) return FresnelReflectionMueller(CosTheta(wo), eta) / AbsCosTheta(bs.wi);
-    MuellerMatrix T = FresnelTransmissionMueller(CosTheta(wo), eta) / AbsCosTheta(bs.wi);
+    if (bs.IsReflection())
+        return AbsorbingDielectricReflectionMueller(CosTheta(wo), eta, k) / AbsCosTheta(bs.wi);
+    MuellerMatrix T =
+        AbsorbingDielectricTransmissionMueller(CosTheta(wo), eta, k) / AbsCosTheta(bs.wi);
     if (mode == TransportMode::Radiance) T = T / Sqr(bs.eta);
     return T;
 }

@@ -127,4 +127,26 @@ SampledSpectrum FrComplex(Float cosTheta_i, SampledSpectrum eta, SampledSpectrum
     return r;
 }
 
+// Absorbing dielectrics
+Float AbsorbingDielectricOutsideCosine(Float cosTheta_i, Float eta) {
+    double c = std::clamp(double(cosTheta_i), -1.0, 1.0);
+    if (c >= 0) return Float(c);
+    // sin theta_outside = eta sin theta_inside
+    double sin2Outside = (1 - c) * (1 + c) * double(eta) * eta;
+    return sin2Outside >= 1 ? 0 : Float(std::sqrt(1 - sin2Outside));
+}
+
+FresnelRsRp FrAbsorbingDielectricPolarized(Float cosTheta_i, Float eta, Float k) {
+    if (k == 0) return FrDielectricPolarized(cosTheta_i, eta);
+    Float c = AbsorbingDielectricOutsideCosine(cosTheta_i, eta);
+    if (c == 0) return {1, 1};  // grazing from outside, or total internal reflection
+    return FrComplexPolarized(c, std::complex<Float>(eta, k));
+}
+
+Float FrAbsorbingDielectric(Float cosTheta_i, Float eta, Float k) {
+    if (k == 0) return FrDielectric(cosTheta_i, eta);
+    Float c = AbsorbingDielectricOutsideCosine(cosTheta_i, eta);
+    return c == 0 ? 1 : FrComplex(c, std::complex<Float>(eta, k));
+}
+
 }  // namespace kiln

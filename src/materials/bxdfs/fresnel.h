@@ -59,4 +59,20 @@ FresnelAmplitudes FrComplexAmplitudes(Float cosTheta_i, std::complex<Float> eta)
 Float FrComplex(Float cosTheta_i, std::complex<Float> eta);
 SampledSpectrum FrComplex(Float cosTheta_i, SampledSpectrum eta, SampledSpectrum k);
 
+// Absorbing dielectrics (glass through the infrared)
+//
+// The interface into a dielectric of complex index eta + i k (inside over outside, k >= 0),
+// seen from either side. From outside (cosTheta_i >= 0): the complex Fresnel reflectances.
+// From inside: those of the outside direction that refracts into this one by Snell's law with
+// the real eta, and total reflection beyond the critical angle. So the interface is reciprocal
+// (R inside at theta_t = R outside at theta_i), as the closed-cavity equilibrium needs; the
+// inhomogeneous waves of an absorbing medium are left out (where k is large enough for them to
+// matter, light entering the glass is absorbed within micrometres). k = 0 gives FrDielectric.
+//
+// The cosine of that outside direction (cosTheta_i itself from outside; 0 beyond the
+// critical angle).
+Float AbsorbingDielectricOutsideCosine(Float cosTheta_i, Float eta);
+FresnelRsRp FrAbsorbingDielectricPolarized(Float cosTheta_i, Float eta, Float k);
+Float FrAbsorbingDielectric(Float cosTheta_i, Float eta, Float k);
+
 }  // namespace kiln

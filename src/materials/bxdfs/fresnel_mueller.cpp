@@ -42,8 +42,9 @@ MuellerMatrix FresnelReflectionMueller(Float cosTheta_i, Float eta) {
     return M;
 }
 
-MuellerMatrix FresnelTransmissionMueller(Float cosTheta_i, Float eta) {
-    FresnelRsRp R = FrDielectricPolarized(cosTheta_i, eta);
+namespace {
+
+MuellerMatrix TransmissionMueller(FresnelRsRp R) {
     Float Ts = 1 - R.Rs, Tp = 1 - R.Rp;
     MuellerMatrix M;
     if (Ts <= 0 && Tp <= 0) return M;
@@ -51,6 +52,22 @@ MuellerMatrix FresnelTransmissionMueller(Float cosTheta_i, Float eta) {
     M(0, 1) = M(1, 0) = SampledSpectrum(0.5f * (Ts - Tp));
     M(2, 2) = M(3, 3) = SampledSpectrum(std::sqrt(std::max<Float>(0, Ts * Tp)));
     return M;
+}
+
+}  // namespace
+
+MuellerMatrix FresnelTransmissionMueller(Float cosTheta_i, Float eta) {
+    return TransmissionMueller(FrDielectricPolarized(cosTheta_i, eta));
+}
+
+MuellerMatrix AbsorbingDielectricReflectionMueller(Float cosTheta_i, Float eta, Float k) {
+    Float c = AbsorbingDielectricOutsideCosine(cosTheta_i, eta);
+    if (k == 0 || (cosTheta_i < 0 && c == 0)) return FresnelReflectionMueller(cosTheta_i, eta);
+    return FresnelReflectionMueller(c, SampledSpectrum(eta), SampledSpectrum(k));
+}
+
+MuellerMatrix AbsorbingDielectricTransmissionMueller(Float cosTheta_i, Float eta, Float k) {
+    return TransmissionMueller(FrAbsorbingDielectricPolarized(cosTheta_i, eta, k));
 }
 
 MuellerMatrix MicrofacetToSurfaceFrame(const MuellerMatrix& M, Vector3f wo, Vector3f wi,

@@ -33,6 +33,12 @@ MuellerMatrix FresnelReflectionMueller(Float cosTheta_i, Float eta);
 // Tp = 1 - Rp, no phase difference: M22 = M33 = sqrt(Ts Tp)), without the 1/eta^2 radiance
 // scaling; zero under total internal reflection.
 MuellerMatrix FresnelTransmissionMueller(Float cosTheta_i, Float eta);
+// An absorbing dielectric of index eta + i k (fresnel.h's FrAbsorbingDielectric; k = 0: the two
+// above). Reflection from inside takes the matrix of the outside direction that refracts into
+// cosTheta_i (total internal reflection: the dielectric's, with its phase difference);
+// transmission has Ts = 1 - Rs, Tp = 1 - Rp and no phase difference, as above.
+MuellerMatrix AbsorbingDielectricReflectionMueller(Float cosTheta_i, Float eta, Float k);
+MuellerMatrix AbsorbingDielectricTransmissionMueller(Float cosTheta_i, Float eta, Float k);
 
 // A Mueller matrix of an interface with normal m (local frame), given with reference axes s
 // about m (PlaneAxis(m, wi), PlaneAxis(m, wo)), re-expressed with the macro-surface axes
