@@ -10,6 +10,7 @@
 #include "app/output_check.h"
 #include "core/film/film.h"
 #include "core/film/thermal_colormap.h"
+#include "core/film/thermal_sensor.h"
 #include "core/image/display.h"
 #include "core/image/image.h"
 #include "render/auto_exposure.h"
@@ -102,7 +103,11 @@ int RunConvert(const std::vector<std::string>& args) {
                                                  ": a thermal image (L, T) converts to "
                                                  "picture formats (PNG, JPEG, ...) only");
                     m.strings["kiln:convertedFrom"] = ins[0];
-                    ThermalPicture(image, T).Write(out, m);
+                    // The film's fixed palette span, if it had one
+                    std::optional<TemperatureScale> scale;
+                    if (auto it = m.strings.find("kiln:thermalscale"); it != m.strings.end())
+                        scale = ThermalSensor::ScaleFromSettings(it->second);
+                    ThermalPicture(image, T, scale).Write(out, m);
                 }
                 return 0;
             }

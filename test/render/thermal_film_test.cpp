@@ -11,6 +11,7 @@
 #include <string>
 
 #include "base/statistics.h"
+#include "core/film/thermal_colormap.h"
 #include "render_test_util.h"
 #include "spectral/planck.h"
 
@@ -241,6 +242,58 @@ TEST(ThermalFilm, PicturesMapTemperatureToColourWithAScaleBar) {
     EXPECT_GT(luminance(barX, 16), luminance(barX, 23));
 }
 
+// "scalemin" and "scalemax" fix the palette's span, as a camera's span and level: the same two
+// plates then map inside it (neither black nor white), and the EXR carries the span so that
+// kiln convert draws the same picture
+TEST(ThermalFilm, PicturesKeepAFixedScale) {
+    testing::RenderedScene r = testing::RenderText(
+        "Film \"thermal\" \"string sensor\" \"mwir\" \"integer xresolution\" 64 "
+        "\"integer yresolution\" 32 \"float scalemin\" 300 \"float scalemax\" 1000\n"
+        "Sampler \"zsobol\" \"integer pixelsamples\" 16\n"
+        "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"orthographic\" \"float screenwindow\" [-2 2 -1 1]\n"
+        "WorldBegin\n"
+        "Material \"diffuse\" \"spectrum reflectance\" [300 0 20000 0]\n"
+        "Shape \"bilinearmesh\" \"point3 P\" [-2 -1 0  0 -1 0  -2 1 0  0 1 0] "
+        "\"float temperature\" 400\n"
+        "Shape \"bilinearmesh\" \"point3 P\" [0 -1 0  2 -1 0  0 1 0  2 1 0] "
+        "\"float temperature\" 900\n");
+    for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
+    namespace fs = std::filesystem;
+    fs::path dir = fs::path(KILN_BINARY_DIR) / "test-output";
+    fs::create_directories(dir);
+    fs::path png = dir / "thermal-picture-scale.png", exr = dir / "thermal-picture-scale.exr";
+    r.scene->job->film->WriteImage(png.string(), ImageMetadata());
+    r.scene->job->film->WriteImage(exr.string(), ImageMetadata());
+    Image picture = Image::Read(png.string());
+    auto luminance = [&](int x, int y) {
+        return picture.GetChannel({x, y}, 0) + picture.GetChannel({x, y}, 1) +
+               picture.GetChannel({x, y}, 2);
+    };
+    // 400 K at 1/7 of the span, 900 K at 6/7: the palette there, not its ends
+    auto palette = [](Float t) {
+        RGB c = IronPalette(t);
+        Float sum = 0;
+        for (int i = 0; i < 3; ++i)
+            sum += c[i] <= 0.04045f ? c[i] / 12.92f : std::pow((c[i] + 0.055f) / 1.055f, 2.4f);
+        return sum;
+    };
+    EXPECT_NEAR(luminance(16, 16), palette(100.f / 700), 0.02f);
+    EXPECT_NEAR(luminance(48, 16), palette(600.f / 700), 0.02f);
+    EXPECT_GT(luminance(16, 16), 0.05f);
+    EXPECT_LT(luminance(48, 16), 2.9f);
+    ImageMetadata m;
+    Image fromExr = Image::Read(exr.string(), &m);
+    ASSERT_TRUE(m.strings.count("kiln:thermalscale"));
+    std::optional<TemperatureScale> scale =
+        ThermalSensor::ScaleFromSettings(m.strings["kiln:thermalscale"]);
+    ASSERT_TRUE(scale);
+    EXPECT_EQ(scale->lo, 300);
+    EXPECT_EQ(scale->hi, 1000);
+    Image again = ThermalPicture(fromExr, fromExr.ChannelIndex("T"), scale);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(again.GetChannel({16, 16}, c), picture.GetChannel({16, 16}, c), 0.01f);
+}
+
 // The parameters are checked where they are written
 TEST(ThermalFilm, BadParametersAreLocatedErrors) {
     auto error = [](const std::string& film) -> std::string {
@@ -268,6 +321,10 @@ TEST(ThermalFilm, BadParametersAreLocatedErrors) {
                   .find("lambdamin"),
               std::string::npos);
     EXPECT_NE(error("Film \"thermal\"\n  \"bool stokes\" true").find("line 2"), std::string::npos);
+    EXPECT_NE(error("Film \"thermal\" \"float scalemin\" 300").find("both"), std::string::npos);
+    EXPECT_NE(error("Film \"thermal\" \"float scalemin\" 300 \"float scalemax\" 300")
+                  .find("scalemin < scalemax"),
+              std::string::npos);
 }
 
 }  // namespace

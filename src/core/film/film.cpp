@@ -424,13 +424,17 @@ void RGBFilm::WriteImage(const std::string& filename, ImageMetadata metadata,
                       b.pMax.y != opts.fullResolution.y;
     metadata.strings["kiln:savefp16"] = opts.savefp16 ? "true" : "false";
     if (opts.thermal) metadata.strings["kiln:thermal"] = opts.thermal->Settings();
+    if (opts.thermal && opts.thermal->PictureScale())
+        metadata.strings["kiln:thermalscale"] =
+            ThermalSensor::ScaleSettings(*opts.thermal->PictureScale());
     // The display view the film asks for (kiln convert uses it unless told otherwise)
     metadata.strings["kiln:view"] = viewOverride.empty() ? opts.view : viewOverride;
     if (opts.thermal && ext != "exr") {
         // The picture of the temperature channel, with its scale bar
         if (std::string why = ThermalOutputFormatProblem(filename); !why.empty())
             throw std::runtime_error(filename + ": " + why);
-        ThermalPicture(image, image.ChannelIndex("T")).Write(filename, metadata);
+        ThermalPicture(image, image.ChannelIndex("T"), opts.thermal->PictureScale())
+            .Write(filename, metadata);
         return;
     }
     if (ext == "exr") {

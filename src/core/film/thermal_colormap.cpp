@@ -74,21 +74,27 @@ RGB IronPalette(Float t) {
     return RGB((1 - f) * a[0] + f * b[0], (1 - f) * a[1] + f * b[1], (1 - f) * a[2] + f * b[2]);
 }
 
-Image ThermalPicture(const Image& thermal, int temperatureChannel) {
+Image ThermalPicture(const Image& thermal, int temperatureChannel,
+                     std::optional<TemperatureScale> fixed) {
     const Point2i res = thermal.Resolution();
     double lo = std::numeric_limits<double>::infinity(), hi = 0;
-    for (int y = 0; y < res.y; ++y)
-        for (int x = 0; x < res.x; ++x) {
-            double T = thermal.GetChannel({x, y}, temperatureChannel);
-            if (!(T > 0) || !std::isfinite(T)) continue;
-            lo = std::min(lo, T);
-            hi = std::max(hi, T);
+    if (fixed) {
+        lo = fixed->lo;
+        hi = fixed->hi;
+    } else {
+        for (int y = 0; y < res.y; ++y)
+            for (int x = 0; x < res.x; ++x) {
+                double T = thermal.GetChannel({x, y}, temperatureChannel);
+                if (!(T > 0) || !std::isfinite(T)) continue;
+                lo = std::min(lo, T);
+                hi = std::max(hi, T);
+            }
+        if (!(hi > 0)) lo = hi = 0;
+        if (hi - lo < 1) {
+            double mid = (hi + lo) / 2;
+            lo = std::max(0.0, mid - 0.5);
+            hi = lo + 1;
         }
-    if (!(hi > 0)) lo = hi = 0;
-    if (hi - lo < 1) {
-        double mid = (hi + lo) / 2;
-        lo = std::max(0.0, mid - 0.5);
-        hi = lo + 1;
     }
     // The scale bar: an eighth of the width (at least 24 pixels) with its labels
     const int scale = std::max(1, std::min(res.x, res.y) / 100);

@@ -101,7 +101,37 @@ ThermalSensor ThermalSensor::Create(const ParameterDictionary& params, const Fil
         throw SceneError(params.Loc("reflectedtemperature", loc),
                          "the thermal film's \"reflectedtemperature\" must be 0 to 1e6 K",
                          Nm(s.reflectedTemperature));
+    if (params.Has("scalemin") || params.Has("scalemax")) {
+        const char* which = params.Has("scalemin") ? "scalemin" : "scalemax";
+        if (!params.Has("scalemin") || !params.Has("scalemax"))
+            throw SceneError(params.Loc(which, loc),
+                             "the thermal film's picture scale needs both \"scalemin\" and "
+                             "\"scalemax\" (kelvin)",
+                             which);
+        TemperatureScale t{params.GetOneFloat("scalemin", 0), params.GetOneFloat("scalemax", 0)};
+        if (!(t.lo >= 0 && t.hi > t.lo && t.hi <= 1e6f))
+            throw SceneError(params.Loc("scalemax", loc),
+                             "the thermal film's \"scalemin\" and \"scalemax\" must be kelvin "
+                             "with 0 <= scalemin < scalemax <= 1e6",
+                             Nm(t.lo) + " " + Nm(t.hi));
+        s.pictureScale = t;
+    }
     return s;
+}
+
+std::string ThermalSensor::ScaleSettings(const TemperatureScale& t) {
+    char text[64];
+    std::snprintf(text, sizeof(text), "%.9g %.9g", double(t.lo), double(t.hi));
+    return text;
+}
+
+std::optional<TemperatureScale> ThermalSensor::ScaleFromSettings(std::string_view settings) {
+    std::istringstream in{std::string(settings)};
+    double lo, hi;
+    std::string rest;
+    if (!(in >> lo >> hi) || (in >> rest)) return std::nullopt;
+    if (!(lo >= 0 && hi > lo && hi <= 1e6)) return std::nullopt;
+    return TemperatureScale{Float(lo), Float(hi)};
 }
 
 double ThermalSensor::BlackbodyRadiance(double T) const {

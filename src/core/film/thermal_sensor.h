@@ -21,6 +21,9 @@
 //     e Lb(T) + (1 - e) Lb(T_refl) = L,  Lb(T) = integral over the band of B(lambda, T),
 //   so a surface of emissivity e surrounded by matter at T_refl reads its own temperature
 //   (Lb weighted by the response for "response").
+//   "float scalemin", "float scalemax" (K, both or neither): the temperatures the picture's
+//   palette spans (thermal_colormap.h), as a camera's fixed span; default: each frame's own
+//   range.
 #pragma once
 
 #include <optional>
@@ -28,6 +31,7 @@
 #include <string_view>
 
 #include "core/film/sensor_response.h"
+#include "core/film/thermal_colormap.h"
 #include "core/parser/file_loc.h"
 #include "spectral/sampled_spectrum.h"
 #include "spectral/spectral_range.h"
@@ -45,6 +49,12 @@ class ThermalSensor {
     const SpectralRange& Band() const { return band; }
     Float Emissivity() const { return emissivity; }
     Float ReflectedTemperature() const { return reflectedTemperature; }
+    // The picture's fixed palette span (nullopt: the frame's range)
+    const std::optional<TemperatureScale>& PictureScale() const { return pictureScale; }
+    // The span as text for an image's metadata ("kiln:thermalscale": "lo hi"), and back
+    // (nullopt if absent or malformed): kiln convert draws the same picture from the EXR.
+    static std::string ScaleSettings(const TemperatureScale& s);
+    static std::optional<TemperatureScale> ScaleFromSettings(std::string_view settings);
 
     // The response ("response" sensors; nullptr for a flat band)
     const SensorResponse* Response() const { return response ? &*response : nullptr; }
@@ -75,6 +85,7 @@ class ThermalSensor {
     SpectralRange band;
     Float emissivity = 1, reflectedTemperature = 0;
     std::optional<SensorResponse> response;
+    std::optional<TemperatureScale> pictureScale;
 };
 
 }  // namespace kiln

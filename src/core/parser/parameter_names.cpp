@@ -166,6 +166,8 @@ constexpr std::string_view kNames[] = {
     "samplelights",
     "savefp16",
     "scale",
+    "scalemax",
+    "scalemin",
     "scheme",
     "screenwindow",
     "seed",
