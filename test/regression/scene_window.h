@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -79,13 +81,31 @@ inline std::vector<std::string> SceneFiles() {
     return files;
 }
 
-// The first scene file of every folder under scenes/ (one of each kind).
+// One scene file of every folder under scenes/ (one of each kind): the first whose text names
+// no medium ("MakeNamedMedium") and no absorbing glass (a "spectrum k" of kiln's named glasses,
+// which scene creation fills with media), or the folder's first if every one does. Compressed
+// scenes (.pbrt.gz) are read as names only.
 inline std::vector<std::string> OneScenePerFolder() {
+    auto hasMedia = [](const std::string& file) {
+        if (file.size() > 3 && file.compare(file.size() - 3, 3, ".gz") == 0) return false;
+        std::ifstream in(file);
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        return text.find("MakeNamedMedium") != std::string::npos ||
+               text.find("\"spectrum k\" \"glass-") != std::string::npos;
+    };
     std::vector<std::string> files, all = SceneFiles();
-    for (const std::string& f : all)
+    std::vector<bool> chosenHasMedia;
+    for (const std::string& f : all) {
+        bool media = hasMedia(f);
         if (files.empty() || std::filesystem::path(files.back()).parent_path() !=
-                                 std::filesystem::path(f).parent_path())
+                                 std::filesystem::path(f).parent_path()) {
             files.push_back(f);
+            chosenHasMedia.push_back(media);
+        } else if (chosenHasMedia.back() && !media) {
+            files.back() = f;
+            chosenHasMedia.back() = false;
+        }
+    }
     return files;
 }
 
