@@ -86,10 +86,11 @@ oiiotool "$tmp/lava-smoke.png" --resize 66.67% -o "$out/lava-smoke.png"
 fi
 [ "$mode" = media ] && exit 0
 # Infrared (docs/guide/infrared.md): a 653 nm pyrometer's temperatures of hot tungsten wires;
-# a car at night in LWIR (README)
+# a car at night in LWIR (README); a furnace through view ports in MWIR
 if [ "$mode" = all ] || [ "$mode" = infrared ]; then
 render "$root/scenes/infrared/pyrometer-filament.pbrt" "$out/pyrometer-filament.png"
 render "$root/scenes/infrared/car-lwir.pbrt" "$out/car-lwir.png"
+render "$root/scenes/infrared/furnace-mwir.pbrt" "$out/furnace-mwir.png"
 fi
 [ "$mode" = infrared ] && exit 0
 # Temperature fields (scenes/thermal/): gradient, per-vertex lava, heat map, cooling blade
