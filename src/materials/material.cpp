@@ -111,32 +111,81 @@ std::string MetalWithTemperatureModel(const TextureParameterDictionary& params,
     return symbol;
 }
 
+// "float opticaltemperature" (kelvin; 0 if absent): the temperature of the constants wherever
+// the surface is
+Float OpticalTemperature(const TextureParameterDictionary& params) {
+    if (!params.Has("opticaltemperature")) return 0;
+    Float fixed = params.GetOneFloat("opticaltemperature", 0);
+    if (!(fixed >= 0 && fixed < 1e5f))
+        throw SceneError(params.Loc("opticaltemperature"),
+                         "\"opticaltemperature\" must be kelvin from 0 to 1e5",
+                         "opticaltemperature");
+    return fixed;
+}
+
+// "string nkfiles" and "float nktemperatures": n and k measured at several temperatures
+// (spectral/nk_file.h), one file per temperature
+const MetalTemperatureTable* ReadMeasuredConstants(const TextureParameterDictionary& params,
+                                                   const FileLoc& loc, ObjectArena& arena) {
+    std::vector<std::string> files = params.GetFilenameArray("nkfiles");
+    std::vector<Float> temperatures = params.GetFloatArray("nktemperatures");
+    FileLoc at = params.Loc("nkfiles", loc);
+    if (files.size() < 2 || temperatures.size() != files.size())
+        throw SceneError(at,
+                         "\"nkfiles\" takes two or more files, and \"nktemperatures\" one "
+                         "temperature (kelvin) for each",
+                         "nkfiles");
+    for (const char* other : {"eta", "k", "reflectance"})
+        if (params.Has(other))
+            throw SceneError(
+                params.Loc(other, loc),
+                std::string("\"nkfiles\" gives the conductor's n and k; it takes no \"") + other +
+                    "\"",
+                other);
+    for (size_t i = 0; i < temperatures.size(); ++i)
+        if (!(temperatures[i] > 0 && temperatures[i] < 1e5f) ||
+            (i > 0 && !(temperatures[i] > temperatures[i - 1])))
+            throw SceneError(params.Loc("nktemperatures", loc),
+                             "\"nktemperatures\" must be kelvin from 0 to 1e5, increasing",
+                             "nktemperatures");
+    std::vector<std::pair<Float, NkTable>> measurements;
+    for (size_t i = 0; i < files.size(); ++i) {
+        try {
+            measurements.emplace_back(temperatures[i], ReadNkFile(files[i]));
+        } catch (const std::exception& e) {
+            throw SceneError(at, e.what(), files[i]);
+        }
+    }
+    return arena.New<MetalTemperatureTable>(MetalTemperatureTable::FromMeasurements(measurements));
+}
+
 // A conductor's eta/k (Cu by default) or "reflectance"; SceneError when both are given. The
-// named metals with a temperature model become textures that follow the surface's temperature,
-// or the temperature "float opticaltemperature" fixes (kelvin; at or below room temperature:
-// the named tables) (for "conductor"; coatedconductor keeps the named tables, as its
-// emissivity tables hold the conductor's constants fixed).
+// named metals with a temperature model, and constants measured at several temperatures
+// ("nkfiles"), become textures that follow the surface's temperature, or the temperature
+// "float opticaltemperature" fixes (kelvin; for named metals at or below room temperature: the
+// named tables) (for "conductor"; coatedconductor keeps the named tables, as its emissivity
+// tables hold the conductor's constants fixed).
 struct ConductorSpec {
     std::optional<SpectrumTexture> eta, k, reflectance;
 };
 ConductorSpec GetConductor(const TextureParameterDictionary& params, const std::string& prefix,
                            const FileLoc& loc, ObjectArena& arena) {
     ConductorSpec c;
+    using Part = SpectrumMetalTemperatureTexture::Part;
+    if (prefix.empty() && params.Has("nkfiles")) {
+        const MetalTemperatureTable* table = ReadMeasuredConstants(params, loc, arena);
+        Float fixed = OpticalTemperature(params);
+        c.eta = arena.New<SpectrumMetalTemperatureTexture>(table, Part::Eta, fixed);
+        c.k = arena.New<SpectrumMetalTemperatureTexture>(table, Part::K, fixed);
+        return c;
+    }
     if (std::string symbol = MetalWithTemperatureModel(params, prefix);
         prefix.empty() && !symbol.empty() && !params.Has("reflectance")) {
         const MetalTemperatureTable* table = MetalTemperatureTable::Find(symbol);
-        Float fixed = 0;
-        if (params.Has("opticaltemperature")) {
-            fixed = params.GetOneFloat("opticaltemperature", 0);
-            if (!(fixed >= 0 && fixed < 1e5f))
-                throw SceneError(params.Loc("opticaltemperature"),
-                                 "\"opticaltemperature\" must be kelvin from 0 to 1e5",
-                                 "opticaltemperature");
-        }
+        Float fixed = OpticalTemperature(params);
         if (!params.Has("opticaltemperature") || fixed > table->RoomTemperature()) {
             params.GetSpectrumTextureOrNull("eta", SpectrumType::Unbounded, arena);  // looked up
             params.GetSpectrumTextureOrNull("k", SpectrumType::Unbounded, arena);
-            using Part = SpectrumMetalTemperatureTexture::Part;
             c.eta = arena.New<SpectrumMetalTemperatureTexture>(table, Part::Eta, fixed);
             c.k = arena.New<SpectrumMetalTemperatureTexture>(table, Part::K, fixed);
             return c;

@@ -289,6 +289,55 @@ std::optional<MetalTemperatureTable> MetalTemperatureTable::Create(std::string_v
     return table;
 }
 
+MetalTemperatureTable MetalTemperatureTable::FromMeasurements(
+    const std::vector<std::pair<Float, NkTable>>& measurements) {
+    // Each measurement's n and k as spectra holding their ends, and its permittivity
+    std::vector<std::pair<PiecewiseLinearSpectrum, PiecewiseLinearSpectrum>> nk;
+    for (const auto& [T, t] : measurements) {
+        nk.emplace_back(PiecewiseLinearSpectrum(t.lambdas, t.n),
+                        PiecewiseLinearSpectrum(t.lambdas, t.k));
+        nk.back().first.HoldEndsBeyondVisible();
+        nk.back().second.HoldEndsBeyondVisible();
+    }
+    auto eps = [&](size_t m, double lambda) {
+        Complex n(nk[m].first(Float(lambda)), nk[m].second(Float(lambda)));
+        return n * n;
+    };
+    MetalTemperatureTable table;
+    table.symbol = "";
+    table.ownEta = std::make_shared<const Spectrum>(nk[0].first);
+    table.ownK = std::make_shared<const Spectrum>(nk[0].second);
+    table.namedEta = table.ownEta.get();
+    table.namedK = table.ownK.get();
+    const double lo = std::log(double(kSpectralRangeMin)), hi = std::log(double(kSpectralRangeMax));
+    const int nLambda = int(std::ceil((hi - lo) / std::log(1.01))) + 1;
+    std::vector<float> logLambdas(static_cast<size_t>(nLambda));
+    for (int i = 0; i < nLambda; ++i)
+        logLambdas[size_t(i)] = float(lo + (hi - lo) * i / (nLambda - 1));
+    const double first = measurements.front().first, last = measurements.back().first;
+    const int nT = int(std::ceil((last - first) / 25)) + 1;
+    std::vector<float> Ts(static_cast<size_t>(nT));
+    for (int j = 0; j < nT; ++j) Ts[size_t(j)] = float(first + (last - first) * j / (nT - 1));
+    Ts.back() = float(last);
+    table.w.assign(size_t(nT), 1.f);
+    table.change.resize(size_t(nT * nLambda));
+    size_t m = 0;
+    for (int j = 0; j < nT; ++j) {
+        const double T = Ts[size_t(j)];
+        while (m + 2 < measurements.size() && T > measurements[m + 1].first) ++m;
+        const double T0 = measurements[m].first, T1 = measurements[m + 1].first;
+        const double t = std::clamp((T - T0) / (T1 - T0), 0.0, 1.0);
+        for (int i = 0; i < nLambda; ++i) {
+            const double lambda = std::exp(double(logLambdas[size_t(i)]));
+            Complex e = (1 - t) * eps(m, lambda) + t * eps(m + 1, lambda);
+            table.change[size_t(j * nLambda + i)] = std::complex<float>(e - eps(0, lambda));
+        }
+    }
+    table.logLambdas = TableAxis(std::move(logLambdas));
+    table.temperatures = TableAxis(std::move(Ts));
+    return table;
+}
+
 void MetalTemperatureTable::Evaluate(const SampledWavelengths& lambda, Float T,
                                      SampledSpectrum* eta, SampledSpectrum* k) const {
     *eta = namedEta->Sample(lambda);

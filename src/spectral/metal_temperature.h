@@ -31,11 +31,14 @@
 #pragma once
 
 #include <complex>
+#include <memory>
 #include <optional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "base/table_axis.h"
+#include "spectral/nk_file.h"
 #include "spectral/sampled_spectrum.h"
 
 namespace kiln {
@@ -60,6 +63,13 @@ class MetalTemperatureTable {
     // The table of W, Au or Ag (built on first use, for the program's life); nullptr for
     // metals without a temperature model.
     static const MetalTemperatureTable* Find(std::string_view symbol);
+    // A metal measured at several temperatures (K, strictly increasing, at least two; a
+    // conductor's "nkfiles"): at and below the first, its table (the "named" eta and k here);
+    // between two, the permittivity (n + i k)^2 linear in T; above the last, the last's. Each
+    // table holds its end values beyond its wavelengths. Tabulated as the named metals, over
+    // 300 nm - 20 um and from the first to the last temperature in steps of at most 25 K.
+    static MetalTemperatureTable FromMeasurements(
+        const std::vector<std::pair<Float, NkTable>>& measurements);
 
     // n and k at the wavelengths lambda and temperature T (kelvin; <= room temperature, or 0
     // for none: the named tables' values).
@@ -79,6 +89,7 @@ class MetalTemperatureTable {
     std::string_view symbol;
     const Spectrum* namedEta = nullptr;
     const Spectrum* namedK = nullptr;
+    std::shared_ptr<const Spectrum> ownEta, ownK;  // measured tables: the first's
     TableAxis logLambdas, temperatures;
     std::vector<float> w;                     // [T]
     std::vector<std::complex<float>> change;  // C as [T][lambda]

@@ -40,6 +40,10 @@ std::optional<Spectrum> TextureParameterDictionary::GetOneSpectrum(const std::st
 std::vector<Float> TextureParameterDictionary::GetFloatArray(const std::string& name) const {
     return dict->GetFloatArray(name);
 }
+std::vector<std::string> TextureParameterDictionary::GetFilenameArray(
+    const std::string& name) const {
+    return dict->GetFilenameArray(name);
+}
 std::vector<std::string> TextureParameterDictionary::GetStringArray(const std::string& name) const {
     return dict->GetStringArray(name);
 }

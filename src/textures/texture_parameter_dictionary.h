@@ -29,6 +29,7 @@ class TextureParameterDictionary {
     bool GetOneBool(const std::string& name, bool def) const;
     std::string GetOneString(const std::string& name, const std::string& def) const;
     std::string GetOneFilename(const std::string& name, const std::string& def) const;
+    std::vector<std::string> GetFilenameArray(const std::string& name) const;
     Point3f GetOnePoint3f(const std::string& name, Point3f def) const;
     Vector3f GetOneVector3f(const std::string& name, Vector3f def) const;
     std::optional<Spectrum> GetOneSpectrum(const std::string& name, std::optional<Spectrum> def,

@@ -118,6 +118,14 @@ const Case kCases[] = {
     {"tungsten, smooth, constants at temperature",
      "\"conductor\" \"spectrum eta\" \"metal-W-eta\" \"spectrum k\" \"metal-W-k\" "
      "\"float roughness\" 0"},
+    // n and k measured at two temperatures (a made-up metal: measured_constants_test.cpp):
+    // between them at 1000 K, the last one's at 5000 K; rough, so its emissivity tables span
+    // temperature
+    {"measured constants at two temperatures, rough",
+     "\"conductor\" \"string nkfiles\" [\"" KILN_SOURCE_DIR
+     "/test/render/data/fictional_metal_300K.csv\" \"" KILN_SOURCE_DIR
+     "/test/render/data/fictional_metal_1500K.csv\"] \"float nktemperatures\" [300 1500] "
+     "\"float roughness\" 0.1"},
 };
 
 // Polarised transport: the cavity must also be unpolarised. Reflection from metals polarises
@@ -173,8 +181,8 @@ INSTANTIATE_TEST_SUITE_P(Cavities, Equilibrium,
 INSTANTIATE_TEST_SUITE_P(Cavities, PolarizedEquilibrium,
                          ::testing::ValuesIn(testing::AlternatingGeometry<Case>(
                              {kCases[0], kCases[1], kCases[2], kCases[3], kCases[4], kCases[5],
-                              kCases[6], kCases[8], kCases[9], kCases[11], kCases[12],
-                              kCases[std::size(kCases) - 1]})),
+                              kCases[6], kCases[8], kCases[9], kCases[11], kCases[12], kCases[15],
+                              kCases[16]})),
                          testing::CavityCaseName<Case>);
 
 }  // namespace

@@ -258,6 +258,14 @@ std::vector<uint8_t> ParameterDictionary::GetBoolArray(const std::string& name) 
     return ToArray<uint8_t>(*p, p->bools, 1, [](const uint8_t* v) { return v[0]; });
 }
 
+std::vector<std::string> ParameterDictionary::GetFilenameArray(const std::string& name) const {
+    const ParsedParameter* p = Find(name, "string");
+    if (!p) return {};
+    std::vector<std::string> files = GetStringArray(name);
+    for (std::string& f : files) f = ResolveFilename(p->searchDirectory, f);
+    return files;
+}
+
 std::vector<std::string> ParameterDictionary::GetStringArray(const std::string& name) const {
     const ParsedParameter* p = Find(name, "string");
     if (!p) return {};

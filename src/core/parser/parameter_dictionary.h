@@ -46,6 +46,8 @@ class ParameterDictionary {
     // A "string" parameter naming a file, resolved against the parameter's searchDirectory
     // (ResolveFilename); def (unresolved) if absent.
     std::string GetOneFilename(const std::string& name, const std::string& def) const;
+    // A "string" array of file names, each resolved as GetOneFilename's.
+    std::vector<std::string> GetFilenameArray(const std::string& name) const;
     Point2f GetOnePoint2f(const std::string& name, Point2f def) const;
     Vector2f GetOneVector2f(const std::string& name, Vector2f def) const;
     Point3f GetOnePoint3f(const std::string& name, Point3f def) const;

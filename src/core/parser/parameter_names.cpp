@@ -132,6 +132,8 @@ constexpr std::string_view kNames[] = {
     "mutationsperpixel",
     "name",
     "nbuckets",
+    "nkfiles",
+    "nktemperatures",
     "normalmap",
     "nsamples",
     "nx",
