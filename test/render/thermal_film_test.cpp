@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -294,6 +295,56 @@ TEST(ThermalFilm, PicturesKeepAFixedScale) {
         EXPECT_NEAR(again.GetChannel({16, 16}, c), picture.GetChannel({16, 16}, c), 0.01f);
 }
 
+// "stokes": the in-band Stokes components. A smooth metal plate (n = k = 3 at every
+// wavelength) at 1000 K turned 60 degrees about the vertical, seen through a 2 um pyrometer
+// with nothing else in the scene, emits (1 - Rs) and (1 - Rp) of Planck's radiance polarised
+// across and along its plane of emission (horizontal here): S1 / S0 = (Rs - Rp) / (2 - Rs -
+// Rp), S2 = S3 = 0, S0 = L.
+TEST(ThermalFilm, StokesLayersHoldThePolarisedEmission) {
+    testing::RenderedScene r = testing::RenderText(
+        "Film \"thermal\" \"string sensor\" \"pyrometer\" \"float wavelength\" 2000 "
+        "\"integer xresolution\" 8 \"integer yresolution\" 8 \"bool stokes\" true\n"
+        "Sampler \"zsobol\" \"integer pixelsamples\" 16\n"
+        "Integrator \"path\" \"integer maxdepth\" 1\n"
+        "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"orthographic\" \"float screenwindow\" [-0.2 0.2 "
+        "-0.2 0.2]\n"
+        "WorldBegin\n"
+        "Rotate 60 0 1 0\n"
+        "Material \"conductor\" \"spectrum eta\" [300 3 20000 3] \"spectrum k\" [300 3 20000 3] "
+        "\"float roughness\" 0\n"
+        "Shape \"bilinearmesh\" \"point3 P\" [-2 -2 0  2 -2 0  -2 2 0  2 2 0] "
+        "\"float temperature\" 1000\n");
+    for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
+    ASSERT_TRUE(r.scene->features.polarized);
+    Image img = r.scene->job->film->GetImage(nullptr);
+    int S[4], L = img.ChannelIndex("L");
+    for (int k = 0; k < 4; ++k) {
+        S[k] = img.ChannelIndex("S" + std::to_string(k));
+        ASSERT_GE(S[k], 0) << k;
+    }
+    std::complex<double> eta(3, 3);
+    double cosI = 0.5, sin2 = 0.75;
+    std::complex<double> cosT = std::sqrt(1.0 - sin2 / (eta * eta));
+    double Rs = std::norm((cosI - eta * cosT) / (cosI + eta * cosT));
+    double Rp = std::norm((eta * cosI - cosT) / (eta * cosI + cosT));
+    double expected = (Rs - Rp) / (2 - Rs - Rp);
+    RunningStats s1, s2, s3;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            double s0 = img.GetChannel({x, y}, S[0]);
+            EXPECT_EQ(s0, img.GetChannel({x, y}, L));
+            s1.Add(img.GetChannel({x, y}, S[1]) / s0);
+            s2.Add(img.GetChannel({x, y}, S[2]) / s0);
+            s3.Add(img.GetChannel({x, y}, S[3]) / s0);
+        }
+    std::printf("stokes at 60 degrees: s1 %.5f (expected %.5f), s2 %.5f, s3 %.5f\n", s1.Mean(),
+                expected, s2.Mean(), s3.Mean());
+    EXPECT_NEAR(s1.Mean(), expected, 1e-3);
+    EXPECT_GT(expected, 0.1);
+    EXPECT_NEAR(s2.Mean(), 0, 1e-3);
+    EXPECT_NEAR(s3.Mean(), 0, 1e-3);
+}
+
 // The parameters are checked where they are written
 TEST(ThermalFilm, BadParametersAreLocatedErrors) {
     auto error = [](const std::string& film) -> std::string {
@@ -320,7 +371,8 @@ TEST(ThermalFilm, BadParametersAreLocatedErrors) {
                     "\"float lambdamax\" 800")
                   .find("lambdamin"),
               std::string::npos);
-    EXPECT_NE(error("Film \"thermal\"\n  \"bool stokes\" true").find("line 2"), std::string::npos);
+    EXPECT_NE(error("Film \"thermal\"\n  \"bool writeaovs\" true").find("line 2"),
+              std::string::npos);
     EXPECT_NE(error("Film \"thermal\" \"float scalemin\" 300").find("both"), std::string::npos);
     EXPECT_NE(error("Film \"thermal\" \"float scalemin\" 300 \"float scalemax\" 300")
                   .find("scalemin < scalemax"),

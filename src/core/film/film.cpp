@@ -28,13 +28,9 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
         o.thermal = ThermalSensor::Create(params, loc);
         if (std::string why = ThermalOutputFormatProblem(o.filename); !why.empty())
             throw SceneError(params.Loc("filename", loc), why, o.filename);
-        for (const char* name : {"stokes", "writeaovs"})
-            if (params.GetOneBool(name, false))
-                throw SceneError(params.Loc(name),
-                                 "the thermal film does not record \"" + std::string(name) + "\"",
-                                 name);
-        if (request.stokes.value_or(false))
-            throw SceneError(loc, "the thermal film does not record Stokes layers", "thermal");
+        if (params.GetOneBool("writeaovs", false))
+            throw SceneError(params.Loc("writeaovs"),
+                             "the thermal film does not record \"writeaovs\"", "writeaovs");
         if (params.GetOneFloat("exposure", 0) != 0)
             throw SceneError(params.Loc("exposure"),
                              "the thermal film records radiance and temperature, without "
@@ -356,13 +352,20 @@ Image RGBFilm::GetImage(ImageMetadata* metadata) const {
     const Bounds2i& b = opts.pixelBounds;
     Point2i res(b.pMax.x - b.pMin.x, b.pMax.y - b.pMin.y);
     if (opts.thermal) {
-        // In-band radiance and the temperature the sensor reports
-        Image image(PixelFormat::Float, res, {"L", "T"});
+        // In-band radiance and the temperature the sensor reports; with "stokes" the in-band
+        // Stokes components S0 (= L) ... S3
+        std::vector<std::string> names = {"L", "T"};
+        if (!stokesPixels.empty()) names.insert(names.end(), {"S0", "S1", "S2", "S3"});
+        Image image(PixelFormat::Float, res, names);
         for (int y = 0; y < res.y; ++y)
             for (int x = 0; x < res.x; ++x) {
-                Float L = GetPixelRGB({x + b.pMin.x, y + b.pMin.y}).r;
+                Point2i p(x + b.pMin.x, y + b.pMin.y);
+                Float L = GetPixelRGB(p).r;
                 image.SetChannel({x, y}, 0, L);
                 image.SetChannel({x, y}, 1, Float(opts.thermal->ApparentTemperature(L)));
+                if (stokesPixels.empty()) continue;
+                image.SetChannel({x, y}, 2, L);
+                for (int k = 1; k < 4; ++k) image.SetChannel({x, y}, 2 + k, GetPixelStokes(p, k).r);
             }
         if (metadata) {
             metadata->pixelBounds = b;

@@ -101,7 +101,8 @@ class RGBFilm {
     // renders the sensor's band (Range), each pixel the in-band radiance (W m^-2 sr^-1), and the
     // EXR has channels L (that radiance) and T (the apparent temperature the sensor reports, K);
     // other picture formats (PNG, JPEG, ...) get T colour-mapped with a scale bar
-    // (thermal_colormap.h); not PFM or HDR. No "stokes", AOVs or "exposure". type: "rgb" |
+    // (thermal_colormap.h); not PFM or HDR. With "stokes" the EXR also has S0 (= L), S1, S2,
+    // S3, the in-band Stokes components (W m^-2 sr^-1). No AOVs or "exposure". type: "rgb" |
     // "gbuffer" | "spectral" | "thermal"; others warn and use "rgb". exposureTime: camera shutter
     // interval, s. colorSpace: output colour space (nullptr: sRGB). Throws SceneError. request:
     // what the render asks besides the scene's parameters (RenderOptions): pixel bounds that

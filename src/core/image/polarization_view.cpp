@@ -48,16 +48,20 @@ std::vector<std::pair<std::string, Image>> PolarizationViews(const Image& stokes
                                {"S1.R", "S1.G", "S1.B"},
                                {"S2.R", "S2.G", "S2.B"},
                                {"S3.R", "S3.G", "S3.B"}};
+    // A thermal film's Stokes layers are single channels of in-band radiance, S0 ... S3
+    const bool thermal = stokes.ChannelIndex("S0") >= 0 && stokes.ChannelIndex("S1") >= 0 &&
+                         stokes.ChannelIndex("S2") >= 0 && stokes.ChannelIndex("S3") >= 0;
+    const char* single[4] = {"S0", "S1", "S2", "S3"};
     for (int k = 0; k < 4; ++k)
         for (int c = 0; c < 3; ++c) {
-            channel[k][c] = stokes.ChannelIndex(names[k][c]);
+            channel[k][c] = stokes.ChannelIndex(thermal ? single[k] : names[k][c]);
             if (channel[k][c] < 0)
                 throw std::runtime_error(
                     "the image has no Stokes layers (render with Film \"bool stokes\" true or "
                     "kiln --stokes)");
         }
     Point2i res = stokes.Resolution();
-    // Luminance Stokes vectors
+    // Luminance (or in-band radiance) Stokes vectors
     std::vector<Float> S(size_t(res.x) * res.y * 4);
     for (int y = 0; y < res.y; ++y)
         for (int x = 0; x < res.x; ++x)
@@ -65,7 +69,7 @@ std::vector<std::pair<std::string, Image>> PolarizationViews(const Image& stokes
                 RGB rgb(stokes.GetChannel({x, y}, channel[k][0]),
                         stokes.GetChannel({x, y}, channel[k][1]),
                         stokes.GetChannel({x, y}, channel[k][2]));
-                S[(size_t(y) * res.x + x) * 4 + k] = colorSpace.ToXYZ(rgb).Y;
+                S[(size_t(y) * res.x + x) * 4 + k] = thermal ? rgb.r : colorSpace.ToXYZ(rgb).Y;
             }
     std::vector<Float> intensities;
     for (size_t i = 0; i < S.size(); i += 4)

@@ -1,7 +1,8 @@
 // Pictures of the polarisation in a rendered image with Stokes layers (film "stokes": channels
 // S0.R ... S3.B, linear, in the film's colour space; film.h).
 //
-// Each pixel's Stokes vector is reduced to luminance, S_k = Y of the RGB of layer k, and
+// Each pixel's Stokes vector is reduced to luminance, S_k = Y of the RGB of layer k (a thermal
+// film's single channels S0 ... S3 of in-band radiance are taken as they are), and
 // normalised, s_k = S_k / S0, giving
 //   degree of polarisation           DoP  = sqrt(s1^2 + s2^2 + s3^2),
 //   degree of linear polarisation    DoLP = sqrt(s1^2 + s2^2),
@@ -37,7 +38,8 @@ namespace kiln {
 class RGBColorSpace;
 
 // (name, picture) for dolp, aolp, dop, aop, type, chirality, in that order.
-// stokes: an image with the channels S0.R ... S3.B; throws std::runtime_error without them.
+// stokes: an image with the channels S0.R ... S3.B (or S0 ... S3); throws std::runtime_error
+// without them.
 std::vector<std::pair<std::string, Image>> PolarizationViews(const Image& stokes,
                                                              const RGBColorSpace& colorSpace,
                                                              Float darkFraction = 1e-3f);
