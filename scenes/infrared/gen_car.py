@@ -27,12 +27,12 @@ SCENE = r"""# Written by gen_car.py (edit that and run it: gen_car.py > car-lwir
 #
 # What the camera reports (the T channel, the temperature of a blackbody of the same in-band
 # radiance; the camera's emissivity setting 1, as cameras come):
-#   - the roof, bonnet and tailgate read colder than the air: their glossy clear coat reflects
+#   - the roof and the tailgate read colder than the air: their glossy clear coat reflects
 #     the cold sky (more at grazing angles), and the paint beneath emits 1 minus what the coat
 #     and the paint reflect (Kirchhoff from the same coated BSDF);
 #   - the windows are opaque at 8-14 um (soda-lime glass absorbs there: "spectrum k"
 #     "glass-soda-lime-k"), so the camera sees neither into the car nor through the glass, but
-#     the glass's own emission and, near 9 um where glass reflects up to 50 %, the sky;
+#     the glass's own emission and what it reflects of the sky (up to 25 % near 9.5 um);
 #   - the warm parts stand out by their temperature, the rubber (emissivity about 0.95) reading
 #     close to its own; the aluminium wheel hubs, hotter, read far below theirs (their
 #     emissivity at 10 um is about 0.02: they mostly reflect the tyres and the ground);

@@ -49,10 +49,11 @@ TEST(AbsorbingGlass, EmitsOneMinusItsComplexFresnelReflectanceWhereItIsOpaque) {
     EXPECT_NEAR(ratio, 1, 4 * se + 1e-3);
 }
 
-// A closed cavity at 300 K in LWIR holding smooth soda-lime glass and rough fused silica, both
-// at the ambient temperature (their media take it): in their absorption bands near 9 um the
-// glass reflects up to 50 % and emits the rest, beyond them it is partly transparent; the
-// in-band radiance must be Planck's integral all the same.
+// A closed cavity at 300 K in LWIR holding smooth soda-lime glass and fused silica, both at the
+// ambient temperature (their media take it): opaque at 8-14 um, they reflect up to 25 % and 72 %
+// at normal incidence and emit the rest, and where their real index is below 1 their surfaces
+// emit too (material_albedo.h); the in-band radiance must be Planck's integral all the same.
+// (Smooth: rough glass loses the microfacet model's energy without emitting it.)
 TEST(AbsorbingGlass, CavityRendersTheBlackbodyInLwir) {
     const double T = 300;
     std::ostringstream s;
