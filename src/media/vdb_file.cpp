@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -166,8 +167,10 @@ VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityN
         fail(e.what());
     }
     double allowance = budget ? budget->Remaining() : PhysicalMemoryBytes() / 2;
-    // Time to read it: 2 s of CPU and 1 s per 10 MB (OpenVDB reads hundreds of MB/s), and as
-    // long again of wall time for the first answer (a child that hangs is ended)
+    // Time to read it: 2 s of CPU and 1 s per 10 MB (OpenVDB reads hundreds of MB/s). A child
+    // that hangs without spending CPU time is ended after ten times that, at least 30 s, of wall
+    // time: on a loaded machine starting the child and OpenVDB alone can take seconds (4 s
+    // once, under a parallel test suite), which is no sign of a damaged file
     std::error_code ec;
     double fileBytes = double(std::filesystem::file_size(filename, ec));
     double cpuSeconds = 2 + (ec ? 0 : fileBytes / 10e6);
@@ -210,11 +213,13 @@ VDBVolume ReadVDBVolume(const std::string& filename, const std::string& densityN
     };
     pollfd ready{reap.fd, POLLIN, 0};
     int polled;
-    while ((polled = poll(&ready, 1, int(2000 * cpuSeconds))) < 0 && errno == EINTR) {
+    const double wallSeconds = std::max(30.0, 10 * cpuSeconds);
+    while ((polled = poll(&ready, 1, int(1000 * std::min(wallSeconds, 2e6)))) < 0 &&
+           errno == EINTR) {
     }
     if (polled == 0) {
         kill(reap.child, SIGKILL);
-        fail("OpenVDB did not finish reading it in " + std::to_string(int(2 * cpuSeconds)) +
+        fail("OpenVDB did not finish reading it in " + std::to_string(int(wallSeconds)) +
              " s: the file is damaged");
     }
     VDBHeader h;
