@@ -118,7 +118,9 @@ void CreateAbsorbingGlassMedia(
         }
         std::string& name = shared[{material, constant}];
         if (name.empty() || constant == -2) {
-            name = kAbsorbingGlassMediumPrefix + s.loc.ToString();
+            // Unique (two bodies on one line of a scene may need two media)
+            name =
+                kAbsorbingGlassMediumPrefix + std::to_string(media.size()) + "@" + s.loc.ToString();
             auto it = absorption.find(material);
             if (it == absorption.end())
                 it = absorption.emplace(material, AbsorptionOfExtinction(*k)).first;

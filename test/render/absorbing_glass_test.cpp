@@ -7,9 +7,11 @@
 // it in the visible).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
+#include "../temp_dir.h"
 #include "base/statistics.h"
 #include "render/scene_media.h"
 #include "render_test_util.h"
@@ -105,6 +107,41 @@ TEST(AbsorbingGlass, BodiesShareTheirMediumAndOwnMediaStay) {
     for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
     // "melt", one medium for the two cold spheres, one for the hot one
     EXPECT_EQ(r.scene->media.size(), 3u);
+}
+
+// One shape directive making two bodies at different temperatures (a file included twice: the
+// same file, line and column), each glowing at its own: opaque soda-lime at 9.6 um (emissivity
+// 0.756 head-on), 700 K on the left and 800 K on the right, reads about 627 K and 709 K where
+// it faces the camera
+TEST(AbsorbingGlass, BodiesOfOneDirectiveKeepTheirTemperatures) {
+    test::TempDir dir;
+    dir.Write("ball.pbrt", "Shape \"sphere\" \"float radius\" 0.5\n");
+    const std::string ball = "Include \"" + (dir.path / "ball.pbrt").string() + "\"\n";
+    testing::RenderedScene r = testing::RenderText(
+        "Film \"thermal\" \"string sensor\" \"pyrometer\" \"float wavelength\" 9600 "
+        "\"integer xresolution\" 16 \"integer yresolution\" 8\n"
+        "Sampler \"zsobol\" \"integer pixelsamples\" 4\n"
+        "LookAt 0 0 -15  0 0 0  0 1 0\n"
+        "Camera \"orthographic\" \"float screenwindow\" [-2 2 -1 1]\n"
+        "WorldBegin\n"
+        "Material \"dielectric\" \"spectrum eta\" \"glass-soda-lime-eta\" \"spectrum k\" "
+        "\"glass-soda-lime-k\"\n"
+        "AttributeBegin Translate -1 0 0 Attribute \"shape\" \"float temperature\" 700\n" +
+        ball +
+        "AttributeEnd\n"
+        "AttributeBegin Translate 1 0 0 Attribute \"shape\" \"float temperature\" 800\n" +
+        ball + "AttributeEnd\n");
+    for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
+    Image img = r.scene->job->film->GetImage(nullptr);
+    Float left = 0, right = 0;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 16; ++x) {
+            Float T = img.GetChannel({x, y}, img.ChannelIndex("T"));
+            Float& side = x < 8 ? left : right;
+            side = std::max(side, T);
+        }
+    EXPECT_NEAR(left, 627, 10);
+    EXPECT_NEAR(right, 709, 10);
 }
 
 }  // namespace
