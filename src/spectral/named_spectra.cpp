@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "spectral/infrared_metal_data.h"
 #include "spectral/lorentz_drude.h"
 #include "spectral/named_spectra_data.h"
 #include "spectral/spectral_range.h"
@@ -16,10 +17,12 @@ namespace kiln {
 namespace {
 
 // A metal's table (metal-X-eta or metal-X-k) extended to 300 nm - 20 um with the Lorentz-Drude
-// model of Rakic et al. 1998 (lorentz_drude.h), where it has X: beyond each end of the table the
-// values go over linearly from the table's end value to the model's (within 15 % of the end's
-// wavelength below the table, 50 % above it), then follow the model. Tables of other names,
-// and metals the model lacks, come back unchanged (nullopt).
+// model of Rakic et al. 1998 (lorentz_drude.h), where it has X, else with measured infrared
+// constants (infrared_metal_data.h: iron): beyond each end of the table the values go over
+// linearly from the table's end value to the model's (within 15 % of the end's wavelength below
+// the table, 50 % above it), then follow the model; where the model has no value below the
+// table, the table holds its first value. Tables of other names, and metals with neither, come
+// back unchanged (nullopt).
 std::optional<std::vector<float>> ExtendedMetalTable(std::string_view name,
                                                      std::span<const float> interleaved) {
     if (!name.starts_with("metal-") || interleaved.size() < 4) return std::nullopt;
@@ -30,6 +33,7 @@ std::optional<std::vector<float>> ExtendedMetalTable(std::string_view name,
     if (part != "eta" && part != "k") return std::nullopt;
     auto model = [&](double lambda) -> std::optional<double> {
         std::optional<std::complex<double>> nk = LorentzDrudeIndex(symbol, lambda);
+        if (!nk) nk = MeasuredInfraredIndex(symbol, lambda);
         if (!nk) return std::nullopt;
         return part == "eta" ? nk->real() : nk->imag();
     };
@@ -38,7 +42,7 @@ std::optional<std::vector<float>> ExtendedMetalTable(std::string_view name,
     const double vStart = interleaved[1], vEnd = interleaved.back();
     std::vector<float> out;
     // Below the table: 300 nm up to it, in steps of at most 5 nm
-    if (start > kSpectralRangeMin) {
+    if (start > kSpectralRangeMin && model(kSpectralRangeMin)) {
         const double blend = start / 1.15;
         int n = int(std::ceil((start - kSpectralRangeMin) / 5));
         for (int i = 0; i < n; ++i) {

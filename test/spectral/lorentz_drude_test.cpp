@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "nk_csv.h"
@@ -78,6 +79,32 @@ TEST(LorentzDrude, NamedMetalsReachTwentyMicrometresWithoutSteps) {
         EXPECT_NEAR(named.real(), model.real(), 1e-3 * model.real());
         EXPECT_NEAR(named.imag(), model.imag(), 1e-3 * model.imag());
     }
+}
+
+// Iron, which the Lorentz-Drude fits lack, continues with Ordal et al.'s (1988) measured
+// constants (infrared_metal_data.h) beyond its table: without steps, and far beyond it their
+// values (polished iron's normal emissivity at 10 um about 0.034, where holding the table's
+// near-infrared end gave 0.6)
+TEST(LorentzDrude, IronContinuesWithMeasuredInfraredConstants) {
+    for (const char* part : {"-eta", "-k"}) {
+        const auto* pl =
+            GetNamedSpectrum(std::string("metal-Fe") + part)->GetIf<PiecewiseLinearSpectrum>();
+        ASSERT_NE(pl, nullptr);
+        EXPECT_GE(pl->Lambdas().back(), 20000);
+        std::span<const Float> l = pl->Lambdas(), v = pl->Values();
+        for (size_t i = 1; i < l.size(); ++i)
+            if (l[i - 1] >= 900)
+                ASSERT_LT(std::abs(v[i] - v[i - 1]), 0.1 * std::max(v[i], v[i - 1]) + 0.02)
+                    << part << " at " << l[i] << " nm";
+    }
+    for (auto [lambda, n, k] :
+         {std::tuple{2000.0, 3.8476, 6.7152}, std::tuple{10000.0, 7.0687, 27.902},
+          std::tuple{20000.0, 13.131, 53.124}}) {
+        std::complex<double> named = Named("Fe", lambda);
+        EXPECT_NEAR(named.real(), n, 5e-3 * n) << lambda;
+        EXPECT_NEAR(named.imag(), k, 5e-3 * k) << lambda;
+    }
+    EXPECT_NEAR(NormalEmissivity(Named("Fe", 10000)), 0.0335, 0.001);
 }
 
 // Aluminium's normal emissivity from 2 to 20 um against Rakic (1995)'s fit to other
