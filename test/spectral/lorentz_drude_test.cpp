@@ -84,7 +84,7 @@ TEST(LorentzDrude, NamedMetalsReachTwentyMicrometresWithoutSteps) {
 // Iron, which the Lorentz-Drude fits lack, continues with Ordal et al.'s (1988) measured
 // constants (infrared_metal_data.h) beyond its table: without steps, and far beyond it their
 // values (polished iron's normal emissivity at 10 um about 0.034, where holding the table's
-// near-infrared end gave 0.6)
+// near-infrared end, n 2.92 + 3.79i at 984 nm, gave 0.39)
 TEST(LorentzDrude, IronContinuesWithMeasuredInfraredConstants) {
     for (const char* part : {"-eta", "-k"}) {
         const auto* pl =
