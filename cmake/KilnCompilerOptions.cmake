@@ -38,10 +38,12 @@ if(KILN_SANITIZE)
     # Any report fails the run (no recovery)
     target_compile_options(kiln_options INTERFACE "$<${kiln_instrumented}:-fsanitize=address,undefined;-fno-sanitize-recover=all;-fno-omit-frame-pointer;$<$<CXX_COMPILER_ID:Clang>:-fsanitize-ignorelist=${PROJECT_SOURCE_DIR}/cmake/sanitizer-ignorelist.txt>>")
     target_link_options(kiln_options INTERFACE -fsanitize=address,undefined)
-    # The test executables at -O1: their own code (assertions, set-up) is not what the stage
-    # checks, and compiles about a quarter faster than at -O3
-    target_compile_options(kiln_options INTERFACE "$<$<NOT:${kiln_instrumented}>:-O1>")
 endif()
+# The test executables of a release build at -O1: their own code (set-up, assertions,
+# reference sums) is not what they measure, and a batch of test files compiles 40 % faster
+# than at -O3 (GCC 12: 7.4 s against 12.4 s); the code under test keeps -O3
+target_compile_options(kiln_options INTERFACE
+                       "$<$<AND:$<NOT:${kiln_instrumented}>,$<CONFIG:Release>>:-O1>")
 if(KILN_FUZZ)
     if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
         message(FATAL_ERROR "KILN_FUZZ needs clang (libFuzzer): configure with CXX=clang++")
