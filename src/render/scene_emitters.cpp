@@ -14,17 +14,6 @@
 
 namespace kiln {
 
-namespace {
-
-// Whether eta falls below 1 anywhere in range (at its ends and steps of 0.5 %)
-bool IndexBelowOne(const Spectrum& eta, const SpectralRange& range) {
-    for (double l = range.min; l < range.max; l *= 1.005)
-        if (eta(Float(l)) < 1) return true;
-    return eta(range.max) < 1;
-}
-
-}  // namespace
-
 ThermalEmitters::ThermalEmitters(const SceneShader& shader, EmissivityTables& tables,
                                  ObjectArena& arena, Diagnostics& diag,
                                  std::optional<EmissionModel> overrideModel, bool powerSampling,
@@ -83,20 +72,19 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
                       "\"string emission\" \"diffuse\" for a blackbody fibre)");
         return heat;
     }
-    if (model == EmissionModel::Kirchhoff && material->InteriorEta()) {
-        // A dielectric surface absorbs nothing: the body glows from its interior medium. So does
-        // absorbing glass, from the medium scene creation gave it (render/scene_media.h), but
-        // where its real index falls below 1 in the film's range, its surface absorbs light
-        // arriving outside the cone that refracts in, and emits it (material_albedo.h)
-        std::optional<Spectrum> k = material->InteriorExtinction();
-        if (!k || !IndexBelowOne(*material->InteriorEta(), tables.Range())) {
-            if (!heat.ambient && !k)
-                diag.Warn(entity.loc,
-                          "a hot dielectric surface absorbs nothing and so emits nothing; the "
-                          "body glows from a hot interior medium (MediumInterface, medium "
-                          "\"temperature\")");
-            return heat;
-        }
+    if (model == EmissionModel::Kirchhoff && material->InteriorEta() &&
+        !AlbedoOf(material, entity.loc)->SurfaceAbsorbs()) {
+        // A smooth dielectric surface absorbs nothing: the body glows from its interior
+        // medium. So does absorbing glass, from the medium scene creation gave it
+        // (render/scene_media.h), but where its real index falls below 1 in the film's range
+        // its surface absorbs light arriving outside the cone that refracts in, and a rough
+        // surface loses some of what it scatters: those surfaces emit (material_albedo.h)
+        if (!heat.ambient && !material->InteriorExtinction())
+            diag.Warn(entity.loc,
+                      "a hot smooth dielectric surface absorbs nothing and so emits nothing; the "
+                      "body glows from a hot interior medium (MediumInterface, medium "
+                      "\"temperature\")");
+        return heat;
     }
 #if KILN_THERMAL_EMISSION
     // Approach A: a black surface that only emits
@@ -166,7 +154,9 @@ const MaterialAlbedo* ThermalEmitters::AlbedoOf(const Material* material, const 
                   "a dispersive coat over a conductor: a Monte Carlo table, about 1 %; a "
                   "conductor with textured anisotropic roughness: the isotropic albedo at "
                   "the projected roughness; a rough subsurface boundary: the smooth Fresnel "
-                  "split): Kirchhoff equilibrium does not hold exactly");
+                  "split; a rough dielectric with textured or anisotropic roughness, or a k "
+                  "that varies with wavelength: interpolated or coarse tables): Kirchhoff "
+                  "equilibrium does not hold exactly");
     albedos.emplace(material, albedo);
     return albedo;
 }

@@ -10,6 +10,17 @@
 
 namespace kiln {
 
+namespace {
+
+// Whether eta falls below 1 anywhere in range (at its ends and steps of 0.5 %)
+bool IndexBelowOne(const Spectrum& eta, const SpectralRange& range) {
+    for (double l = range.min; l < range.max; l *= 1.005)
+        if (eta(Float(l)) < 1) return true;
+    return eta(range.max) < 1;
+}
+
+}  // namespace
+
 // Creation
 const MaterialAlbedo* MaterialAlbedo::Create(const Material& material, EmissivityTables& tables,
                                              ObjectArena& arena) {
@@ -48,8 +59,17 @@ const MaterialAlbedo* MaterialAlbedo::Create(const Material& material, Emissivit
         return arena.New<MaterialAlbedo>(
             Subsurface{C, isZero(p.uRoughness) && isZero(p.vRoughness)});
     }
-    if (const DielectricMaterial* d = material.GetIf<DielectricMaterial>(); d && d->K())
-        return arena.New<MaterialAlbedo>(AbsorbingDielectric{});
+    if (const DielectricMaterial* d = material.GetIf<DielectricMaterial>()) {
+        auto isZero = [](const FloatTexture& t) {
+            std::optional<Float> v = t.ConstantValue();
+            return v && *v <= 0;
+        };
+        if (!isZero(d->URoughness()) || !isZero(d->VRoughness()))
+            return arena.New<MaterialAlbedo>(DielectricEmissivity(*d, tables));
+        if (d->K())
+            return arena.New<MaterialAlbedo>(
+                AbsorbingDielectric{IndexBelowOne(d->Eta(), tables.Range())});
+    }
     return arena.New<MaterialAlbedo>(NonAbsorbing{});
 }
 
@@ -68,6 +88,7 @@ bool MaterialAlbedo::Exact() const {
     return kind.Dispatch([&](const auto& k) -> bool {
         using K = std::decay_t<decltype(k)>;
         if constexpr (std::is_same_v<K, ConductorEmissivity> ||
+                      std::is_same_v<K, DielectricEmissivity> ||
                       std::is_same_v<K, CoatedDiffuseEmissivity> ||
                       std::is_same_v<K, CoatedConductorEmissivity>)
             return k.Exact();
@@ -76,6 +97,18 @@ bool MaterialAlbedo::Exact() const {
         else if constexpr (std::is_same_v<K, Mix>)
             return std::all_of(k.components.begin(), k.components.end(),
                                [](const auto& c) { return c.second->Exact(); });
+        else
+            return true;
+    });
+}
+
+bool MaterialAlbedo::SurfaceAbsorbs() const {
+    return kind.Dispatch([&](const auto& k) -> bool {
+        using K = std::decay_t<decltype(k)>;
+        if constexpr (std::is_same_v<K, NonAbsorbing>)
+            return false;
+        else if constexpr (std::is_same_v<K, AbsorbingDielectric>)
+            return k.indexBelowOne;
         else
             return true;
     });
@@ -100,6 +133,9 @@ SampledSpectrum MaterialAlbedo::EvaluateLocal(const Material* material, const BS
             const DielectricBxDF* d = bxdf.GetIf<DielectricBxDF>();
             if (!d || !BeyondRefractionCone(*d, wo)) return SampledSpectrum(1.f);
             return SampledSpectrum(FrAbsorbingDielectric(CosTheta(wo), d->Eta(), d->K()));
+        } else if constexpr (std::is_same_v<K, DielectricEmissivity>) {
+            const DielectricBxDF* d = bxdf.GetIf<DielectricBxDF>();
+            return d ? k.Albedo(*d, wo, lambda) : SampledSpectrum(1.f);
         } else if constexpr (std::is_same_v<K, ConductorEmissivity>) {
             const ConductorBxDF* c = bxdf.GetIf<ConductorBxDF>();
             if (!c) return SampledSpectrum(1.f);
@@ -137,6 +173,15 @@ SampledSpectrum BSDFReflectance::DirectionalAlbedo(Vector3f wo,
                                                    const SampledWavelengths& lambda) const {
     if (!bsdf) return SampledSpectrum(1.f);
     return Clamp(albedo.EvaluateLocal(material, bsdf, wo, lambda, si), Float(0), Float(1));
+}
+
+SampledSpectrum BSDFReflectance::EquilibriumScale(Vector3f wo, const SampledWavelengths&) const {
+    // Radiance in a body of index n is n^2 times that outside in equilibrium; pbrt-v4's
+    // dielectrics face vacuum (their eta is relative)
+    if (CosTheta(wo) < 0 && bsdf && material && material->Is<DielectricMaterial>())
+        if (const DielectricBxDF* d = bsdf.GetBxDF().GetIf<DielectricBxDF>())
+            return SampledSpectrum(Sqr(d->Eta()));
+    return SampledSpectrum(1.f);
 }
 
 ReflectedPolarization BSDFReflectance::LinearPolarization(Vector3f wo) const {

@@ -19,16 +19,19 @@
 //   coatedconductor:          tables of the layered walk's expectation (coated_emissivity.h)
 //   measured:                 tables of the measured BRDF's albedo per file
 //                             (measured_emissivity.h)
-//   dielectric,
+//   dielectric (smooth),
 //   thindielectric, interface: A = 1, their surfaces emit nothing: a hot transparent body glows
-//                             from its interior medium (volume_emission.h) (a rough dielectric's
-//                             single-scattering energy loss is not emitted either)
-//   absorbing dielectric:     (a "dielectric" with "k") A = 1 too, except from outside where
-//                             the real index is below 1 (glass in its infrared absorption
+//                             from its interior medium (volume_emission.h)
+//   absorbing dielectric:     (a smooth "dielectric" with "k") A = 1 too, except from outside
+//                             where the real index is below 1 (glass in its infrared absorption
 //                             bands) and wo lies beyond the cone sin theta < eta that refracts
 //                             into the body: no ray enters there, what is not reflected is
 //                             absorbed at the surface, and A = R(wo) (fresnel.h's
-//                             FrAbsorbingDielectric; smooth; a rough surface uses the same split)
+//                             FrAbsorbingDielectric)
+//   rough dielectric:         (with or without "k") tables of the single-scattering microfacet
+//                             model's albedo from either side, which is below 1: the surface
+//                             emits what it loses, inwards scaled by eta^2, the equilibrium
+//                             radiance inside the body (dielectric_emissivity.h)
 //   subsurface:               A = R(wo) + (1 - R(wo)) rhoEff C: the smooth boundary's Fresnel
 //                             reflectance R, and of what it transmits the fraction the
 //                             BSSRDF returns (the table's effective albedo at the point's
@@ -63,6 +66,7 @@
 #include "spectral/sampled_spectrum.h"
 #include "thermal/coated_emissivity.h"
 #include "thermal/conductor_emissivity.h"
+#include "thermal/dielectric_emissivity.h"
 #include "thermal/emission_model.h"
 #include "thermal/emissivity_tables.h"
 #include "thermal/measured_emissivity.h"
@@ -83,6 +87,8 @@ class BSDFReflectance {
     // A(wo) in [0, 1] (the tables carry quadrature and interpolation errors of ~1e-5)
     SampledSpectrum DirectionalAlbedo(Vector3f wo, const SampledWavelengths& lambda) const;
     ReflectedPolarization LinearPolarization(Vector3f wo) const;
+    // eta^2 of a dielectric seen from inside (wo.z < 0), else 1 (surface_emission.h)
+    SampledSpectrum EquilibriumScale(Vector3f wo, const SampledWavelengths& lambda) const;
 
   private:
     const MaterialAlbedo& albedo;
@@ -118,6 +124,10 @@ class MaterialAlbedo {
                                   const SampledWavelengths& lambda) const;
     // False when the material needs the approximate Monte Carlo table (coated_emissivity.h).
     bool Exact() const;
+    // Whether the surface absorbs (and so emits) anything in the scene's wavelengths: false for
+    // smooth dielectrics (but absorbing ones whose real index falls below 1 there), thin
+    // dielectrics and interfaces, whose hot bodies glow from their interior media.
+    bool SurfaceAbsorbs() const;
 
     // The albedo of `material` and, for a mix, of every component (tables built here).
     static const MaterialAlbedo* Create(const Material& material, EmissivityTables& tables,
@@ -125,7 +135,9 @@ class MaterialAlbedo {
 
     struct Diffuse {};
     struct NonAbsorbing {};
-    struct AbsorbingDielectric {};
+    struct AbsorbingDielectric {
+        bool indexBelowOne;  // somewhere in the scene's wavelengths
+    };
     struct Subsurface {
         Float exitFraction;  // C above
         bool smooth;         // a smooth boundary (else the smooth Fresnel split approximates)
@@ -134,9 +146,9 @@ class MaterialAlbedo {
         std::vector<std::pair<const Material*, const MaterialAlbedo*>> components;
     };
     // How the albedo is computed, by the material's kind
-    using Kind = ClosedSet<Diffuse, NonAbsorbing, AbsorbingDielectric, ConductorEmissivity,
-                           CoatedDiffuseEmissivity, CoatedConductorEmissivity, MeasuredEmissivity,
-                           Subsurface, Mix>;
+    using Kind = ClosedSet<Diffuse, NonAbsorbing, AbsorbingDielectric, DielectricEmissivity,
+                           ConductorEmissivity, CoatedDiffuseEmissivity, CoatedConductorEmissivity,
+                           MeasuredEmissivity, Subsurface, Mix>;
     explicit MaterialAlbedo(Kind kind) : kind(std::move(kind)) {}
 
   private:

@@ -47,6 +47,18 @@ concept SurfaceReflectance = requires(const R& r, Vector3f wo, const SampledWave
     { r.LinearPolarization(wo) } -> std::convertible_to<ReflectedPolarization>;
 };
 
+// Optionally, a reflectance also answers r.EquilibriumScale(wo, lambda): the radiance of
+// thermal equilibrium on wo's side of the surface over B, n^2 inside a transparent body of
+// refractive index n (radiance in a medium of index n is n^2 times that in vacuum). Where it
+// exceeds 1 the surface emits that much more towards wo: B n^2 (1 - A(wo)). 1 where absent.
+template <typename R>
+SampledSpectrum EquilibriumScaleOf(const R& r, Vector3f wo, const SampledWavelengths& lambda) {
+    if constexpr (requires { r.EquilibriumScale(wo, lambda); })
+        return r.EquilibriumScale(wo, lambda);
+    else
+        return SampledSpectrum(1.f);
+}
+
 // Radiance emitted towards w (render space) by a surface with blackbody radiance B at the hit,
 // shading frame `shading` and reflectance r. Radiance: SampledSpectrum, or Stokes in the
 // implicit frame of w (spectral/polarization.h).
@@ -56,7 +68,8 @@ Radiance SurfaceEmission(EmissionModel model, const SampledSpectrum& B, const R&
     if (model == EmissionModel::None) return {};
     if (model != EmissionModel::Kirchhoff) return Radiance(B);
     Vector3f wo = shading.ToLocal(w);
-    SampledSpectrum Le = B * (SampledSpectrum(1.f) - r.DirectionalAlbedo(wo, lambda));
+    SampledSpectrum Bside = B * EquilibriumScaleOf(r, wo, lambda);
+    SampledSpectrum Le = Bside * (SampledSpectrum(1.f) - r.DirectionalAlbedo(wo, lambda));
     if constexpr (std::is_same_v<Radiance, SampledSpectrum>) {
         return Le;
     } else {
@@ -64,7 +77,8 @@ Radiance SurfaceEmission(EmissionModel model, const SampledSpectrum& B, const R&
         if (!a) return Stokes(Le);
         // B (1 - A, -a1, -a2, 0) with reference axis perpendicular to the plane of ns and w
         Vector3f axis = shading.FromLocal(PlaneAxis(Vector3f(0, 0, 1), wo));
-        return RotateStokesBasis(Stokes(Le, -B * a.s1, -B * a.s2, {}), w, axis, StokesBasis(w));
+        return RotateStokesBasis(Stokes(Le, -Bside * a.s1, -Bside * a.s2, {}), w, axis,
+                                 StokesBasis(w));
     }
 }
 

@@ -50,8 +50,11 @@ std::string Cavity(const VolumeCase& c, bool meshes, double T, int spp) {
                  : "Shape \"sphere\" \"float radius\" 6\n")
       << "AttributeEnd\n";
     if (*c.glass) {
-        // Absorbing glass without a melt: its own medium (from k) glows at the body's temperature
-        if (!*c.inside && std::string(c.glass).find(" k\"") != std::string::npos)
+        // Absorbing glass without a melt: its own medium (from k) glows at the body's
+        // temperature; a rough surface emits what it loses at it
+        std::string glass(c.glass);
+        if ((!*c.inside && glass.find(" k\"") != std::string::npos) ||
+            glass.find("roughness") != std::string::npos)
             s << "AttributeBegin\nAttribute \"shape\" \"float temperature\" " << T << "\n";
         else
             s << "AttributeBegin\n";
@@ -110,9 +113,17 @@ const VolumeCase kVolumeCases[] = {
      "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.05 0.1 0.02] \"rgb sigma_s\" [0.2 0.1 "
      "0.3]",
      512},
+    // Rough glass: the surface emits what its single-scattering microfacets lose, outwards and
+    // into the body (thermal/dielectric_emissivity.h)
+    {"rough glass, absorbing melt", "\"dielectric\" \"float eta\" 1.5 \"float roughness\" 0.3",
+     "\"string type\" \"homogeneous\" \"rgb sigma_a\" [1 1.5 2] \"rgb sigma_s\" [0 0 0]", "", 512},
+    {"rough dispersive glass, absorbing melt",
+     "\"dielectric\" \"spectrum eta\" \"glass-BAF10\" \"float roughness\" 0.1",
+     "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.5 0.8 0.4] \"rgb sigma_s\" [0 0 0]", "",
+     1024},
     // Absorbing glass (complex index): the body's medium absorbs 4 pi k / lambda (0.46 per unit
     // at 550 nm: partly transparent), and dispersive soda-lime glass (about 3 per unit: nearly
-    // opaque), rough
+    // opaque)
     {"absorbing glass, constant k", "\"dielectric\" \"float eta\" 1.5 \"float k\" 2e-8", "", "",
      256},
     {"soda-lime glass",
