@@ -128,10 +128,10 @@ const Case kCases[] = {
      "\"float roughness\" 0.1"},
     // A rough dielectric body, vacuum inside: pbrt-v4's single-scattering microfacets lose
     // energy from either side, which the surface emits (outwards B (1 - E), inwards
-    // eta^2 B (1 - E): thermal/dielectric_emissivity.h). Without it 3-13 % dark (roughness
-    // 0.1-0.6). At 4096 spp the sphere reads 1.00056 (se 0.00028) but the mesh, whose
-    // interpolated shading normals bend the refraction, 0.99646 (se 0.00037): a residual the
-    // 256 spp here cannot see and that kiln has not traced yet
+    // eta^2 B (1 - E): thermal/dielectric_emissivity.h; a body holding a hot melt rendered
+    // 3-13 % dark without it at roughness 0.1-0.6). At 4096 spp the sphere reads 1.00056 (se
+    // 0.00028) but the mesh, whose interpolated shading normals bend the refraction, 0.99646 (se
+    // 0.00037): a residual the 256 spp here cannot see and that kiln has not traced yet
     {"rough glass, nothing inside", "\"dielectric\" \"float eta\" 1.5 \"float roughness\" 0.3"},
 };
 
