@@ -3,6 +3,7 @@
 // a shape-to-lights map, lights identified by index), aggregate, light sampler, features.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <new>
 #include <set>
@@ -252,6 +253,19 @@ struct SceneShapes {
     const CurveSet* curves = nullptr;  // a "curve" directive (not a Shape)
     bool interfaceMaterial = false;    // an interface marks a boundary: no area light on it
 };
+
+// The homogeneous named media with a "float temperature" (K), for the surfaces of the
+// dielectric bodies holding them (scene_emitters.h)
+std::map<std::string, Float> MediumTemperatures(const SceneDescription& desc) {
+    std::map<std::string, Float> temperatures;
+    for (const auto& [name, e] : desc.media)
+        if (e.parameters.GetOneString("type", "") == "homogeneous" &&
+            e.parameters.TypeOf("temperature") == "float")
+            if (std::vector<Float> t = e.parameters.GetFloatArray("temperature");
+                t.size() == 1 && t[0] > 0 && std::isfinite(t[0]))
+                temperatures[name] = t[0];
+    return temperatures;
+}
 
 SceneShapes CreateShapes(ShapeSceneEntity& s, const NamedTextures& textures,
                          const SceneMaterials& materials, const MediumIndices& media,
@@ -621,7 +635,7 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
     SceneShader loadShader(&*scene.camera, 1, options.genericFootprints);
     ThermalEmitters emitters(loadShader, *scene.emissivityTables, scene.arena, diag,
                              options.emission, scene.integrator.emitterPowerSampling,
-                             desc.ambientTemperature);
+                             desc.ambientTemperature, MediumTemperatures(desc));
     std::vector<SceneShapes> shapes;
     for (ShapeSceneEntity& s : desc.shapes)
         shapes.push_back(CreateShapes(s, textures, materials, media, emitters, scene.arena, diag));

@@ -17,13 +17,15 @@ namespace kiln {
 ThermalEmitters::ThermalEmitters(const SceneShader& shader, EmissivityTables& tables,
                                  ObjectArena& arena, Diagnostics& diag,
                                  std::optional<EmissionModel> overrideModel, bool powerSampling,
-                                 std::optional<Float> ambientTemperature)
+                                 std::optional<Float> ambientTemperature,
+                                 std::map<std::string, Float> mediumTemperatures)
     : shader(shader),
       tables(tables),
       arena(arena),
       diag(diag),
       overrideModel(overrideModel),
-      powerSampling(powerSampling) {
+      powerSampling(powerSampling),
+      mediumTemperatures(std::move(mediumTemperatures)) {
     if (ambientTemperature)
         ambient = FloatTexture(arena.New<FloatConstantTexture>(*ambientTemperature));
 }
@@ -40,33 +42,41 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
         if (const Triangle* tri = shapes.front().GetIf<Triangle>();
             tri && tri->GetMesh()->HasAttribute("temperature"))
             temperature = AsFloatTexture(arena.New<VertexAttributeField>("temperature", 0.f));
+    // A dielectric body's surface: its interior medium's temperature
+    if (!temperature && material && material->InteriorEta() && !entity.insideMedium.empty())
+        if (auto it = mediumTemperatures.find(entity.insideMedium);
+            it != mediumTemperatures.end()) {
+            temperature = FloatTexture(arena.New<FloatConstantTexture>(it->second));
+            heat.interior = true;
+        }
     // The scene's ambient temperature, lowest in precedence; a shape that cannot glow stays
     // cold at it without a warning
     if (!temperature && ambient) {
         temperature = ambient;
         heat.ambient = true;
     }
+    const bool borrowed = heat.ambient || heat.interior;
     if (!temperature) return heat;
     EmissionModel model =
         overrideModel ? *overrideModel
                       : own.model.value_or(fromMaterial.model.value_or(EmissionModel::Kirchhoff));
     if (model == EmissionModel::None) return heat;
     if (hasAreaLight) {
-        if (!heat.ambient)
+        if (!borrowed)
             diag.Warn(entity.loc,
                       "shape has both an AreaLightSource and a temperature; the area "
                       "light is used");
         return heat;
     }
     if (!material || material->IsInterface()) {
-        if (!heat.ambient)
+        if (!borrowed)
             diag.Warn(entity.loc,
                       "a shape with the interface material has no surface to glow; its "
                       "temperature is ignored");
         return heat;
     }
     if (model == EmissionModel::Kirchhoff && material->Is<HairMaterial>()) {
-        if (!heat.ambient)
+        if (!borrowed)
             diag.Warn(entity.loc,
                       "hot hair does not glow: kiln has no emissivity for the hair model yet (use "
                       "\"string emission\" \"diffuse\" for a blackbody fibre)");
@@ -79,7 +89,7 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
         // (render/scene_media.h), but where its real index falls below 1 in the film's range
         // its surface absorbs light arriving outside the cone that refracts in, and a rough
         // surface loses some of what it scatters: those surfaces emit (material_albedo.h)
-        if (!heat.ambient && !material->InteriorExtinction())
+        if (!borrowed && !material->InteriorExtinction())
             diag.Warn(entity.loc,
                       "a hot smooth dielectric surface absorbs nothing and so emits nothing; the "
                       "body glows from a hot interior medium (MediumInterface, medium "
@@ -93,7 +103,7 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
         model == EmissionModel::Kirchhoff ? AlbedoOf(heat.material, entity.loc) : nullptr;
     heat.emission = arena.New<ThermalEmission>(*temperature, model, albedo, 1, tables.Range());
 #else
-    if (!heat.ambient)
+    if (!borrowed)
         diag.Warn(entity.loc, "kiln was built without thermal emission; the shape does not glow");
 #endif
     return heat;

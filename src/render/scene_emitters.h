@@ -6,14 +6,18 @@
 // property; a mix material without one takes its first hot component's) or a per-vertex
 // "temperature" of its mesh give it a temperature (thermal/thermal_properties.h). The shape's
 // own temperature and model win over its material's; `kiln --emission` overrides every model.
-// With Option "ambienttemperature", every other shape is hot at that temperature (the
-// material's emission model); shapes that cannot glow (area lights, interfaces, dielectric
-// surfaces, hair) then stay cold without the warnings a temperature of their own gives.
+// The surface of a dielectric body without a temperature of its own takes its interior
+// medium's "float temperature" where that medium is homogeneous (a rough surface emits what it
+// loses at it). With
+// Option "ambienttemperature", every other shape is hot at that temperature (the material's
+// emission model). Shapes that cannot glow (area lights, interfaces, smooth dielectric surfaces,
+// hair) stay cold at these borrowed temperatures without the warnings their own would give.
 #pragma once
 
 #include <map>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "base/object_arena.h"
@@ -35,15 +39,19 @@ struct ShapeHeat {
     const ThermalEmission* emission = nullptr;  // nullptr: cold
     const Material* material = nullptr;         // the material to render it with
     bool ambient = false;                       // hot at the scene's ambient temperature
+    bool interior = false;                      // hot at its interior medium's temperature
 };
 
 class ThermalEmitters {
   public:
     // powerSampling: sample points on shapes whose emission varies over them by power.
     // ambient: the temperature of shapes without one (K; Option "ambienttemperature").
+    // mediumTemperatures: the constant temperatures of named media (K), which the surfaces of
+    // dielectric bodies holding them take when they have none of their own.
     ThermalEmitters(const SceneShader& shader, EmissivityTables& tables, ObjectArena& arena,
                     Diagnostics& diag, std::optional<EmissionModel> overrideModel,
-                    bool powerSampling = true, std::optional<Float> ambient = std::nullopt);
+                    bool powerSampling = true, std::optional<Float> ambient = std::nullopt,
+                    std::map<std::string, Float> mediumTemperatures = {});
 
     // The heat of one shape directive: own = its thermal parameters, fromMaterial = its
     // material's (scene creation resolves a mix's), material = its material, shapes = what it
@@ -73,6 +81,7 @@ class ThermalEmitters {
     std::optional<EmissionModel> overrideModel;
     bool powerSampling;
     std::optional<FloatTexture> ambient;
+    std::map<std::string, Float> mediumTemperatures;
     std::map<const Material*, const MaterialAlbedo*> albedos;
     const Material* black = nullptr;
     std::vector<ThermalAreaLight*> varyingLights;

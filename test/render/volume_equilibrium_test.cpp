@@ -51,10 +51,11 @@ std::string Cavity(const VolumeCase& c, bool meshes, double T, int spp) {
       << "AttributeEnd\n";
     if (*c.glass) {
         // Absorbing glass without a melt: its own medium (from k) glows at the body's
-        // temperature; a rough surface emits what it loses at it
+        // temperature. A rough surface emits what it loses at the body's temperature, and
+        // without one of its own at its melt's (scene_emitters.h)
         std::string glass(c.glass);
-        if ((!*c.inside && glass.find(" k\"") != std::string::npos) ||
-            glass.find("roughness") != std::string::npos)
+        if (!*c.inside && (glass.find(" k\"") != std::string::npos ||
+                           glass.find("roughness") != std::string::npos))
             s << "AttributeBegin\nAttribute \"shape\" \"float temperature\" " << T << "\n";
         else
             s << "AttributeBegin\n";
