@@ -21,7 +21,8 @@ endfunction()
 # ("Suite.*:Other/*") of the tests that are Monte Carlo renders taking seconds each; they are
 # labelled `statistical`. RELEASE_ONLY: a filter of tests that check something other than
 # kiln's code (the documentation's commands), labelled `releaseonly`. The sanitizer stage
-# leaves both out (scripts/sanitize.sh: ctest -LE).
+# leaves both out (scripts/sanitize.sh: ctest -LE); the release stage runs only them (and the
+# packaging tests), so an executable with either is part of kiln_release_stage.
 function(kiln_add_tests name dir)
     cmake_parse_arguments(PARSE_ARGV 2 arg "" "STATISTICAL;RELEASE_ONLY" "")
     file(GLOB srcs CONFIGURE_DEPENDS "${dir}/*_test.cpp")
@@ -52,6 +53,7 @@ function(kiln_add_tests name dir)
         endif()
     endforeach()
     if(others)
+        add_dependencies(kiln_release_stage ${name})
         gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 TEST_FILTER "-${others}"
                              PROPERTIES TIMEOUT 600)
     else()
