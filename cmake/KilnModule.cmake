@@ -20,7 +20,8 @@ endfunction()
 # (../shared beside the checkout) are defined. STATISTICAL: a GoogleTest filter
 # ("Suite.*:Other/*") of the tests that are Monte Carlo renders taking seconds each; they are
 # labelled `statistical`. RELEASE_ONLY: a filter of tests that check something other than
-# kiln's code (the documentation's commands), labelled `releaseonly`. The sanitizer stage
+# kiln's code (the documentation's commands), labelled `releaseonly` (as is the Python module's
+# test, CMakeLists.txt: the sanitizer build has no Python module). The sanitizer stage
 # leaves both out (scripts/sanitize.sh: ctest -LE); the release stage runs only them (and the
 # packaging tests), so an executable with either is part of kiln_release_stage.
 function(kiln_add_tests name dir)
