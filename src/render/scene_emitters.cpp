@@ -42,10 +42,16 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
         if (const Triangle* tri = shapes.front().GetIf<Triangle>();
             tri && tri->GetMesh()->HasAttribute("temperature"))
             temperature = AsFloatTexture(arena.New<VertexAttributeField>("temperature", 0.f));
-    // A dielectric body's surface: its interior medium's temperature
-    if (!temperature && material && material->InteriorEta() && !entity.insideMedium.empty())
+    EmissionModel model =
+        overrideModel ? *overrideModel
+                      : own.model.value_or(fromMaterial.model.value_or(EmissionModel::Kirchhoff));
+    // A dielectric body's surface that absorbs (rough, or opaque beyond its refraction cone)
+    // and emits by Kirchhoff's law: its interior medium's temperature. (Other models would
+    // make a clear surface glow.)
+    if (!temperature && model == EmissionModel::Kirchhoff && material && material->InteriorEta() &&
+        !entity.insideMedium.empty())
         if (auto it = mediumTemperatures.find(entity.insideMedium);
-            it != mediumTemperatures.end()) {
+            it != mediumTemperatures.end() && AlbedoOf(material, entity.loc)->SurfaceAbsorbs()) {
             temperature = FloatTexture(arena.New<FloatConstantTexture>(it->second));
             heat.interior = true;
         }
@@ -57,9 +63,6 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
     }
     const bool borrowed = heat.ambient || heat.interior;
     if (!temperature) return heat;
-    EmissionModel model =
-        overrideModel ? *overrideModel
-                      : own.model.value_or(fromMaterial.model.value_or(EmissionModel::Kirchhoff));
     if (model == EmissionModel::None) return heat;
     if (hasAreaLight) {
         if (!borrowed)

@@ -6,9 +6,9 @@
 // property; a mix material without one takes its first hot component's) or a per-vertex
 // "temperature" of its mesh give it a temperature (thermal/thermal_properties.h). The shape's
 // own temperature and model win over its material's; `kiln --emission` overrides every model.
-// The surface of a dielectric body without a temperature of its own takes its interior
-// medium's "float temperature" where that medium is homogeneous (a rough surface emits what it
-// loses at it). With
+// The surface of a dielectric body without a temperature of its own that absorbs (rough, or
+// opaque beyond its refraction cone) and emits by Kirchhoff's law takes its interior medium's
+// "float temperature" where that medium is homogeneous: it emits what it loses at it. With
 // Option "ambienttemperature", every other shape is hot at that temperature (the material's
 // emission model). Shapes that cannot glow (area lights, interfaces, smooth dielectric surfaces,
 // hair) stay cold at these borrowed temperatures without the warnings their own would give.
@@ -46,8 +46,8 @@ class ThermalEmitters {
   public:
     // powerSampling: sample points on shapes whose emission varies over them by power.
     // ambient: the temperature of shapes without one (K; Option "ambienttemperature").
-    // mediumTemperatures: the constant temperatures of named media (K), which the surfaces of
-    // dielectric bodies holding them take when they have none of their own.
+    // mediumTemperatures: the constant temperatures of named media (K), which the absorbing
+    // surfaces of dielectric bodies holding them take when they have none of their own.
     ThermalEmitters(const SceneShader& shader, EmissivityTables& tables, ObjectArena& arena,
                     Diagnostics& diag, std::optional<EmissionModel> overrideModel,
                     bool powerSampling = true, std::optional<Float> ambient = std::nullopt,
