@@ -78,13 +78,6 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
                       "temperature is ignored");
         return heat;
     }
-    if (model == EmissionModel::Kirchhoff && material->Is<HairMaterial>()) {
-        if (!borrowed)
-            diag.Warn(entity.loc,
-                      "hot hair does not glow: kiln has no emissivity for the hair model yet (use "
-                      "\"string emission\" \"diffuse\" for a blackbody fibre)");
-        return heat;
-    }
     if (model == EmissionModel::Kirchhoff && material->InteriorEta() &&
         !AlbedoOf(material, entity.loc)->SurfaceAbsorbs()) {
         // A smooth dielectric surface absorbs nothing: the body glows from its interior

@@ -10,8 +10,8 @@
 // opaque beyond its refraction cone) and emits by Kirchhoff's law takes its interior medium's
 // "float temperature" where that medium is homogeneous: it emits what it loses at it. With
 // Option "ambienttemperature", every other shape is hot at that temperature (the material's
-// emission model). Shapes that cannot glow (area lights, interfaces, smooth dielectric surfaces,
-// hair) stay cold at these borrowed temperatures without the warnings their own would give.
+// emission model). Shapes that cannot glow (area lights, interfaces, smooth dielectric surfaces)
+// stay cold at these borrowed temperatures without the warnings their own would give.
 #pragma once
 
 #include <map>

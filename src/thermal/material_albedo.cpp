@@ -40,6 +40,7 @@ const MaterialAlbedo* MaterialAlbedo::Create(const Material& material, Emissivit
     }
     if (material.Is<DiffuseMaterial>() || material.Is<DiffuseTransmissionMaterial>())
         return arena.New<MaterialAlbedo>(Diffuse{});
+    if (material.Is<HairMaterial>()) return arena.New<MaterialAlbedo>(Hair{});
     if (const ConductorMaterial* c = material.GetIf<ConductorMaterial>())
         return arena.New<MaterialAlbedo>(ConductorEmissivity(*c, tables));
     if (const CoatedDiffuseMaterial* c = material.GetIf<CoatedDiffuseMaterial>())
@@ -127,6 +128,9 @@ SampledSpectrum MaterialAlbedo::EvaluateLocal(const Material* material, const BS
             if (const DiffuseTransmissionBxDF* d = bxdf.GetIf<DiffuseTransmissionBxDF>())
                 return d->Reflectance() + d->Transmittance();
             return SampledSpectrum(1.f);
+        } else if constexpr (std::is_same_v<K, Hair>) {
+            const HairBxDF* h = bxdf.GetIf<HairBxDF>();
+            return h ? h->Albedo(wo) : SampledSpectrum(1.f);
         } else if constexpr (std::is_same_v<K, NonAbsorbing>) {
             return SampledSpectrum(1.f);
         } else if constexpr (std::is_same_v<K, AbsorbingDielectric>) {

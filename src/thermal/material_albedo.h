@@ -42,10 +42,13 @@
 //                             flat surface; the emission 1 - A is that of the hot medium below
 //                             the boundary. A rough boundary uses the smooth Fresnel split
 //                             (approximate: Exact() is false)
+//   hair:                     the sum of the hair model's attenuations, f + (1 - f)^2 T /
+//                             (1 - T f) (closed form; its longitudinal and azimuthal lobes
+//                             are normalised: HairBxDF::Albedo)
 //   mix:                      the component chosen at the point
 // Polarisation (surface_emission.h): LinearPolarization gives (a1, a2) of the reflection; for
-// conductors see conductor_emissivity.h; zero for depolarising BSDFs (diffuse, coated: their
-// reflection is unpolarised).
+// conductors see conductor_emissivity.h; zero for depolarising BSDFs (diffuse, coated, hair:
+// their reflection is unpolarised).
 //
 // Rough conductors use pbrt-v4's single-scattering microfacet model, whose albedo misses the
 // multiply scattered energy (for a perfect mirror metal 12 % at alpha 0.3, 69 % at alpha 1,
@@ -134,6 +137,7 @@ class MaterialAlbedo {
                                         ObjectArena& arena);
 
     struct Diffuse {};
+    struct Hair {};
     struct NonAbsorbing {};
     struct AbsorbingDielectric {
         bool indexBelowOne;  // somewhere in the scene's wavelengths
@@ -146,7 +150,7 @@ class MaterialAlbedo {
         std::vector<std::pair<const Material*, const MaterialAlbedo*>> components;
     };
     // How the albedo is computed, by the material's kind
-    using Kind = ClosedSet<Diffuse, NonAbsorbing, AbsorbingDielectric, DielectricEmissivity,
+    using Kind = ClosedSet<Diffuse, Hair, NonAbsorbing, AbsorbingDielectric, DielectricEmissivity,
                            ConductorEmissivity, CoatedDiffuseEmissivity, CoatedConductorEmissivity,
                            MeasuredEmissivity, Subsurface, Mix>;
     explicit MaterialAlbedo(Kind kind) : kind(std::move(kind)) {}

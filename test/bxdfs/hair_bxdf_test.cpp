@@ -4,7 +4,10 @@
 // sampling_chi2_test.cpp.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 
 #include "base/rng.h"
 #include "base/statistics.h"
@@ -68,6 +71,46 @@ TEST(HairBxDF, WhiteFurnaceAndAbsorption) {
                                      wo, 400000, 100 + k);
         EXPECT_LT(dark, clear - 5 * std::hypot(se, seDark));
     }
+}
+
+TEST(HairBxDF, AlbedoIsTheExpectedSampleWeight) {
+    // Albedo(wo), the closed form a hot fibre's emissivity 1 - Albedo comes from, is what the
+    // integrator's estimator of the integral of f |cos| converges to: the mean of Sample_f's
+    // weights, per wavelength (four absorptions at once), with and without the scales' tilt
+    RNG rng(23);
+    const SampledSpectrum sigma_a(std::array<Float, NSpectrumSamples>{0.05f, 0.4f, 1.5f, 6.f});
+    double worst = 0;
+    for (int k = 0; k < 12; ++k) {
+        Float h = -0.95f + 1.9f * rng.UniformFloat(), beta_m = 0.1f + 0.8f * rng.UniformFloat(),
+              beta_n = 0.1f + 0.8f * rng.UniformFloat(), alpha = k % 2 ? 2.f : 0.f;
+        Float eta = k % 3 ? 1.55f : 1.33f;
+        HairBxDF hair(h, eta, sigma_a, beta_m, beta_n, alpha);
+        Vector3f wo = RandomDirection(rng);
+        SampledSpectrum albedo = hair.Albedo(wo);
+        RunningStats s[NSpectrumSamples];
+        for (int i = 0; i < 200000; ++i) {
+            auto bs = hair.Sample_f(wo, rng.UniformFloat(),
+                                    Point2f(rng.UniformFloat(), rng.UniformFloat()));
+            for (int c = 0; c < NSpectrumSamples; ++c)
+                s[c].Add(bs ? bs->f[c] * std::abs(bs->wi.z) / bs->pdf : 0);
+        }
+        for (int c = 0; c < NSpectrumSamples; ++c) {
+            EXPECT_NEAR(s[c].Mean(), albedo[c], 4 * s[c].StandardError() + 2e-4)
+                << "h " << h << " beta_m " << beta_m << " beta_n " << beta_n << " alpha " << alpha
+                << " eta " << eta << " sigma_a " << sigma_a[c];
+            EXPECT_LT(4 * s[c].StandardError(), 4e-3);
+            worst = std::max(worst, std::abs(s[c].Mean() - albedo[c]));
+        }
+        // Absorption lowers it, within (0, 1)
+        for (int c = 1; c < NSpectrumSamples; ++c) EXPECT_LT(albedo[c], albedo[c - 1]);
+        EXPECT_GT(albedo[NSpectrumSamples - 1], 0);
+        EXPECT_LT(albedo[0], 1);
+    }
+    std::printf("hair albedo: largest difference from the mean sample weight %.2e\n", worst);
+    // A clear fibre scatters everything
+    EXPECT_NEAR(HairBxDF(0.3f, 1.55f, SampledSpectrum(0.f), 0.3f, 0.3f, 2.f)
+                    .Albedo(Normalize(Vector3f(0.3f, 0.5f, 0.8f)))[0],
+                1, 1e-6f);
 }
 
 TEST(HairBxDF, MelaninAndReflectanceGiveAbsorption) {

@@ -1,8 +1,8 @@
 // Curves and hair in whole renders: a black curve of width w across an orthographic view of
 // height 1 in front of a white sky covers exactly w of it (w cos(tilt) for a tilted ribbon),
 // whatever its basis and degree; clear hair (no absorption) in a uniform sky is invisible
-// (energy conservation: every pixel is the sky); and a hot metal filament inside a closed
-// cavity at its temperature renders B(T) (Kirchhoff on the new geometry).
+// (energy conservation: every pixel is the sky); and a hot metal filament, or hot absorbing
+// hair, inside a closed cavity at its temperature renders B(T) (Kirchhoff on the new geometry).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -142,6 +142,39 @@ TEST(CurveRender, HotFilamentInACavityRendersTheBlackbody) {
         r.warnings.clear();
         testing::ExpectBlackbodyImage(r, T, "tungsten filament curve");
     }
+}
+
+TEST(CurveRender, HotHairInACavityRendersTheBlackbody) {
+    // Absorbing fibres (flat and cylinder curves, tilted scales, melanin, and an absorption that
+    // varies along the spectrum) emit what the hair model does not scatter, 1 - Albedo: in a
+    // closed cavity at their temperature they vanish into B(T)
+    const double T = 2500;
+    std::ostringstream s;
+    s << "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 24\n"
+      << "Sampler \"zsobol\" \"integer pixelsamples\" 256\n"
+      << "Integrator \"path\" \"integer maxdepth\" 500\n"
+      << "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 30\n"
+      << "WorldBegin\nAttribute \"shape\" \"float temperature\" " << T << "\n"
+      << "Material \"diffuse\" \"rgb reflectance\" [0.6 0.5 0.4]\n"
+      << "Shape \"sphere\" \"float radius\" 6\n";
+    const char* materials[] = {
+        "\"float eumelanin\" 1.3 \"float beta_m\" 0.3",
+        "\"rgb sigma_a\" [0.2 1.5 6] \"float beta_m\" 0.15 \"float beta_n\" 0.6 "
+        "\"float alpha\" 4",
+        "\"float pheomelanin\" 3 \"float eta\" 1.33 \"float beta_m\" 0.8 \"float beta_n\" 0.9"};
+    for (int i = 0; i < 18; ++i) {
+        if (i % 6 == 0) s << "Material \"hair\" " << materials[i / 6] << "\n";
+        Float x = -0.72f + 0.085f * i;
+        s << "Shape \"curve\" \"point3 P\" [" << x << " -1 0.1  " << x + 0.1f << " -0.3 -0.2  "
+          << x - 0.1f << " 0.3 0.3  " << x << " 1 0] \"float width\" 0.06 \"string type\" "
+          << (i % 2 ? "\"cylinder\"" : "\"flat\"") << "\n";
+    }
+    testing::RenderedScene r = testing::RenderText(s.str());
+    ASSERT_EQ(r.warnings.size(), 18u);  // each hot curve: not light-sampled
+    for (const auto& w : r.warnings)
+        EXPECT_NE(w.message.find("not sampled as lights"), std::string::npos) << w.message;
+    r.warnings.clear();
+    testing::ExpectBlackbodyImage(r, T, "hot hair curves");
 }
 
 }  // namespace

@@ -137,6 +137,14 @@ std::array<SampledSpectrum, HairBxDF::pMax + 1> HairBxDF::Attenuation(Float cosT
     return ap;
 }
 
+SampledSpectrum HairBxDF::Albedo(Vector3f wo) const {
+    Float sinThetaO = wo.x, cosThetaO = SafeSqrt(1 - sinThetaO * sinThetaO);
+    if (cosThetaO == 0) return SampledSpectrum(0.f);  // f is 0 along the fibre (f() above)
+    SampledSpectrum sum(0.f);
+    for (const SampledSpectrum& a : Attenuation(cosThetaO, sinThetaO)) sum += a;
+    return sum;
+}
+
 std::array<Float, HairBxDF::pMax + 1> HairBxDF::LobePDF(Float cosThetaO, Float sinThetaO) const {
     std::array<SampledSpectrum, pMax + 1> ap = Attenuation(cosThetaO, sinThetaO);
     std::array<Float, pMax + 1> pdf;

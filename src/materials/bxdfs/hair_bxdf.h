@@ -40,6 +40,11 @@ class HairBxDF {
     // pbrt-v4 declares hair a glossy reflector (it scatters to every direction).
     BxDFFlags Flags() const { return BxDFFlags::GlossyReflection; }
     void Regularize() {}
+    // The directional albedo, the integral of f |cos theta_i| over every wi: the lobes Mp and
+    // Np are normalised, so it is the sum of the attenuations, f + (1 - f)^2 T / (1 - T f) (f
+    // the Fresnel reflectance at the fibre's surface, T one crossing's transmittance). What a
+    // hot fibre does not scatter it emits (thermal/material_albedo.h).
+    SampledSpectrum Albedo(Vector3f wo) const;
 
     // Absorption (per unit diameter, linear sRGB) of eumelanin and pheomelanin concentrations
     // (d'Eon et al. 2011's coefficients, as pbrt-v4).
