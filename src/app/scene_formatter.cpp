@@ -30,7 +30,10 @@ std::string Quoted(const std::string& s) {
 
 std::string Numbers(std::initializer_list<Float> values) {
     std::string s;
-    for (Float v : values) s += (s.empty() ? "" : " ") + Number(v);
+    for (Float v : values) {
+        if (!s.empty()) s += ' ';
+        s += Number(v);
+    }
     return s;
 }
 
@@ -72,12 +75,18 @@ void SceneFormatter::LookAt(Float ex, Float ey, Float ez, Float lx, Float ly, Fl
 }
 void SceneFormatter::ConcatTransform(const std::array<Float, 16>& m, const FileLoc&) {
     std::string s;
-    for (Float v : m) s += " " + Number(v);
+    for (Float v : m) {
+        s += ' ';
+        s += Number(v);
+    }
     Line("ConcatTransform [" + s + " ]");
 }
 void SceneFormatter::Transform(const std::array<Float, 16>& m, const FileLoc&) {
     std::string s;
-    for (Float v : m) s += " " + Number(v);
+    for (Float v : m) {
+        s += ' ';
+        s += Number(v);
+    }
     Line("Transform [" + s + " ]");
 }
 void SceneFormatter::CoordinateSystem(const std::string& name, const FileLoc&) {

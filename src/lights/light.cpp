@@ -11,7 +11,8 @@ std::optional<LightBounds> Light::Bounds(const SpectralRange& range) const {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(l)>>;
         if constexpr (std::is_same_v<T, PointLight>) {
             return LightBounds(Bounds3f(l->Position()), Vector3f(0, 0, 1), 0, -1, 0, false);
-        } else if constexpr (std::is_same_v<T, SpotLight>) {
+        } else if constexpr (std::is_same_v<T, SpotLight> || std::is_same_v<T, GoniometricLight> ||
+                             std::is_same_v<T, ProjectionLight>) {
             return l->Bounds();
         } else if constexpr (T::kType == LightType::Area) {
             auto [w, cosTheta] = l->GetShape().NormalBounds();

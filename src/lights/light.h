@@ -22,11 +22,13 @@
 #include "base/transform.h"
 #include "lights/diffuse_area_light.h"
 #include "lights/distant_light.h"
+#include "lights/goniometric_light.h"
 #include "lights/image_infinite_light.h"
 #include "lights/light_bounds.h"
 #include "lights/light_sample.h"
 #include "lights/point_light.h"
 #include "lights/portal_infinite_light.h"
+#include "lights/projection_light.h"
 #include "lights/spot_light.h"
 #include "lights/thermal_area_light.h"
 #include "lights/uniform_infinite_light.h"
@@ -51,10 +53,10 @@ class Diagnostics;
 struct FileLoc;
 
 // The closed set: add a kind here (and its header above) to add a light type.
-class Light
-    : public ClosedSet<const PointLight*, const SpotLight*, const DistantLight*,
-                       const DiffuseAreaLight*, KILN_THERMAL_LIGHT_KIND const UniformInfiniteLight*,
-                       const ImageInfiniteLight*, const PortalInfiniteLight*> {
+class Light : public ClosedSet<const PointLight*, const SpotLight*, const GoniometricLight*,
+                               const ProjectionLight*, const DistantLight*, const DiffuseAreaLight*,
+                               KILN_THERMAL_LIGHT_KIND const UniformInfiniteLight*,
+                               const ImageInfiniteLight*, const PortalInfiniteLight*> {
   public:
     using ClosedSet::ClosedSet;
 
@@ -196,10 +198,11 @@ class Light
     }
 
     // Light "name" (pbrt-v4): "point" (I, scale, power, from), "spot" (I, scale, power, from,
-    // to, coneangle, conedeltaangle), "distant" (L, scale, from, to, illuminance), "infinite"
+    // to, coneangle, conedeltaangle), "goniometric" (I, scale, power, filename), "projection"
+    // (scale, power, fov, filename), "distant" (L, scale, from, to, illuminance), "infinite"
     // (L or filename, scale, illuminance, portal: four corners in world space, which
-    // renderFromWorld takes to render space). "goniometric" and "projection" are warned about
-    // and give nullopt; other names throw SceneError.
+    // renderFromWorld takes to render space). A goniometric light without "filename" is warned
+    // about and gives nullopt (it emits nothing); other names throw SceneError.
     static std::optional<Light> Create(const std::string& name, const ParameterDictionary& params,
                                        const Transform& renderFromLight, const FileLoc& loc,
                                        ObjectArena& arena, Diagnostics& diag,

@@ -136,6 +136,104 @@ Light CreateDistant(const ParameterDictionary& params, const Transform& renderFr
     return arena.New<DistantLight>(t, std::move(L), sc);
 }
 
+// "goniometric": a square equal-area map, one channel ("Y", or the mean of "R", "G", "B"),
+// finite; negative values are clamped to 0 (warning). Without "filename", nullopt (warning,
+// as pbrt-v4, whose light then emits nothing).
+std::optional<Light> CreateGoniometric(const ParameterDictionary& params,
+                                       const Transform& renderFromLight, const FileLoc& loc,
+                                       ObjectArena& arena, Diagnostics& diag) {
+    const RGBColorSpace& cs = ColorSpaceOf(params);
+    Spectrum I = *params.GetOneSpectrum("I", Spectrum(cs.Illuminant()), SpectrumType::Illuminant);
+    Float sc = PhotometricScale(params.GetOneFloat("scale", 1), I);
+    Float phi_v = params.GetOneFloat("power", -1);
+    std::string filename = params.GetOneFilename("filename", "");
+    if (filename.empty()) {
+        diag.Warn(loc, "a goniometric light without \"filename\" emits nothing; light ignored");
+        return std::nullopt;
+    }
+    FileLoc at = params.Loc("filename", loc);
+    Image file;
+    ImageMetadata metadata;
+    try {
+        file = Image::Read(filename, &metadata, ColorEncoding::SRGB(), &arena.Budget());
+    } catch (const std::exception& e) {
+        throw SceneError(at, e.what(), filename);
+    }
+    Point2i res = file.Resolution();
+    if (res.x != res.y)
+        throw SceneError(at,
+                         "a goniometric light's image must be a square equal-area map, not " +
+                             std::to_string(res.x) + " x " + std::to_string(res.y) + " pixels",
+                         filename);
+    bool rgb =
+        file.ChannelIndex("R") >= 0 && file.ChannelIndex("G") >= 0 && file.ChannelIndex("B") >= 0;
+    int yChannel = file.ChannelIndex("Y");
+    if (rgb == (yChannel >= 0))
+        throw SceneError(at,
+                         rgb ? "a goniometric light's image has both R, G, B and Y channels"
+                             : "a goniometric light's image has neither R, G, B nor Y channels",
+                         filename);
+    std::vector<int> channels =
+        rgb ? std::vector<int>{file.ChannelIndex("R"), file.ChannelIndex("G"),
+                               file.ChannelIndex("B")}
+            : std::vector<int>{yChannel};
+    Image image(PixelFormat::Float, res, {"Y"});
+    bool negative = false;
+    for (int y = 0; y < res.y; ++y)
+        for (int x = 0; x < res.x; ++x) {
+            Float sum = 0;
+            for (int c : channels) sum += file.GetChannel({x, y}, c);
+            Float value = sum / Float(channels.size());
+            if (!std::isfinite(value))
+                throw SceneError(at,
+                                 "image has infinite or not-a-number pixels and so is not "
+                                 "suitable as a light source",
+                                 filename);
+            negative |= value < 0;
+            image.SetChannel({x, y}, 0, std::max<Float>(0, value));
+        }
+    if (negative)
+        diag.Warn(at, "a goniometric light's image has negative values; they emit nothing");
+    if (phi_v > 0) {
+        Float k_e = 4 * Pi * image.Average(0);
+        if (k_e > 0)
+            sc *= phi_v / k_e;
+        else
+            diag.Warn(params.Loc("power", loc),
+                      "\"power\" given for a goniometric light whose image is black; ignored");
+    }
+    return arena.New<GoniometricLight>(renderFromLight, std::move(I), sc, std::move(image));
+}
+
+// "projection": an R, G, B image in the colour space its file names (sRGB if none)
+Light CreateProjection(const ParameterDictionary& params, const Transform& renderFromLight,
+                       const FileLoc& loc, ObjectArena& arena, Diagnostics& diag) {
+    Float scale = params.GetOneFloat("scale", 1);
+    Float phi_v = params.GetOneFloat("power", -1);
+    Float fov = params.GetOneFloat("fov", 90);
+    std::string filename = params.GetOneFilename("filename", "");
+    if (filename.empty())
+        throw SceneError(loc, "a projection light needs an image: \"string filename\"",
+                         "projection");
+    if (!(fov > 0 && fov < 180))
+        throw SceneError(params.Loc("fov", loc),
+                         "a projection light's \"fov\" must lie between 0 and 180 degrees",
+                         std::to_string(fov));
+    const RGBColorSpace* imageCS = &RGBColorSpace::sRGB();
+    Image image =
+        ReadEmissionImage(filename, params.Loc("filename", loc), &imageCS, arena.Budget());
+    scale = PhotometricScale(scale, Spectrum(imageCS->Illuminant()));
+    if (phi_v > 0) {
+        Float k_e = ProjectionLight::LuminousIntegral(image, *imageCS, fov);
+        if (k_e > 0)
+            scale *= phi_v / k_e;
+        else
+            diag.Warn(params.Loc("power", loc),
+                      "\"power\" given for a projection light whose image is black; ignored");
+    }
+    return arena.New<ProjectionLight>(renderFromLight, std::move(image), imageCS, scale, fov);
+}
+
 // "portal": four corners in world space (as pbrt-v4, not in the light's space), in render
 // space; a SceneError unless there are four of them, a warning unless they form a rectangle.
 std::optional<std::array<Point3f, 4>> ReadPortal(const ParameterDictionary& params,
@@ -278,10 +376,11 @@ std::optional<Light> Light::Create(const std::string& name, const ParameterDicti
         light = CreateDistant(params, renderFromLight, arena);
     else if (name == "infinite")
         light = CreateInfinite(params, renderFromLight, renderFromWorld, loc, arena, diag);
-    else if (name == "goniometric" || name == "projection") {
-        diag.Warn(loc, "\"" + name + "\" lights are not supported by kiln; light ignored");
-        return std::nullopt;
-    } else
+    else if (name == "goniometric")
+        light = CreateGoniometric(params, renderFromLight, loc, arena, diag);
+    else if (name == "projection")
+        light = CreateProjection(params, renderFromLight, loc, arena, diag);
+    else
         throw SceneError(
             loc,
             "unknown light type \"" + name + "\"" +

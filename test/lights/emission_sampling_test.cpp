@@ -111,6 +111,36 @@ TEST(EmissionSampling, SpotLight) {
     CheckPower(light);
 }
 
+TEST(EmissionSampling, GoniometricLight) {
+    // A map with a bright patch and a dark hemisphere, rotated
+    const int n = 16;
+    Image image(PixelFormat::Float, {n, n}, {"Y"});
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+            image.SetChannel({x, y}, 0,
+                             (x < n / 2 ? 0.1f : 1.f) + (x == 3 && y == 11 ? 30.f : 0.f));
+    GoniometricLight gonio(Translate(Vector3f(0, 1, 2)) * Rotate(30, Vector3f(1, 1, 0)),
+                           Spectrum(ConstantSpectrum(2)), 1.5f, image);
+    Light light(&gonio);
+    CheckDirections(light, Vector3f(0, 0, 1), -1);
+    CheckPower(light);
+}
+
+TEST(EmissionSampling, ProjectionLight) {
+    Image image(PixelFormat::Float, {6, 3}, {"R", "G", "B"});
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 6; ++x)
+            for (int c = 0; c < 3; ++c)
+                image.SetChannel({x, y}, c, 0.1f + 0.4f * ((x + y + c) % 3));
+    Transform t = Translate(Vector3f(1, 0, 0)) * Rotate(-20, Vector3f(1, 0, 0));
+    ProjectionLight projector(t, image, &RGBColorSpace::sRGB(), 2, 50);
+    Light light(&projector);
+    // The image's corners lie within 50 degrees of the axis (tan 25 x (2, 1))
+    Vector3f axis = t(Vector3f(0, 0, 1));
+    CheckDirections(light, axis, std::cos(Radians(50.f)), 100000);
+    CheckPower(light);
+}
+
 TEST(EmissionSampling, DistantLight) {
     DistantLight distant(Rotate(30, Vector3f(0, 1, 0)), Spectrum(ConstantSpectrum(2)), 1);
     distant.Preprocess(Bounds3f(Point3f(-1, -2, -1), Point3f(3, 2, 1)));

@@ -125,12 +125,10 @@ TEST(DistantLight, DirectionRadianceAndPower) {
     EXPECT_NEAR(Y, 7 * Pi * 3, 0.05);
 }
 
-TEST(Light, CreateUnknownAndUnsupported) {
+TEST(Light, CreateUnknown) {
     ObjectArena arena;
     std::ostringstream out;
     Diagnostics diag(&out);
     EXPECT_THROW(Create("laser", {}, arena, diag), SceneError);
-    EXPECT_FALSE(Create("goniometric", {}, arena, diag).has_value());
-    EXPECT_FALSE(Create("projection", {}, arena, diag).has_value());
-    EXPECT_EQ(diag.WarningCount(), 2);
+    EXPECT_EQ(diag.WarningCount(), 0);
 }

@@ -1,7 +1,8 @@
 // pbrt-v4 features end to end: one small pbrt-v4-syntax scene per feature of issue 12 (gzip
 // input, singular transforms, loopsubdiv, curves and hair, alpha, bump and normal maps, displaced
 // PLY meshes, coated materials, RGL measured BRDFs; the spherical and realistic cameras, bdpt's
-// caustics, motion blur and a NanoVDB volume, whose references are pbrt-v4's renders) in
+// caustics, motion blur, a NanoVDB volume, goniometric and projection lights, whose references
+// are pbrt-v4's renders) in
 // test/regression/pbrt_features, each rendered 16 times at 32 spp with independent seeds and
 // compared within the Monte Carlo noise with its stored reference (noise_comparison.h; how the
 // references were made: pbrt_features/README.md). The comparison must also reject the renders
@@ -82,7 +83,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Feature{"sampler_halton", 0, 4096}, Feature{"sampler_sobol", 0, 4096},
                       Feature{"motionblur", 0, 4096}, Feature{"motionblur-camera", 0, 4096},
                       Feature{"nanovdb", 0, 16384}, Feature{"measured", 0, 4096},
-                      Feature{"measured-aniso", 0, 4096}),
+                      Feature{"measured-aniso", 0, 4096}, Feature{"goniometric", 0, 4096},
+                      Feature{"projection", 0, 4096}),
     [](const ::testing::TestParamInfo<Feature>& info) {
         std::string name = info.param.scene;
         std::replace(name.begin(), name.end(), '-', '_');

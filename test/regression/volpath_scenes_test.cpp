@@ -42,7 +42,9 @@ TEST_P(VolPathScenes, WithoutMediaVolPathRendersWhatPathRenders) {
     // Every scene without media is compared (scenes/media has none)
     bool hasMedia = testing::LoadScene(GetParam(), RenderOptions())->features.media > 0;
     EXPECT_EQ(compared, !hasMedia);
-    if (GetParam().find("/scenes/media/") != std::string::npos) EXPECT_TRUE(hasMedia);
+    if (GetParam().find("/scenes/media/") != std::string::npos) {
+        EXPECT_TRUE(hasMedia);
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, VolPathScenes, ::testing::ValuesIn(testing::OneScenePerFolder()),

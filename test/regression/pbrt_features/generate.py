@@ -4,7 +4,9 @@ gzip-geometry.pbrt (a gzip-compressed include, named without .gz: detected by co
 gzip-mesh.ply.gz (a gzip-compressed binary PLY icosphere), displacement-grid.ply (an ASCII
 PLY grid with uv), normalmap.pfm (a tangent-space normal map of ripples), checker.tga (an 8-bit
 uncompressed TGA, rows bottom to top as TGA files usually store them), alpha.png (an 8-bit RGBA
-PNG whose colours are not premultiplied) and sky.pfm (a 16x16 equal-area environment map).
+PNG whose colours are not premultiplied), sky.pfm (a 16x16 equal-area environment map),
+goniometric.pfm (a 32x32 equal-area intensity map, R, G, B) and slide.png (a 24x12 8-bit RGB
+slide for the projection light).
 Deterministic: re-running it rewrites the same bytes."""
 import gzip
 import math
@@ -98,6 +100,24 @@ def main():
            chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
     open("alpha.png", "wb").write(png)
 
+    # Slide: red at the top left, green at the top right, blue at the bottom, a checker of
+    # 4-pixel squares over it, and one white pixel at the top left corner (RGB, no alpha)
+    w, h = 24, 12
+    rows = b""
+    for y in range(h):
+        row = b"\0"
+        for x in range(w):
+            u, v2 = (x + 0.5) / w, (y + 0.5) / h
+            c = 1.0 if (x // 4 + y // 4) % 2 == 0 else 0.25
+            rgb = (c * (1 - u) * (1 - v2), c * u * (1 - v2), c * v2)
+            if x == 0 and y == 0:
+                rgb = (1, 1, 1)
+            row += bytes(int(round(255 * k)) for k in rgb)
+        rows += row
+    png = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0)) +
+           chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
+    open("slide.png", "wb").write(png)
+
     # Sky: bright and warm towards +z of the map, blue towards -z, a brighter +x half
     w = h = 16
     data = []
@@ -109,6 +129,22 @@ def main():
             data += [0.3 + 0.9 * max(z, 0) + 0.3 * (dx > 0), 0.4 + 0.5 * max(z, 0),
                      0.8 + 0.2 * max(-z, 0)]
     with open("sky.pfm", "wb") as out:
+        out.write(b"PF\n%d %d\n-1.0\n" % (w, h))
+        out.write(struct.pack("<%df" % len(data), *data))
+
+    # Goniometric map: bright towards +z of the map (the light's +y), dark towards -z, a
+    # checker of 4-pixel squares, and the channels differ (the light uses their mean)
+    w = h = 32
+    data = []
+    for y in range(h):
+        for x in range(w):
+            u, v2 = (x + 0.5) / w, (y + 0.5) / h
+            dx, dy = 2 * u - 1, 2 * v2 - 1
+            z = 1 - (abs(dx) + abs(dy))
+            c = 1.0 if (x // 4 + y // 4) % 2 == 0 else 0.3
+            base = c * (0.2 + 1.5 * max(z, 0) + 0.4 * (dx > 0))
+            data += [1.2 * base, base, 0.8 * base]
+    with open("goniometric.pfm", "wb") as out:
         out.write(b"PF\n%d %d\n-1.0\n" % (w, h))
         out.write(struct.pack("<%df" % len(data), *data))
 
