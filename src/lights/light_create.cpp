@@ -202,6 +202,10 @@ std::optional<Light> CreateGoniometric(const ParameterDictionary& params,
             diag.Warn(params.Loc("power", loc),
                       "\"power\" given for a goniometric light whose image is black; ignored");
     }
+    if (!std::isfinite(sc))
+        throw SceneError(params.Loc("power", loc),
+                         "a goniometric light this bright overflows single precision",
+                         std::to_string(phi_v));
     return arena.New<GoniometricLight>(renderFromLight, std::move(I), sc, std::move(image));
 }
 
@@ -215,9 +219,10 @@ Light CreateProjection(const ParameterDictionary& params, const Transform& rende
     if (filename.empty())
         throw SceneError(loc, "a projection light needs an image: \"string filename\"",
                          "projection");
-    if (!(fov > 0 && fov < 180))
+    // (Below 0.01 degrees the image's solid angle underflows single precision)
+    if (!(fov >= 0.01f && fov < 180))
         throw SceneError(params.Loc("fov", loc),
-                         "a projection light's \"fov\" must lie between 0 and 180 degrees",
+                         "a projection light's \"fov\" must lie between 0.01 and 180 degrees",
                          std::to_string(fov));
     const RGBColorSpace* imageCS = &RGBColorSpace::sRGB();
     Image image =
@@ -231,6 +236,10 @@ Light CreateProjection(const ParameterDictionary& params, const Transform& rende
             diag.Warn(params.Loc("power", loc),
                       "\"power\" given for a projection light whose image is black; ignored");
     }
+    if (!std::isfinite(scale))
+        throw SceneError(params.Loc("power", loc),
+                         "a projection light this bright overflows single precision",
+                         std::to_string(phi_v));
     return arena.New<ProjectionLight>(renderFromLight, std::move(image), imageCS, scale, fov);
 }
 

@@ -201,7 +201,7 @@ TEST(ProjectionLight, CreateReadsTheSlideAndItsPower) {
     EXPECT_THROW(CreateLight("projection", {}, arena, diag), SceneError);
     EXPECT_THROW(CreateLight("projection", {StringParam("filename", grey)}, arena, diag),
                  SceneError);
-    for (Float fov : {0.f, 180.f, -5.f})
+    for (Float fov : {0.f, 180.f, -5.f, 1e-30f})
         EXPECT_THROW(
             CreateLight("projection",
                         {StringParam("filename", slide), FloatParam("float", "fov", {fov})}, arena,
