@@ -160,11 +160,10 @@ const MetalTemperatureTable* ReadMeasuredConstants(const TextureParameterDiction
 }
 
 // A conductor's eta/k (Cu by default) or "reflectance"; SceneError when both are given. The
-// named metals with a temperature model, and constants measured at several temperatures
-// ("nkfiles"), become textures that follow the surface's temperature, or the temperature
-// "float opticaltemperature" fixes (kelvin; for named metals at or below room temperature: the
-// named tables) (for "conductor"; coatedconductor keeps the named tables, as its emissivity
-// tables hold the conductor's constants fixed).
+// named metals with a temperature model (a conductor's, or a coatedconductor's "conductor."
+// ones) become textures that follow the surface's temperature, or the temperature "float
+// opticaltemperature" fixes (kelvin; at or below room temperature: the named tables); so do
+// constants measured at several temperatures ("nkfiles", conductor only).
 struct ConductorSpec {
     std::optional<SpectrumTexture> eta, k, reflectance;
 };
@@ -180,12 +179,13 @@ ConductorSpec GetConductor(const TextureParameterDictionary& params, const std::
         return c;
     }
     if (std::string symbol = MetalWithTemperatureModel(params, prefix);
-        prefix.empty() && !symbol.empty() && !params.Has("reflectance")) {
+        !symbol.empty() && !params.Has("reflectance")) {
         const MetalTemperatureTable* table = MetalTemperatureTable::Find(symbol);
         Float fixed = OpticalTemperature(params);
         if (!params.Has("opticaltemperature") || fixed > table->RoomTemperature()) {
-            params.GetSpectrumTextureOrNull("eta", SpectrumType::Unbounded, arena);  // looked up
-            params.GetSpectrumTextureOrNull("k", SpectrumType::Unbounded, arena);
+            // (looked up, so that they are not reported unused)
+            params.GetSpectrumTextureOrNull(prefix + "eta", SpectrumType::Unbounded, arena);
+            params.GetSpectrumTextureOrNull(prefix + "k", SpectrumType::Unbounded, arena);
             c.eta = arena.New<SpectrumMetalTemperatureTexture>(table, Part::Eta, fixed);
             c.k = arena.New<SpectrumMetalTemperatureTexture>(table, Part::K, fixed);
             return c;

@@ -10,6 +10,7 @@
 #include "materials/material.h"
 #include "materials/materials.h"
 #include "textures/basic_textures.h"
+#include "textures/metal_temperature_texture.h"
 
 namespace kiln {
 
@@ -17,6 +18,9 @@ namespace {
 
 // Polynomials up to degree 63 in the base reflectance (maxdepth up to 123)
 constexpr int kMaxCoefficients = 64;
+// A hot named metal's temperature nodes in the coatedconductor tables: every eighth of its
+// table's (200 K apart)
+constexpr size_t kCoatedTemperatureStride = 8;
 
 // The layer has no scattering medium: a constant albedo texture that is 0 at every wavelength.
 bool NoMedium(const SpectrumTexture& albedo, const TableAxis& lambdas) {
@@ -188,8 +192,9 @@ CoatedConductorEmissivity::CoatedConductorEmissivity(const CoatedConductorMateri
                                                      const Material& handle, EmissivityTables& t)
     : tables(&t) {
     const CoatedConductorMaterial::Params& p = m.Parameters();
+    // (a named metal's constants at a fixed temperature, or following the surface's: below)
     auto uniform = [](const std::optional<SpectrumTexture>& s) {
-        return !s || s->Is<SpectrumConstantTexture>();
+        return !s || s->Is<SpectrumConstantTexture>() || s->Is<SpectrumMetalTemperatureTexture>();
     };
     std::optional<Float> thickness = p.thickness.ConstantValue();
     if (!thickness || !NoMedium(p.albedo, t.Wavelengths()) ||
@@ -202,18 +207,35 @@ CoatedConductorEmissivity::CoatedConductorEmissivity(const CoatedConductorMateri
     baseAlphas = AlphaAxis(p.conductorURoughness, p.conductorVRoughness, p.remapRoughness);
     Float eta = p.interfaceEta(550.f);
     if (eta == 0) eta = 1;
-    // The conductor's Fresnel reflectance relative to the coat, per table wavelength
+    // A named metal whose constants follow the surface's temperature: every eighth of its
+    // table's temperature nodes (200 K apart; the last one too)
+    const auto* hot =
+        p.conductorEta ? p.conductorEta->GetIf<SpectrumMetalTemperatureTexture>() : nullptr;
+    if (hot && hot->FollowsSurface()) {
+        const std::vector<float>& all = hot->Table().Temperatures().Nodes();
+        std::vector<float> nodes;
+        for (size_t i = 0; i < all.size(); i += kCoatedTemperatureStride) nodes.push_back(all[i]);
+        if (nodes.back() != all.back()) nodes.push_back(all.back());
+        temperatures = TableAxis(std::move(nodes));
+    } else {
+        temperatures = TableAxis({0.f});
+    }
+    // The conductor's Fresnel reflectance relative to the coat, per table temperature and
+    // wavelength
     const TableAxis& lambdas = t.Wavelengths();
     std::vector<std::function<double(double)>> fresnels;
-    MaterialEvalContext ctx;
-    for (float l : lambdas.Nodes()) {
-        SampledWavelengths lambda = SampledWavelengths::FromWavelength(l);
-        CoatedConductorBxDF b = m.GetBxDF(ctx, lambda);
-        std::complex<Float> ce(b.Bottom().Eta()[0], b.Bottom().K()[0]);
-        fresnels.push_back([ce](double mu) { return double(FrComplex(Float(mu), ce)); });
-    }
+    for (float T : temperatures.Nodes())
+        for (float l : lambdas.Nodes()) {
+            SampledWavelengths lambda = SampledWavelengths::FromWavelength(l);
+            MaterialEvalContext ctx;
+            ctx.temperature = T;
+            CoatedConductorBxDF b = m.GetBxDF(ctx, lambda);
+            std::complex<Float> ce(b.Bottom().Eta()[0], b.Bottom().K()[0]);
+            fresnels.push_back([ce](double mu) { return double(FrComplex(Float(mu), ce)); });
+        }
     std::vector<double> mus = CosineNodes(t);
-    const int nCos = int(mus.size()), nL = lambdas.Size(), nB = baseAlphas.Size();
+    const int nCos = int(mus.size()), nL = lambdas.Size() * temperatures.Size(),
+              nB = baseAlphas.Size();
     albedo.assign(size_t(coatAlphas.Size()) * nB * nCos * nL, 0);
     tbb::parallel_for(0, coatAlphas.Size() * nB, [&](int cell) {
         int ca = cell / nB, ba = cell % nB;
@@ -228,27 +250,38 @@ CoatedConductorEmissivity::CoatedConductorEmissivity(const CoatedConductorMateri
 }
 
 SampledSpectrum CoatedConductorEmissivity::Albedo(const CoatedConductorBxDF& bxdf, Vector3f wo,
-                                                  const SampledWavelengths& lambda) const {
+                                                  const SampledWavelengths& lambda,
+                                                  Float temperature) const {
     if (fallback) return fallback->Albedo(wo, lambda);
     const TableAxis& cosines = tables->Cosines();
     const TableAxis& lambdas = tables->Wavelengths();
     auto [ci, ct] = cosines.Locate(std::min<Float>(1, AbsCosTheta(wo)));
     auto [ai, at] = coatAlphas.Locate(LookupAlpha(bxdf.Top().Distribution(), wo));
     auto [bi, bt] = baseAlphas.Locate(LookupAlpha(bxdf.Bottom().Distribution(), wo));
-    const int nCos = cosines.Size(), nL = lambdas.Size(), nB = baseAlphas.Size();
+    // (one node, weight 1, without a temperature axis)
+    auto [ti, tt] = temperatures.Locate(temperature);
+    const int nCos = cosines.Size(), nL = lambdas.Size(), nT = temperatures.Size(),
+              nB = baseAlphas.Size();
+    const size_t nX = size_t(nL) * nT;
     SampledSpectrum A;
     for (int i = 0; i < NSpectrumSamples; ++i) {
         auto [li, lt] = lambdas.Locate(lambda[i]);
         Float v = 0;
-        for (int da = 0; da < 2; ++da)
-            for (int db = 0; db < 2; ++db)
-                for (int dc = 0; dc < 2; ++dc) {
-                    float w = (da ? at : 1 - at) * (db ? bt : 1 - bt) * (dc ? ct : 1 - ct);
-                    if (w == 0) continue;
-                    int a = da ? coatAlphas.Next(ai) : ai, b = db ? baseAlphas.Next(bi) : bi;
-                    const float* row = &albedo[((size_t(a) * nB + b) * nCos + ci + dc) * nL];
-                    v += w * ((1 - lt) * row[li] + lt * row[li + 1]);
-                }
+        for (int dt = 0; dt < 2; ++dt) {
+            float wt = dt ? tt : 1 - tt;
+            if (wt == 0) continue;
+            const size_t x = size_t(dt ? temperatures.Next(ti) : ti) * nL + li;
+            for (int da = 0; da < 2; ++da)
+                for (int db = 0; db < 2; ++db)
+                    for (int dc = 0; dc < 2; ++dc) {
+                        float w = wt * (da ? at : 1 - at) * (db ? bt : 1 - bt) * (dc ? ct : 1 - ct);
+                        if (w == 0) continue;
+                        int a = da ? coatAlphas.Next(ai) : ai, b = db ? baseAlphas.Next(bi) : bi;
+                        const float* row =
+                            &albedo[((size_t(a) * nB + b) * nCos + ci + dc) * nX + x];
+                        v += w * ((1 - lt) * row[0] + lt * row[1]);
+                    }
+        }
         A[i] = v;
     }
     return A;

@@ -5,7 +5,10 @@
 //     r (so reflectance textures cost nothing), with a roughness axis when the coat's
 //     roughness is textured and a wavelength axis when its IOR is dispersive;
 //   coatedconductor: A(cos theta, lambda) for the conductor's optical constants, with
-//     roughness axes when the coat's or the conductor's roughness is textured.
+//     roughness axes when the coat's or the conductor's roughness is textured, and a
+//     temperature axis when the constants are a named metal's that follow the surface's
+//     temperature (spectral/metal_temperature.h: every eighth of its table's 25 K nodes, 200 K
+//     apart, linear between two; test/thermal/material_albedo_test.cpp bounds the error).
 // What the walk expectations do not cover (a scattering layer, "albedo" > 0; textured
 // thickness, g or conductor optical constants; a dispersive coat over a conductor) uses a
 // Monte Carlo table of the BxDF at the material's untextured values, accurate to about 1e-2;
@@ -59,14 +62,18 @@ class CoatedConductorEmissivity {
   public:
     CoatedConductorEmissivity(const CoatedConductorMaterial& material, const Material& handle,
                               EmissivityTables& tables);
+    // temperature: the one the bxdf's constants were taken at (K), for NeedsTemperature()
     SampledSpectrum Albedo(const CoatedConductorBxDF& bxdf, Vector3f wo,
-                           const SampledWavelengths& lambda) const;
+                           const SampledWavelengths& lambda, Float temperature = 0) const;
     bool Exact() const { return !fallback; }
+    // Whether the tables are over temperature too (the conductor's constants follow it)
+    bool NeedsTemperature() const { return temperatures.Size() > 1; }
 
   private:
     const EmissivityTables* tables;
     TableAxis coatAlphas, baseAlphas;  // one node each when uniform
-    std::vector<float> albedo;         // [coat alpha][base alpha][cos][lambda]
+    TableAxis temperatures;            // K; one node (unused) unless NeedsTemperature()
+    std::vector<float> albedo;         // [coat alpha][base alpha][cos][temperature][lambda]
     std::optional<SampledAlbedoTable> fallback;
 };
 

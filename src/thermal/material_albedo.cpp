@@ -153,7 +153,11 @@ SampledSpectrum MaterialAlbedo::EvaluateLocal(const Material* material, const BS
             return c ? k.Albedo(*c, wo, lambda) : SampledSpectrum(1.f);
         } else if constexpr (std::is_same_v<K, CoatedConductorEmissivity>) {
             const CoatedConductorBxDF* c = bxdf.GetIf<CoatedConductorBxDF>();
-            return c ? k.Albedo(*c, wo, lambda) : SampledSpectrum(1.f);
+            if (!c) return SampledSpectrum(1.f);
+            // The temperature the scene's shader built the BSDF at (as for conductors)
+            Float T = 0;
+            if (k.NeedsTemperature() && si && si->thermal) T = si->thermal->Temperature(*si);
+            return k.Albedo(*c, wo, lambda, T);
         } else if constexpr (std::is_same_v<K, MeasuredEmissivity>) {
             return bxdf.Is<MeasuredBxDF>() ? k.Albedo(wo, lambda) : SampledSpectrum(1.f);
         } else if constexpr (std::is_same_v<K, Subsurface>) {

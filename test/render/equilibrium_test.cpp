@@ -118,6 +118,11 @@ const Case kCases[] = {
     {"tungsten, smooth, constants at temperature",
      "\"conductor\" \"spectrum eta\" \"metal-W-eta\" \"spectrum k\" \"metal-W-k\" "
      "\"float roughness\" 0"},
+    // Tungsten under a rough coat, its constants at temperature: the coated tables span
+    // temperature (thermal/coated_emissivity.h)
+    {"coated tungsten, constants at temperature",
+     "\"coatedconductor\" \"spectrum conductor.eta\" \"metal-W-eta\" \"spectrum conductor.k\" "
+     "\"metal-W-k\" \"float interface.roughness\" 0.1 \"float conductor.roughness\" 0.2"},
     // n and k measured at two temperatures (a made-up metal: measured_constants_test.cpp):
     // between them at 1000 K, the last one's at 5000 K; rough, so its emissivity tables span
     // temperature

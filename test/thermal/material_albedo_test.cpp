@@ -189,6 +189,11 @@ TEST(EmissivityTest, CoatedTablesMatchTheBSDF) {
         {"coatedconductor",
          {Float1("interface.roughness", 0.1f), Float1("conductor.roughness", 0.2f)}},
         {"coatedconductor", {Texture("interface.roughness", "ramp")}},
+        // Hot tungsten's constants (fixed at 2500 K) under a rough coat
+        {"coatedconductor",
+         {Strings("spectrum", "conductor.eta", {"metal-W-eta"}),
+          Strings("spectrum", "conductor.k", {"metal-W-k"}), Float1("interface.roughness", 0.2f),
+          Float1("conductor.roughness", 0.1f), Float1("opticaltemperature", 2500)}},
     };
     for (const Case& c : cases) {
         const Material* m = f.Make(c.type, c.params);
@@ -196,6 +201,57 @@ TEST(EmissivityTest, CoatedTablesMatchTheBSDF) {
         EXPECT_TRUE(albedo->Exact());
         EXPECT_LT(MaxTableError(*m, *albedo, 8, 60000, 11), 1e-3) << c.type;
     }
+}
+
+TEST(EmissivityTest, CoatedConductorTablesFollowTheTemperature) {
+    // A coated named metal whose constants follow the surface's temperature: its tables over
+    // temperature (200 K nodes) against tables built at the constants of one fixed temperature
+    Fixture f;
+    auto params = [](std::optional<Float> fixed) {
+        ParsedParameterVector p = {Strings("spectrum", "conductor.eta", {"metal-W-eta"}),
+                                   Strings("spectrum", "conductor.k", {"metal-W-k"}),
+                                   Float1("interface.roughness", 0.15f),
+                                   Float1("conductor.roughness", 0.3f)};
+        if (fixed) p.push_back(Float1("opticaltemperature", *fixed));
+        return p;
+    };
+    const Material* following = f.Make("coatedconductor", params(std::nullopt));
+    ASSERT_TRUE(following->UsesTemperature());
+    CoatedConductorEmissivity e(*following->GetIf<CoatedConductorMaterial>(), *following, f.tables);
+    ASSERT_TRUE(e.NeedsTemperature());
+    ASSERT_TRUE(e.Exact());
+    RNG rng(31);
+    double worst = 0, change = 0;
+    for (int i = 0; i < 4; ++i) {
+        Float T = 400 + 3200 * rng.UniformFloat();
+        const Material* fixed = f.Make("coatedconductor", params(T));
+        ASSERT_FALSE(fixed->UsesTemperature());
+        CoatedConductorEmissivity at(*fixed->GetIf<CoatedConductorMaterial>(), *fixed, f.tables);
+        ASSERT_FALSE(at.NeedsTemperature());
+        for (int k = 0; k < 50; ++k) {
+            Vector3f wo = SampleUniformHemisphere({rng.UniformFloat(), rng.UniformFloat()});
+            SampledWavelengths lambda = SampledWavelengths::SampleVisible(rng.UniformFloat());
+            MaterialEvalContext ctx = Context({0.5f, 0.5f}, wo);
+            ctx.temperature = T;
+            SampledWavelengths l = lambda;
+            BSDF bsdf = following->GetBSDF(ctx, l);
+            const CoatedConductorBxDF& c = *bsdf.GetBxDF().GetIf<CoatedConductorBxDF>();
+            Vector3f local = bsdf.RenderToLocal(wo);
+            SampledSpectrum interpolated = e.Albedo(c, local, lambda, T);
+            SampledSpectrum exact = at.Albedo(c, local, lambda);
+            SampledSpectrum room = e.Albedo(c, local, lambda, 0);
+            for (int j = 0; j < NSpectrumSamples; ++j) {
+                worst = std::max(worst, double(std::abs(interpolated[j] - exact[j])));
+                change = std::max(change, double(std::abs(exact[j] - room[j])));
+            }
+        }
+    }
+    std::printf(
+        "coated tungsten: largest albedo difference %.2e between temperature nodes; "
+        "largest change from room temperature %.3f\n",
+        worst, change);
+    EXPECT_LT(worst, 2e-3);
+    EXPECT_GT(change, 0.02);  // the temperature matters: the test can tell
 }
 
 TEST(EmissivityTest, MixUsesTheComponentChosenAtThePoint) {
