@@ -45,8 +45,20 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOpti
     s.bidirectional = e.name == "bdpt" || e.name == "mlt" || e.name == "sppm";
     if (e.name == "mlt" || e.name == "sppm")
         diag.Warn(e.loc, "integrator \"" + e.name + "\" is not supported; rendered with \"bdpt\"");
-    else if (e.name != "path" && e.name != "volpath" && e.name != "bdpt")
+    else if (e.name != "path" && e.name != "volpath" && e.name != "bdpt" &&
+             e.name != "ambientocclusion")
         diag.Warn(e.loc, "integrator \"" + e.name + "\" is not supported; using \"volpath\"");
+    if (e.name == "ambientocclusion") {
+        PathIntegratorSettings::AmbientOcclusion ao;
+        ao.cosSample = e.parameters.GetOneBool("cossample", true);
+        ao.maxDistance = e.parameters.GetOneFloat("maxdistance", Infinity);
+        if (!(ao.maxDistance > 0))
+            throw SceneError(e.parameters.Loc("maxdistance"), "\"maxdistance\" must be > 0",
+                             std::to_string(ao.maxDistance));
+        const RGBColorSpace* cs = e.parameters.ColorSpace();
+        ao.colorSpace = cs ? cs : &RGBColorSpace::sRGB();
+        s.ambientOcclusion = ao;
+    }
     s.volumetric = e.name != "path";
     s.maxDepth = e.parameters.GetOneInt("maxdepth", 5);
     if (s.maxDepth < 0) throw SceneError(e.parameters.Loc("maxdepth"), "maxdepth must be >= 0");

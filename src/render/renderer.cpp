@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/camera/camera_sample.h"
+#include "render/ambient_occlusion_integrator.h"
 #include "render/bdpt_integrator.h"
 #include "render/path_integrator.h"
 #include "render/visible_surface_footprint.h"
@@ -204,6 +205,8 @@ RenderStats RenderVariant(Scene& scene, const RenderSettings& settings) {
 
 RenderStats Render(Scene& scene, const RenderSettings& settings) {
     // The radiance variant (radiance.h) and integrator the scene needs, chosen once
+    if (scene.features.ambientOcclusion)
+        return RenderVariant<AmbientOcclusionIntegrator>(scene, settings);
     if (scene.features.bidirectional) return RenderVariant<BDPTIntegrator>(scene, settings);
     if (scene.features.volumetric) {
         if (scene.features.polarized)

@@ -46,9 +46,10 @@ std::string SceneFeatures::ToString() const {
         polarized ? "on (Stokes vectors, Mueller matrices)" : "off", media, emissiveMedia,
         thermalMedia, sampledMedia, mediumSamplerSeconds, glassWindows, exactEmissionMedia,
         wavelengths,
-        bidirectional ? "bdpt"
-        : volumetric  ? "volpath"
-                      : "path",
+        ambientOcclusion ? "ambientocclusion"
+        : bidirectional  ? "bdpt"
+        : volumetric     ? "volpath"
+                         : "path",
         genericVolumes ? "; generic volpath (--generic)" : "",
         genericFootprints ? "; generic footprints (--generic)" : "",
         genericAOVs ? "; generic AOVs (--generic)" : "");

@@ -71,6 +71,15 @@ struct PathIntegratorSettings {
     // partly by the spectrum it radiates ("emission", default; render/scene_wavelengths.h)
     // or by pbrt-v4's visible density alone ("visible", for comparisons)
     bool emissionWavelengths = true;
+    // pbrt-v4's "ambientocclusion" (AmbientOcclusionIntegrator): "cossample" and
+    // "maxdistance", the film's white (its colour space's illuminant at unit luminance) times
+    // the unoccluded fraction of the hemisphere above each camera ray's first hit
+    struct AmbientOcclusion {
+        bool cosSample = true;
+        Float maxDistance = Infinity;
+        const RGBColorSpace* colorSpace = nullptr;
+    };
+    std::optional<AmbientOcclusion> ambientOcclusion;
 };
 
 // What a scene uses and what kiln chose for it at load; every choice selects code (kiln
@@ -126,6 +135,8 @@ struct SceneFeatures {
     // scene has media, renders polarised light or has a camera other than perspective (then
     // volpath, with a warning); the film then takes splats
     bool bidirectional = false;
+    // Ambient occlusion (AmbientOcclusionIntegrator) for "ambientocclusion"
+    bool ambientOcclusion = false;
     // Polarised transport (radiance.h): when the film records Stokes layers, the camera
     // carries a polariser or a material is a polarising filter; otherwise the unpolarised
     // variant runs

@@ -565,6 +565,7 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
     f.volumetric =
         options.genericVolumes || (scene.integrator.volumetric &&
                                    (f.media > 0 || f.unnormalizedLightSamples || f.subsurface > 0));
+    f.ambientOcclusion = scene.integrator.ambientOcclusion.has_value();
     f.areaLights = !desc.areaLights.empty();
     f.environmentLight = !scene.infiniteLights.empty();
     auto dispersive = [](const ParameterDictionary& p) {
@@ -668,7 +669,8 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
                   "integrator \"path\" renders \"subsurface\" materials as their dielectric "
                   "boundary alone (as pbrt-v4); use \"volpath\"");
     if (scene.lights.empty() && !scene.features.thermalEmission &&
-        !(scene.features.volumetric && scene.features.emissiveMedia > 0))
+        !(scene.features.volumetric && scene.features.emissiveMedia > 0) &&
+        !scene.features.ambientOcclusion)
         diag.Warn(FileLoc(), "the scene has no lights; the image will be black");
 }
 
