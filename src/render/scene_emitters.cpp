@@ -71,8 +71,10 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
                       "light is used");
         return heat;
     }
+    // A body bounding a medium glows (or not) from it: its surface's temperature is no mistake
+    const bool boundsMedium = !entity.insideMedium.empty();
     if (!material || material->IsInterface()) {
-        if (!borrowed)
+        if (!borrowed && !boundsMedium)
             diag.Warn(entity.loc,
                       "a shape with the interface material has no surface to glow; its "
                       "temperature is ignored");
@@ -85,7 +87,7 @@ ShapeHeat ThermalEmitters::Heat(const ShapeSceneEntity& entity, const ThermalPro
         // (render/scene_media.h), but where its real index falls below 1 in the film's range
         // its surface absorbs light arriving outside the cone that refracts in, and a rough
         // surface loses some of what it scatters: those surfaces emit (material_albedo.h)
-        if (!borrowed && !material->InteriorExtinction())
+        if (!borrowed && !boundsMedium && !material->InteriorExtinction())
             diag.Warn(entity.loc,
                       "a hot smooth dielectric surface absorbs nothing and so emits nothing; the "
                       "body glows from a hot interior medium (MediumInterface, medium "

@@ -210,5 +210,27 @@ TEST(VolumeTest, HostileMajorantsEndRatherThanHang) {
     EXPECT_EQ(r.stats.completedSamples, 1);
 }
 
+// Hot bodies whose surfaces cannot glow (smooth glass, interface shapes) warn that they
+// emit nothing, unless they bound a medium: that is how a body glows from inside, so a
+// scene-wide temperature (Attribute "shape") on such a body is no mistake
+TEST(VolumeTest, SurfacesThatCannotGlowWarnOnlyWithoutAMediumInside) {
+    auto warnings = [](const std::string& body) {
+        testing::RenderedScene r = testing::RenderText(
+            "Film \"rgb\" \"integer xresolution\" 2 \"integer yresolution\" 2\n"
+            "Sampler \"independent\" \"integer pixelsamples\" 1\n"
+            "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 30\nWorldBegin\n"
+            "Attribute \"shape\" \"float temperature\" 1500\n"
+            "MakeNamedMedium \"melt\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [1 1 1] "
+            "\"rgb sigma_s\" [0 0 0] \"float temperature\" 1500\n" +
+            body);
+        return r.warnings.size();
+    };
+    for (const char* material : {"\"dielectric\"", "\"interface\""}) {
+        std::string shape = std::string("Material ") + material + "\nShape \"sphere\"\n";
+        EXPECT_EQ(warnings(shape), 1u) << material;
+        EXPECT_EQ(warnings("MediumInterface \"melt\" \"\"\n" + shape), 0u) << material;
+    }
+}
+
 }  // namespace
 }  // namespace kiln
