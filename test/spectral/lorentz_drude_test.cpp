@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -69,9 +70,10 @@ TEST(LorentzDrude, NamedMetalsReachTwentyMicrometresWithoutSteps) {
             const Float end = table->interleaved[table->interleaved.size() - 2];
             std::span<const Float> l = pl->Lambdas(), v = pl->Values();
             for (size_t i = 1; i < l.size(); ++i)
-                if (l[i - 1] >= end)
+                if (l[i - 1] >= end) {
                     ASSERT_LT(std::abs(v[i] - v[i - 1]), 0.1 * std::max(v[i], v[i - 1]) + 0.02)
                         << name << " at " << l[i] << " nm";
+                }
         }
         // Far beyond the tables: the model
         std::complex<double> model = *LorentzDrudeIndex(metal, 10000);
@@ -93,9 +95,10 @@ TEST(LorentzDrude, IronContinuesWithMeasuredInfraredConstants) {
         EXPECT_GE(pl->Lambdas().back(), 20000);
         std::span<const Float> l = pl->Lambdas(), v = pl->Values();
         for (size_t i = 1; i < l.size(); ++i)
-            if (l[i - 1] >= 900)
+            if (l[i - 1] >= 900) {
                 ASSERT_LT(std::abs(v[i] - v[i - 1]), 0.1 * std::max(v[i], v[i - 1]) + 0.02)
                     << part << " at " << l[i] << " nm";
+            }
     }
     for (auto [lambda, n, k] :
          {std::tuple{2000.0, 3.8476, 6.7152}, std::tuple{10000.0, 7.0687, 27.902},
@@ -105,6 +108,45 @@ TEST(LorentzDrude, IronContinuesWithMeasuredInfraredConstants) {
         EXPECT_NEAR(named.imag(), k, 5e-3 * k) << lambda;
     }
     EXPECT_NEAR(NormalEmissivity(Named("Fe", 10000)), 0.0335, 0.001);
+}
+
+// pbrt-v4's brass and magnesia (metal-CuZn, metal-MgO) continue with their materials'
+// measured constants (infrared_metal_data.h: Querry's brass, of which pbrt-v4's table is a part,
+// and Synowicki and Tiwald's crystalline MgO) from 300 nm to 20 um: without a step where the
+// tables end, the sources' values far beyond them, polished brass a poor emitter in the thermal
+// infrared, magnesia clear to about 6 um and a strong reflector in its reststrahlen band
+TEST(LorentzDrude, BrassAndMagnesiaContinueWithMeasuredInfraredConstants) {
+    for (const char* metal : {"CuZn", "MgO"})
+        for (const char* part : {"-eta", "-k"}) {
+            const std::string name = std::string("metal-") + metal + part;
+            const auto* pl = GetNamedSpectrum(name)->GetIf<PiecewiseLinearSpectrum>();
+            ASSERT_NE(pl, nullptr);
+            EXPECT_LE(pl->Lambdas().front(), 300) << name;
+            EXPECT_GE(pl->Lambdas().back(), 20000) << name;
+            // Where the table ends (850 and 768 nm) and the measurements take over
+            std::span<const Float> l = pl->Lambdas(), v = pl->Values();
+            for (size_t i = 1; i < l.size(); ++i)
+                if (l[i - 1] >= 700 && l[i] <= 1500) {
+                    ASSERT_LT(std::abs(v[i] - v[i - 1]), 0.1 * std::max(v[i], v[i - 1]) + 0.02)
+                        << name << " at " << l[i] << " nm";
+                }
+        }
+    for (auto [metal, lambda, n, k] :
+         {std::tuple{"CuZn", 10204.0, 17.276, 52.438}, std::tuple{"CuZn", 4291.8, 5.646, 26.322},
+          std::tuple{"MgO", 15384.0, 0.13611, 1.0228}, std::tuple{"MgO", 3430.2, 1.681, 0.0}}) {
+        // (the named spectrum resamples the measurements at 2.7 % steps in wavelength, which
+        // round the peak of n at 15.4 um by 2 %)
+        std::complex<double> named = Named(metal, lambda);
+        EXPECT_NEAR(named.real(), n, 3e-2 * n) << metal << " " << lambda;
+        EXPECT_NEAR(named.imag(), k, 3e-2 * k + 1e-3) << metal << " " << lambda;
+    }
+    const double brass = NormalEmissivity(Named("CuZn", 10000));
+    std::printf("polished brass: normal emissivity %.4f at 10 um\n", brass);
+    EXPECT_GT(brass, 0.01);
+    EXPECT_LT(brass, 0.05);
+    for (double lambda : {1000.0, 3000.0, 6000.0}) EXPECT_LT(Named("MgO", lambda).imag(), 1e-3);
+    for (double lambda : {15000.0, 18000.0, 20000.0})
+        EXPECT_GT(1 - NormalEmissivity(Named("MgO", lambda)), 0.5) << lambda;
 }
 
 // Aluminium's normal emissivity from 2 to 20 um against Rakic (1995)'s fit to other

@@ -1,0 +1,89 @@
+#!/usr/bin/env python3
+"""Writes the brass and magnesia tables of spectral/infrared_metal_data.cpp (run by hand).
+
+pbrt-v4's named spectra metal-CuZn and metal-MgO end at 850 and 768 nm; kiln continues them
+to 20 um (and down to 300 nm) with the same materials' constants from two files of the
+refractiveindex.info database (repository polyanskiy/refractiveindex.info-database, CC0 1.0;
+snapshot commit ff11b5897ef0754b15d939d921eb6c745693cbd1), given as the database's root:
+  - database/data/other/alloys/Cu-Zn/nk/Querry-Cu70Zn30.yml: brass, 70 % Cu, 30 % Zn, M. R.
+    Querry, "Optical constants", Contractor Report CRDC-CR-85034 (1985), 0.21-55.6 um (pbrt-v4's
+    metal-CuZn table is this file's 340-850 nm rows);
+  - database/data/main/MgO/nk/Synowicki.yml: bulk crystalline MgO, R. A. Synowicki, T. E.
+    Tiwald, "Optical properties of bulk c-ZrO2, c-MgO and a-As2S3 determined by variable angle
+    spectroscopic ellipsometry", Thin Solid Films 455-456, 248-255 (2004),
+    doi:10.1016/j.tsf.2004.02.028 (their oscillator model), 0.13-33 um.
+Keeps the source's own points from the last at or below 290 nm to the first at or beyond 20.5
+um: from each kept point, the farthest next point such that every dropped point lies within
+0.3 % (plus 1e-4) of the straight line between the kept ones in n and in k (kiln interpolates
+linearly in wavelength). Prints C++ rows {wavelength nm, n, k} to standard output.
+Usage: infrared_metal_tables.py DATABASE_ROOT > tables.txt
+"""
+import os
+import sys
+
+import yaml
+
+FILES = {
+    "Brass": "database/data/other/alloys/Cu-Zn/nk/Querry-Cu70Zn30.yml",
+    "Magnesia": "database/data/main/MgO/nk/Synowicki.yml",
+}
+
+
+def rows_of(path):
+    with open(path) as f:
+        doc = yaml.safe_load(f)
+    for block in doc["DATA"]:
+        if block["type"] == "tabulated nk":
+            return [[float(x) for x in line.split()] for line in block["data"].strip().split("\n")]
+    raise ValueError(f"{path}: no tabulated nk block")
+
+
+def in_range(rows):
+    rows = [(l * 1000, n, k) for l, n, k in rows]
+    lo = max(i for i, r in enumerate(rows) if r[0] <= 290)
+    hi = min(i for i, r in enumerate(rows) if r[0] >= 20500)
+    return rows[lo:hi + 1]
+
+
+def within(a, b, between):
+    for l, n, k in between:
+        t = (l - a[0]) / (b[0] - a[0])
+        ni = a[1] + t * (b[1] - a[1])
+        ki = a[2] + t * (b[2] - a[2])
+        if abs(ni - n) > 3e-3 * abs(n) + 1e-4 or abs(ki - k) > 3e-3 * abs(k) + 1e-4:
+            return False
+    return True
+
+
+def thin(rows):
+    kept = [rows[0]]
+    i = 0
+    while i < len(rows) - 1:
+        j = i + 1
+        while j + 1 < len(rows) and within(rows[i], rows[j + 1], rows[i + 1:j + 1]):
+            j += 1
+        kept.append(rows[j])
+        i = j
+    return kept
+
+
+def main():
+    root = sys.argv[1]
+    for label, path in FILES.items():
+        rows = in_range(rows_of(os.path.join(root, path)))
+        table = thin(rows)
+        print(f"// {label}: {len(table)} of {len(rows)} points")
+        print(f"const Row k{label}[] = {{")
+        items = [f"{{{l:.5g}, {n:.5g}, {k:.5g}}}," for l, n, k in table]
+        line = "   "
+        for item in items:
+            if len(line) + len(item) + 1 > 99:
+                print(line)
+                line = "   "
+            line += " " + item
+        print(line)
+        print("};\n")
+
+
+if __name__ == "__main__":
+    main()
