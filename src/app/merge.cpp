@@ -218,7 +218,10 @@ Image MergeSamples(const std::vector<RenderPart>& parts, ImageMetadata* metadata
     metadata->samplesPerPixel = int(std::min<double>(total, std::numeric_limits<int>::max()));
     metadata->strings.erase("kiln:partial");
     std::string seeds;
-    for (const RenderPart& p : parts) seeds += (seeds.empty() ? "" : ",") + Meta(p, "kiln:seed");
+    for (const RenderPart& p : parts) {
+        if (!seeds.empty()) seeds += ',';
+        seeds += Meta(p, "kiln:seed");
+    }
     metadata->strings["kiln:seed"] = seeds;
     bool half = true;
     for (const RenderPart& p : parts) half &= Meta(p, "kiln:savefp16") != "false";

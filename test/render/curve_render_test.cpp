@@ -159,8 +159,8 @@ TEST(CurveRender, HotHairInACavityRendersTheBlackbody) {
       << "Shape \"sphere\" \"float radius\" 6\n";
     const char* materials[] = {
         "\"float eumelanin\" 1.3 \"float beta_m\" 0.3",
-        "\"rgb sigma_a\" [0.2 1.5 6] \"float beta_m\" 0.15 \"float beta_n\" 0.6 "
-        "\"float alpha\" 4",
+        ("\"rgb sigma_a\" [0.2 1.5 6] \"float beta_m\" 0.15 \"float beta_n\" 0.6 "
+         "\"float alpha\" 4"),
         "\"float pheomelanin\" 3 \"float eta\" 1.33 \"float beta_m\" 0.8 \"float beta_n\" 0.9"};
     for (int i = 0; i < 18; ++i) {
         if (i % 6 == 0) s << "Material \"hair\" " << materials[i / 6] << "\n";

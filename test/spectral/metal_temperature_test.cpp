@@ -195,8 +195,9 @@ TEST(MetalTemperature, GoldAndSilverInfraredEmissivityRisesSmoothly) {
             for (double lambda = 800; lambda < 1400; lambda *= 1.005) {
                 std::complex<double> nk = Tabulated(table, lambda, T);
                 double e = HotNormalEmissivity(nk * nk);
-                if (last > 0)
+                if (last > 0) {
                     EXPECT_NEAR(e / last, 1, 0.02) << m << " at " << lambda << " nm, " << T << " K";
+                }
                 last = e;
             }
         }

@@ -49,7 +49,10 @@ class OIIOReader final : public ImageFileReader {
         spec.height = s.height;
         for (int c = 0; c < s.nchannels; ++c) {
             std::string n = c < int(s.channelnames.size()) ? s.channelnames[c] : "";
-            if (n.empty()) n = "C" + std::to_string(c);
+            if (n.empty()) {
+                n = 'C';
+                n += std::to_string(c);
+            }
             spec.channelNames.push_back(n);
         }
         switch (OIIO::TypeDesc::BASETYPE(s.format.basetype)) {
