@@ -24,6 +24,8 @@ import sys
 
 import yaml
 
+from table_thinning import thin
+
 
 def rows_of(path, kind):
     with open(path) as f:
@@ -56,26 +58,10 @@ def in_range(rows):
     return [(l, n, 0.0 if k < 1e-12 else k) for l, n, k in rows[lo:hi + 1]]
 
 
-def within(a, b, between):
-    for l, n, k in between:
-        t = (l - a[0]) / (b[0] - a[0])
-        ni = a[1] + t * (b[1] - a[1])
-        ki = a[2] + t * (b[2] - a[2])
-        if abs(ni - n) > 2e-4 or abs(ki - k) > max(0.02 * k, 1e-8):
-            return False
-    return True
-
-
-def thin(rows):
-    kept = [rows[0]]
-    i = 0
-    while i < len(rows) - 1:
-        j = i + 1
-        while j + 1 < len(rows) and within(rows[i], rows[j + 1], rows[i + 1:j + 1]):
-            j += 1
-        kept.append(rows[j])
-        i = j
-    return kept
+def close(interpolated, actual, column):
+    if column == 1:
+        return abs(interpolated - actual) <= 2e-4
+    return abs(interpolated - actual) <= max(0.02 * actual, 1e-8)
 
 
 def emit(name, rows, column):
@@ -94,7 +80,7 @@ def emit(name, rows, column):
 def main():
     root = sys.argv[1]
     for label, rows in (("FusedSilica", fused_silica(root)), ("SodaLime", soda_lime(root))):
-        table = thin(in_range(rows))
+        table = thin(in_range(rows), close)
         print(f"// {label}: {len(table)} of {len(in_range(rows))} points")
         emit(f"kGlass{label}Eta", table, 1)
         emit(f"kGlass{label}K", table, 2)

@@ -23,6 +23,8 @@ import sys
 
 import yaml
 
+from table_thinning import thin
+
 FILES = {
     "Brass": "database/data/other/alloys/Cu-Zn/nk/Querry-Cu70Zn30.yml",
     "Magnesia": "database/data/main/MgO/nk/Synowicki.yml",
@@ -45,33 +47,15 @@ def in_range(rows):
     return rows[lo:hi + 1]
 
 
-def within(a, b, between):
-    for l, n, k in between:
-        t = (l - a[0]) / (b[0] - a[0])
-        ni = a[1] + t * (b[1] - a[1])
-        ki = a[2] + t * (b[2] - a[2])
-        if abs(ni - n) > 3e-3 * abs(n) + 1e-4 or abs(ki - k) > 3e-3 * abs(k) + 1e-4:
-            return False
-    return True
-
-
-def thin(rows):
-    kept = [rows[0]]
-    i = 0
-    while i < len(rows) - 1:
-        j = i + 1
-        while j + 1 < len(rows) and within(rows[i], rows[j + 1], rows[i + 1:j + 1]):
-            j += 1
-        kept.append(rows[j])
-        i = j
-    return kept
+def close(interpolated, actual, column):
+    return abs(interpolated - actual) <= 3e-3 * abs(actual) + 1e-4
 
 
 def main():
     root = sys.argv[1]
     for label, path in FILES.items():
         rows = in_range(rows_of(os.path.join(root, path)))
-        table = thin(rows)
+        table = thin(rows, close)
         print(f"// {label}: {len(table)} of {len(rows)} points")
         print(f"const Row k{label}[] = {{")
         items = [f"{{{l:.5g}, {n:.5g}, {k:.5g}}}," for l, n, k in table]

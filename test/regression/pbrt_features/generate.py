@@ -32,6 +32,13 @@ def write_gzip(name, data):
             out.write(data)
 
 
+def write_pfm(name, w, h, data):
+    # Little-endian RGB floats, rows bottom to top
+    with open(name, "wb") as out:
+        out.write(b"PF\n%d %d\n-1.0\n" % (w, h))
+        out.write(struct.pack("<%df" % len(data), *data))
+
+
 def main():
     v, f = icosphere()
     header = ("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\n"
@@ -75,9 +82,7 @@ def main():
             nx, ny, nz = -dh * u / r, -dh * v2 / r, 1.0
             l = math.sqrt(nx * nx + ny * ny + nz * nz)
             data += [0.5 + 0.5 * nx / l, 0.5 + 0.5 * ny / l, 0.5 + 0.5 * nz / l]
-    with open("normalmap.pfm", "wb") as out:
-        out.write(b"PF\n%d %d\n-1.0\n" % (w, h))
-        out.write(struct.pack("<%df" % len(data), *data))
+    write_pfm("normalmap.pfm", w, h, data)
 
     # An 8 x 8 checker of two colours with a gradient, 24-bit BGR, bottom-left origin
     w = h = 8
@@ -128,9 +133,7 @@ def main():
             z = 1 - (abs(dx) + abs(dy))  # the octahedral map's height (sign of z)
             data += [0.3 + 0.9 * max(z, 0) + 0.3 * (dx > 0), 0.4 + 0.5 * max(z, 0),
                      0.8 + 0.2 * max(-z, 0)]
-    with open("sky.pfm", "wb") as out:
-        out.write(b"PF\n%d %d\n-1.0\n" % (w, h))
-        out.write(struct.pack("<%df" % len(data), *data))
+    write_pfm("sky.pfm", w, h, data)
 
     # Goniometric map: bright towards +z of the map (the light's +y), dark towards -z, a
     # checker of 4-pixel squares, and the channels differ (the light uses their mean)
@@ -144,9 +147,7 @@ def main():
             c = 1.0 if (x // 4 + y // 4) % 2 == 0 else 0.3
             base = c * (0.2 + 1.5 * max(z, 0) + 0.4 * (dx > 0))
             data += [1.2 * base, base, 0.8 * base]
-    with open("goniometric.pfm", "wb") as out:
-        out.write(b"PF\n%d %d\n-1.0\n" % (w, h))
-        out.write(struct.pack("<%df" % len(data), *data))
+    write_pfm("goniometric.pfm", w, h, data)
 
 
 if __name__ == "__main__":
