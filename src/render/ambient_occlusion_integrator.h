@@ -2,9 +2,9 @@
 // first surface (interface surfaces are passed through) one direction of the hemisphere about
 // the geometric normal facing the ray, cosine-weighted ("cossample", default) or uniform; if no
 // surface lies within "maxdistance" along it, the film's white: its colour space's illuminant
-// at unit luminance, weighted by cos theta / (pi pdf), so that an unoccluded point renders
-// luminance 1 and an occluded fraction of the hemisphere darkens it. Media, lights and
-// thermal emission play no part (as in pbrt-v4).
+// (as pbrt-v4: the film's, not the Integrator directive's) at unit luminance, weighted by cos theta
+// / (pi pdf), so that an unoccluded point renders luminance 1 and an occluded fraction of the
+// hemisphere darkens it. Media, lights and thermal emission play no part (as in pbrt-v4).
 #pragma once
 
 #include "base/sampling.h"
@@ -22,7 +22,7 @@ class AmbientOcclusionIntegrator {
     AmbientOcclusionIntegrator(const Scene& scene, const PathIntegratorSettings& settings)
         : scene(scene),
           settings(*settings.ambientOcclusion),
-          illuminant(settings.ambientOcclusion->colorSpace->Illuminant()),
+          illuminant(scene.job->film->ColorSpace()->Illuminant()),
           illuminantScale(1 / EmissionLuminance(Spectrum(illuminant))) {}
 
     SampledSpectrum Li(Ray ray, SampledWavelengths& lambda, Sampler& sampler,

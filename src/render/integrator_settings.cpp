@@ -55,8 +55,6 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOpti
         if (!(ao.maxDistance > 0))
             throw SceneError(e.parameters.Loc("maxdistance"), "\"maxdistance\" must be > 0",
                              std::to_string(ao.maxDistance));
-        const RGBColorSpace* cs = e.parameters.ColorSpace();
-        ao.colorSpace = cs ? cs : &RGBColorSpace::sRGB();
         s.ambientOcclusion = ao;
     }
     s.volumetric = e.name != "path";

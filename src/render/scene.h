@@ -77,7 +77,6 @@ struct PathIntegratorSettings {
     struct AmbientOcclusion {
         bool cosSample = true;
         Float maxDistance = Infinity;
-        const RGBColorSpace* colorSpace = nullptr;
     };
     std::optional<AmbientOcclusion> ambientOcclusion;
 };

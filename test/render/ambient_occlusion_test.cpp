@@ -36,15 +36,35 @@ std::string AOScene(const std::string& integrator, const std::string& world) {
 
 TEST(AmbientOcclusion, AnOpenFloorIsUnoccluded) {
     for (const char* sampling : {"true", "false"}) {
-        testing::RenderedScene r =
-            testing::RenderText(AOScene(std::string("\"bool cossample\" ") + sampling,
-                                      "Shape \"bilinearmesh\" \"point3 P\" [-5 -5 -1 5 -5 -1 -5 5 "
-                                      "-1 5 5 -1]\n"));
+        testing::RenderedScene r = testing::RenderText(
+            AOScene(std::string("\"bool cossample\" ") + sampling,
+                    "Shape \"bilinearmesh\" \"point3 P\" [-5 -5 -1 5 -5 -1 -5 5 "
+                    "-1 5 5 -1]\n"));
         EXPECT_TRUE(r.warnings.empty()) << r.warnings[0].message;  // no "no lights"
         RunningStats s = PixelLuminance(r);
         // (the noise is the wavelengths' alone with cosine sampling)
         EXPECT_NEAR(s.Mean(), 1, 4 * s.StandardError() + 2e-3) << sampling;
     }
+}
+
+// White is the film's (its colour space's illuminant), as in pbrt-v4, not that of a colour
+// space declared after the Film directive: an unoccluded floor renders R = G = B = 1 in an sRGB
+// film although ACES's D60 white is in effect at the Integrator directive
+TEST(AmbientOcclusion, WhiteIsTheFilmsWhite) {
+    std::string text = AOScene("",
+                               "Shape \"bilinearmesh\" \"point3 P\" [-5 -5 -1 5 -5 -1 -5 5 "
+                               "-1 5 5 -1]\n");
+    text.insert(text.find("Integrator"), "ColorSpace \"aces2065-1\"\n");
+    testing::RenderedScene r = testing::RenderText(text);
+    RunningStats channel[3];
+    Bounds2i b = r.scene->job->film->PixelBounds();
+    for (int y = b.pMin.y; y < b.pMax.y; ++y)
+        for (int x = b.pMin.x; x < b.pMax.x; ++x) {
+            RGB rgb = r.scene->job->film->GetPixelRGB({x, y});
+            for (int c = 0; c < 3; ++c) channel[c].Add(rgb[c]);
+        }
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(channel[c].Mean(), 1, 4 * channel[c].StandardError() + 3e-3) << "channel " << c;
 }
 
 TEST(AmbientOcclusion, InsideASphereTheOccludedShareIsTheChordsShare) {
