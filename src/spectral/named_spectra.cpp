@@ -18,9 +18,9 @@ namespace {
 
 // A metal's table (metal-X-eta or metal-X-k) extended to 300 nm - 20 um with the Lorentz-Drude
 // model of Rakic et al. 1998 (lorentz_drude.h), where it has X, else with measured infrared
-// constants (infrared_metal_data.h: iron, brass, magnesia): beyond each end of the table the values go over
-// linearly from the table's end value to the model's (within 15 % of the end's wavelength below
-// the table, 50 % above it), then follow the model; where the model has no value below the
+// constants (infrared_metal_data.h: iron, brass, magnesia): beyond each end of the table the values
+// go over linearly from the table's end value to the model's (within 15 % of the end's wavelength
+// below the table, 50 % above it), then follow the model; where the model has no value below the
 // table, the table holds its first value. Tables of other names, and metals with neither, come
 // back unchanged (nullopt).
 std::optional<std::vector<float>> ExtendedMetalTable(std::string_view name,

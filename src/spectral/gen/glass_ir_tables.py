@@ -24,7 +24,7 @@ import sys
 
 import yaml
 
-from table_thinning import thin
+from table_thinning import print_array, thin
 
 
 def rows_of(path, kind):
@@ -65,16 +65,7 @@ def close(interpolated, actual, column):
 
 
 def emit(name, rows, column):
-    print(f"const float {name}[] = {{")
-    items = [f"{r[0]:.6g}, {r[column]:.6g}," for r in rows]
-    line = "   "
-    for item in items:
-        if len(line) + len(item) + 1 > 99:
-            print(line)
-            line = "   "
-        line += " " + item
-    print(line)
-    print("};\n")
+    print_array(f"const float {name}[]", [f"{r[0]:.6g}, {r[column]:.6g}," for r in rows])
 
 
 def main():

@@ -23,7 +23,7 @@ import sys
 
 import yaml
 
-from table_thinning import thin
+from table_thinning import print_array, thin
 
 FILES = {
     "Brass": "database/data/other/alloys/Cu-Zn/nk/Querry-Cu70Zn30.yml",
@@ -57,17 +57,8 @@ def main():
         rows = in_range(rows_of(os.path.join(root, path)))
         table = thin(rows, close)
         print(f"// {label}: {len(table)} of {len(rows)} points")
-        print(f"const Row k{label}[] = {{")
-        items = [f"{{{l:.5g}, {n:.5g}, {k:.5g}}}," for l, n, k in table]
-        line = "   "
-        for item in items:
-            if len(line) + len(item) + 1 > 99:
-                print(line)
-                line = "   "
-            line += " " + item
-        print(line)
-        print("};\n")
-
+        print_array(f"const Row k{label}[]",
+                    [f"{{{l:.5g}, {n:.5g}, {k:.5g}}}," for l, n, k in table])
 
 if __name__ == "__main__":
     main()

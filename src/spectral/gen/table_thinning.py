@@ -1,4 +1,4 @@
-"""Thinning of tabulated optical constants for kiln's embedded tables (shared by the
+"""Thinning and printing of tabulated optical constants for kiln's embedded tables (shared by the
 generators in this folder): keeps a table's own points such that every dropped point lies
 close to the straight line between the kept ones around it (kiln interpolates linearly in
 wavelength)."""
@@ -25,3 +25,16 @@ def thin(rows, close):
         kept.append(rows[j])
         i = j
     return kept
+
+
+def print_array(declaration, items):
+    """Prints a C++ array `declaration = { items }` wrapped at 99 columns."""
+    print(f"{declaration} = {{")
+    line = "   "
+    for item in items:
+        if len(line) + len(item) + 1 > 99:
+            print(line)
+            line = "   "
+        line += " " + item
+    print(line)
+    print("};\n")
