@@ -32,6 +32,42 @@ Float PhotometricScale(Float scale, const Spectrum& s) {
     return lum > 0 ? scale / lum : scale;
 }
 
+// A light's brightest emission: its final scale (after "power" or "illuminance") times the
+// largest values of its spectrum and of its image. Above kMaxEmission (spectral/planck.h), or
+// not a number (an RGB beyond float's range), it is a SceneError at the first of the
+// parameters that set it.
+void CheckPeakEmission(double peak, const ParameterDictionary& params, const FileLoc& loc) {
+    if (peak <= kMaxEmission) return;
+    FileLoc at = loc;
+    std::string token = "scale";
+    for (const char* name : {"power", "illuminance", "scale", "L", "I", "filename"})
+        if (params.Has(name)) {
+            at = params.Loc(name);
+            token = name;
+            break;
+        }
+    char value[32] = "not a finite number";
+    if (std::isfinite(peak)) std::snprintf(value, sizeof(value), "%g", peak);
+    throw SceneError(at,
+                     std::string("this light is too bright: its scale times the largest values "
+                                 "of its spectrum and image is ") +
+                         value +
+                         ", beyond the 1e30 W m^-2 sr^-1 nm^-1 (W sr^-1 nm^-1 for point-like "
+                         "lights) that kiln renders in single precision",
+                     token);
+}
+
+// The largest value of an image's channels
+double ImageMax(const Image& image) {
+    double m = 0;
+    Point2i res = image.Resolution();
+    for (int y = 0; y < res.y; ++y)
+        for (int x = 0; x < res.x; ++x)
+            for (int c = 0; c < image.NChannels(); ++c)
+                m = std::max(m, double(image.GetChannel({x, y}, c)));
+    return m;
+}
+
 // The transform taking local coordinates in frame f to the frame's space.
 Transform FromFrame(const Frame& f) {
     SquareMatrix4 m;
@@ -41,6 +77,22 @@ Transform FromFrame(const Frame& f) {
         m.m[i][2] = f.z[i];
     }
     return Transform(m, m.Transposed());
+}
+
+// A pixel of an emission image: finite and at most kMaxEmission (with "power", the image's
+// scale would not matter, but kiln's light scale would underflow), else a SceneError.
+void CheckEmissionPixel(Float value, const FileLoc& loc, const std::string& filename) {
+    if (!std::isfinite(value))
+        throw SceneError(loc,
+                         "image has infinite or not-a-number pixels and so is not suitable as a "
+                         "light source",
+                         filename);
+    if (value > kMaxEmission)
+        throw SceneError(loc,
+                         "image has pixels above 1e30, beyond what kiln renders in single "
+                         "precision; scale the image down (\"power\" or \"scale\" set the "
+                         "light's brightness)",
+                         filename);
 }
 
 // Reads an emission image, keeping its R, G, B channels, and the colour space its file names
@@ -63,24 +115,21 @@ Image ReadEmissionImage(const std::string& filename, const FileLoc& loc,
     for (int y = 0; y < res.y; ++y)
         for (int x = 0; x < res.x; ++x)
             for (int c = 0; c < 3; ++c)
-                if (!std::isfinite(image.GetChannel({x, y}, c)))
-                    throw SceneError(loc,
-                                     "image has infinite or not-a-number pixels and so is not "
-                                     "suitable as a light source",
-                                     filename);
+                CheckEmissionPixel(image.GetChannel({x, y}, c), loc, filename);
     *colorSpace = metadata.colorSpace ? metadata.colorSpace : &RGBColorSpace::sRGB();
     return image;
 }
 
-// Luminance of an RGB in colour space cs (the Y row of its RGB -> XYZ matrix).
-Float RGBLuminance(const RGBColorSpace& cs, Float r, Float g, Float b) {
+// Luminance of an RGB in colour space cs (the Y row of its RGB -> XYZ matrix), in double so
+// that it does not overflow for RGBs near float's largest value.
+double RGBLuminance(const RGBColorSpace& cs, Float r, Float g, Float b) {
     const ColorMatrix& m = cs.XYZFromRGB();
-    return m[1][0] * r + m[1][1] * g + m[1][2] * b;
+    return m[1][0] * double(r) + m[1][1] * double(g) + m[1][2] * double(b);
 }
 
 // Individual light kinds
 Light CreatePoint(const ParameterDictionary& params, const Transform& renderFromLight,
-                  ObjectArena& arena) {
+                  const FileLoc& loc, ObjectArena& arena) {
     const RGBColorSpace& cs = ColorSpaceOf(params);
     Spectrum I = *params.GetOneSpectrum("I", Spectrum(cs.Illuminant()), SpectrumType::Illuminant);
     Float sc = PhotometricScale(params.GetOneFloat("scale", 1), I);
@@ -88,11 +137,12 @@ Light CreatePoint(const ParameterDictionary& params, const Transform& renderFrom
     if (phi_v > 0) sc *= phi_v / (4 * Pi);
     Point3f from = params.GetOnePoint3f("from", Point3f(0, 0, 0));
     Transform t = renderFromLight * Translate(Vector3f(from));
+    CheckPeakEmission(double(sc) * I.MaxValue(), params, loc);
     return arena.New<PointLight>(t, std::move(I), sc);
 }
 
 Light CreateSpot(const ParameterDictionary& params, const Transform& renderFromLight,
-                 ObjectArena& arena) {
+                 const FileLoc& loc, ObjectArena& arena) {
     const RGBColorSpace& cs = ColorSpaceOf(params);
     Spectrum I = *params.GetOneSpectrum("I", Spectrum(cs.Illuminant()), SpectrumType::Illuminant);
     Float sc = PhotometricScale(params.GetOneFloat("scale", 1), I);
@@ -113,11 +163,12 @@ Light CreateSpot(const ParameterDictionary& params, const Transform& renderFromL
                                               std::cos(Radians(coneangle)));
         if (k_e > 0) sc *= phi_v / k_e;
     }
+    CheckPeakEmission(double(sc) * I.MaxValue(), params, loc);
     return arena.New<SpotLight>(t, std::move(I), sc, coneangle, coneangle - conedelta);
 }
 
 Light CreateDistant(const ParameterDictionary& params, const Transform& renderFromLight,
-                    ObjectArena& arena) {
+                    const FileLoc& loc, ObjectArena& arena) {
     const RGBColorSpace& cs = ColorSpaceOf(params);
     Spectrum L = *params.GetOneSpectrum("L", Spectrum(cs.Illuminant()), SpectrumType::Illuminant);
     Float sc = PhotometricScale(params.GetOneFloat("scale", 1), L);
@@ -133,6 +184,7 @@ Light CreateDistant(const ParameterDictionary& params, const Transform& renderFr
     // Illuminance on a surface facing the light is scale * luminance(L)
     Float E_v = params.GetOneFloat("illuminance", -1);
     if (E_v > 0) sc *= E_v;
+    CheckPeakEmission(double(sc) * L.MaxValue(), params, loc);
     return arena.New<DistantLight>(t, std::move(L), sc);
 }
 
@@ -181,31 +233,24 @@ std::optional<Light> CreateGoniometric(const ParameterDictionary& params,
     bool negative = false;
     for (int y = 0; y < res.y; ++y)
         for (int x = 0; x < res.x; ++x) {
-            Float sum = 0;
+            double sum = 0;
             for (int c : channels) sum += file.GetChannel({x, y}, c);
-            Float value = sum / Float(channels.size());
-            if (!std::isfinite(value))
-                throw SceneError(at,
-                                 "image has infinite or not-a-number pixels and so is not "
-                                 "suitable as a light source",
-                                 filename);
+            Float value = Float(sum / double(channels.size()));
+            CheckEmissionPixel(value, at, filename);
             negative |= value < 0;
             image.SetChannel({x, y}, 0, std::max<Float>(0, value));
         }
     if (negative)
         diag.Warn(at, "a goniometric light's image has negative values; they emit nothing");
     if (phi_v > 0) {
-        Float k_e = 4 * Pi * image.Average(0);
+        double k_e = 4 * Pi * double(image.Average(0));
         if (k_e > 0)
-            sc *= phi_v / k_e;
+            sc = Float(sc * (phi_v / k_e));
         else
             diag.Warn(params.Loc("power", loc),
                       "\"power\" given for a goniometric light whose image is black; ignored");
     }
-    if (!std::isfinite(sc))
-        throw SceneError(params.Loc("power", loc),
-                         "a goniometric light this bright overflows single precision",
-                         std::to_string(phi_v));
+    CheckPeakEmission(double(sc) * I.MaxValue() * ImageMax(image), params, loc);
     return arena.New<GoniometricLight>(renderFromLight, std::move(I), sc, std::move(image));
 }
 
@@ -229,17 +274,15 @@ Light CreateProjection(const ParameterDictionary& params, const Transform& rende
         ReadEmissionImage(filename, params.Loc("filename", loc), &imageCS, arena.Budget());
     scale = PhotometricScale(scale, Spectrum(imageCS->Illuminant()));
     if (phi_v > 0) {
-        Float k_e = ProjectionLight::LuminousIntegral(image, *imageCS, fov);
+        double k_e = ProjectionLight::LuminousIntegral(image, *imageCS, fov);
         if (k_e > 0)
-            scale *= phi_v / k_e;
+            scale = Float(scale * (phi_v / k_e));
         else
             diag.Warn(params.Loc("power", loc),
                       "\"power\" given for a projection light whose image is black; ignored");
     }
-    if (!std::isfinite(scale))
-        throw SceneError(params.Loc("power", loc),
-                         "a projection light this bright overflows single precision",
-                         std::to_string(phi_v));
+    CheckPeakEmission(double(scale) * imageCS->Illuminant().MaxValue() * ImageMax(image), params,
+                      loc);
     return arena.New<ProjectionLight>(renderFromLight, std::move(image), imageCS, scale, fov);
 }
 
@@ -319,6 +362,7 @@ Light CreateInfinite(const ParameterDictionary& params, const Transform& renderF
         Spectrum Le = L ? *L : Spectrum(cs.Illuminant());
         scale = PhotometricScale(scale, Le);
         if (E_v > 0) scale *= E_v / Pi;
+        CheckPeakEmission(double(scale) * Le.MaxValue(), params, loc);
         return arena.New<UniformInfiniteLight>(renderFromLight, std::move(Le), scale);
     }
 
@@ -353,13 +397,15 @@ Light CreateInfinite(const ParameterDictionary& params, const Transform& renderF
                 Point2f st((x + 0.5f) / res.x, (y + 0.5f) / res.y);
                 Vector3f w = map.DirectionFromST(st);
                 if (w.z <= 0) continue;
-                Float lum = RGBLuminance(imageCS, image.GetChannel({x, y}, 0),
-                                         image.GetChannel({x, y}, 1), image.GetChannel({x, y}, 2));
-                k_e += double(lum) * w.z * map.SolidAnglePerUnitST(w);
+                double lum = RGBLuminance(imageCS, image.GetChannel({x, y}, 0),
+                                          image.GetChannel({x, y}, 1), image.GetChannel({x, y}, 2));
+                k_e += lum * w.z * map.SolidAnglePerUnitST(w);
             }
         k_e /= double(res.x) * res.y;
         if (k_e > 0) scale *= Float(E_v / k_e);
     }
+    CheckPeakEmission(double(scale) * imageCS.Illuminant().MaxValue() * ImageMax(image), params,
+                      loc);
     try {
         if (portal)
             return arena.New<PortalInfiniteLight>(renderFromLight, image, &imageCS, scale, *portal);
@@ -378,11 +424,11 @@ std::optional<Light> Light::Create(const std::string& name, const ParameterDicti
                                    const Transform& renderFromWorld) {
     std::optional<Light> light;
     if (name == "point")
-        light = CreatePoint(params, renderFromLight, arena);
+        light = CreatePoint(params, renderFromLight, loc, arena);
     else if (name == "spot")
-        light = CreateSpot(params, renderFromLight, arena);
+        light = CreateSpot(params, renderFromLight, loc, arena);
     else if (name == "distant")
-        light = CreateDistant(params, renderFromLight, arena);
+        light = CreateDistant(params, renderFromLight, loc, arena);
     else if (name == "infinite")
         light = CreateInfinite(params, renderFromLight, renderFromWorld, loc, arena, diag);
     else if (name == "goniometric")
@@ -428,7 +474,7 @@ Light Light::CreateArea(const std::string& name, const ParameterDictionary& para
     // "power": the luminous power of the emission over the whole shape, per pbrt-v4
     Float phi_v = params.GetOneFloat("power", -1);
     if (phi_v > 0) {
-        Float k_e = 1;
+        double k_e = 1;
         if (image) {
             Point2i res = image.Resolution();
             double sum = 0;
@@ -436,17 +482,20 @@ Light Light::CreateArea(const std::string& name, const ParameterDictionary& para
                 for (int x = 0; x < res.x; ++x)
                     sum += RGBLuminance(*imageCS, image.GetChannel({x, y}, 0),
                                         image.GetChannel({x, y}, 1), image.GetChannel({x, y}, 2));
-            k_e = Float(sum / (double(res.x) * res.y));
+            k_e = sum / (double(res.x) * res.y);
         }
-        k_e *= (twoSided ? 2 : 1) * shape.Area() * Pi;
+        k_e *= (twoSided ? 2 : 1) * double(shape.Area()) * Pi;
         if (k_e > 0)
-            scale *= phi_v / k_e;
+            scale = Float(scale * (phi_v / k_e));
         else
             diag.Warn(loc,
                       "\"power\" given for an area light that emits nothing (zero area or "
                       "black emission); ignored");
     }
 
+    CheckPeakEmission(double(scale) * (image ? imageCS->Illuminant().MaxValue() * ImageMax(image)
+                                             : Le.MaxValue()),
+                      params, loc);
     const Shape* s = arena.New<Shape>(shape);
     Light light = arena.New<DiffuseAreaLight>(renderFromLight, std::move(Le), scale, s, twoSided,
                                               std::move(image), imageCS, alpha);

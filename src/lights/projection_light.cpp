@@ -51,8 +51,8 @@ Bounds2f ProjectionLight::ScreenBounds(Point2i resolution) {
     return {Point2f(-1, -1 / aspect), Point2f(1, 1 / aspect)};
 }
 
-Float ProjectionLight::LuminousIntegral(const Image& image, const RGBColorSpace& cs,
-                                        Float fovDegrees) {
+double ProjectionLight::LuminousIntegral(const Image& image, const RGBColorSpace& cs,
+                                         Float fovDegrees) {
     Point2i res = image.Resolution();
     Bounds2f screen = ScreenBounds(res);
     Float tanHalf = std::tan(Radians(fovDegrees) / 2);
@@ -60,11 +60,11 @@ Float ProjectionLight::LuminousIntegral(const Image& image, const RGBColorSpace&
     double sum = 0;
     for (int y = 0; y < res.y; ++y)
         for (int x = 0; x < res.x; ++x) {
-            Float lum = 0;
-            for (int c = 0; c < 3; ++c) lum += m[1][c] * image.GetChannel({x, y}, c);
-            sum += double(lum) * PixelSolidAngle(screen, res, x, y, tanHalf);
+            double lum = 0;
+            for (int c = 0; c < 3; ++c) lum += m[1][c] * double(image.GetChannel({x, y}, c));
+            sum += lum * PixelSolidAngle(screen, res, x, y, tanHalf);
         }
-    return Float(sum);
+    return sum;
 }
 
 ProjectionLight::ProjectionLight(const Transform& renderFromLight, Image image,

@@ -55,7 +55,7 @@ class ProjectionLight {
     // The integral of the image's luminance (the Y row of its colour space) over its solid
     // angle: the luminous power at unit scale after the photometric normalisation, which
     // "power" divides by (pbrt-v4's, with exact pixel solid angles as in Phi).
-    static Float LuminousIntegral(const Image& image, const RGBColorSpace& cs, Float fovDegrees);
+    static double LuminousIntegral(const Image& image, const RGBColorSpace& cs, Float fovDegrees);
 
   private:
     // The screen point of a direction in the projector's frame; nullopt behind the light or

@@ -1,8 +1,10 @@
 #include "media/grid_medium.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "media/vdb_file.h"
+#include "spectral/cie.h"
 #include "spectral/planck.h"
 #include "thermal/thermal_properties.h"
 
@@ -77,6 +79,9 @@ MediumEmission ReadGridEmission(const TextureParameterDictionary& params,
     SampledGrid<Float> LeScale;
     Float LeScaleConstant = 1;
     size_t n = size_t(nx) * size_t(ny) * size_t(nz);
+    // The largest "Lescale", constant or per voxel, for the emission's limit
+    double LeScaleMax = LeScaleValues.empty() ? 1 : 0;
+    for (Float s : LeScaleValues) LeScaleMax = std::max(LeScaleMax, double(s));
     if (LeScaleValues.size() == 1) {
         LeScaleConstant = LeScaleValues[0];
     } else if (!LeScaleValues.empty()) {
@@ -105,6 +110,8 @@ MediumEmission ReadGridEmission(const TextureParameterDictionary& params,
                 modelOverride ? *modelOverride : t.model.value_or(EmissionModel::Kirchhoff);
             return MediumEmission::Thermal(std::move(temperature), offset, tScale, model);
         }
+        // pbrt-v4's blackbody peaks at 1 (times CIE_Y_integral, medium_emission.h)
+        CheckMediumEmissionPeak(LeScaleMax * CIE_Y_integral, params);
         if (LeScale.Empty() && constantLeScale)
             return MediumEmission::NormalizedBlackbody(std::move(temperature), offset, tScale, {},
                                                        LeScaleConstant);
@@ -120,8 +127,11 @@ MediumEmission ReadGridEmission(const TextureParameterDictionary& params,
                              "temperature");
         return *thermal;
     }
-    if (Le) return MediumEmission::Radiance(NormalizedLe(*Le, LeScaleConstant), std::move(LeScale));
-    return {};
+    if (!Le) return {};
+    Spectrum normalized = NormalizedLe(*Le, LeScaleConstant);
+    CheckMediumEmissionPeak(double(normalized.MaxValue()) * (LeScale.Empty() ? 1 : LeScaleMax),
+                            params);
+    return MediumEmission::Radiance(std::move(normalized), std::move(LeScale));
 }
 
 GridMedium* GridMedium::Create(const TextureParameterDictionary& params,

@@ -19,8 +19,11 @@ HomogeneousMedium* HomogeneousMedium::Create(const TextureParameterDictionary& p
                          "temperature");
     if (thermal)
         emission = *thermal;
-    else if (Le)
-        emission = MediumEmission::Radiance(NormalizedLe(*Le, LeScale));
+    else if (Le) {
+        Spectrum normalized = NormalizedLe(*Le, LeScale);
+        CheckMediumEmissionPeak(normalized.MaxValue(), params);
+        emission = MediumEmission::Radiance(std::move(normalized));
+    }
     return arena.New<HomogeneousMedium>(c, std::move(emission));
 }
 

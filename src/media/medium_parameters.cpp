@@ -7,6 +7,7 @@
 #include "spectral/cie.h"
 #include "spectral/color.h"
 #include "spectral/measured_media.h"
+#include "spectral/planck.h"
 #include "thermal/thermal_properties.h"
 
 namespace kiln {
@@ -98,6 +99,20 @@ Spectrum NormalizedLe(const Spectrum& Le, Float scale) {
     DenselySampledSpectrum d(Le);
     d.Scale(scale / (SpectrumToPhotometric(Le) / CIE_Y_integral));
     return d;
+}
+
+void CheckMediumEmissionPeak(double peak, const TextureParameterDictionary& params) {
+    if (peak <= kMaxEmission) return;
+    const char* name = params.Has("Lescale") ? "Lescale" : "Le";
+    char value[32];
+    std::snprintf(value, sizeof(value), "%g", peak);
+    throw SceneError(params.Loc(name),
+                     std::string("this medium's emission is too bright: its radiance (\"Le\" "
+                                 "or pbrt-v4's blackbody, times \"Lescale\") reaches ") +
+                         value +
+                         ", beyond the 1e30 W m^-2 sr^-1 nm^-1 that kiln renders in single "
+                         "precision",
+                     name);
 }
 
 std::optional<MediumEmission> ReadMediumThermalEmission(const TextureParameterDictionary& params,

@@ -44,6 +44,9 @@ std::array<int, 3> ReadGridResolution(const TextureParameterDictionary& params, 
 std::optional<Spectrum> ReadMediumLe(const TextureParameterDictionary& params);
 // Le divided by its luminance (as lights are, lights/light.h), times scale.
 Spectrum NormalizedLe(const Spectrum& Le, Float scale);
+// A medium's brightest emitted radiance (its Le, normalised and scaled): above kMaxEmission
+// (spectral/planck.h), or not a number, a SceneError at "Lescale" (or "Le" without one).
+void CheckMediumEmissionPeak(double peak, const TextureParameterDictionary& params);
 
 // kiln's thermal emission of a medium with a constant or textured "temperature"; none when
 // the medium has no such parameter. modelOverride: the command line's --emission.

@@ -1,5 +1,7 @@
 #include "media/rgb_grid_medium.h"
 
+#include <algorithm>
+
 namespace kiln {
 
 RGBGridMedium::RGBGridMedium(const Bounds3f& bounds, const Transform& renderFromMedium, Float g,
@@ -82,6 +84,9 @@ RGBGridMedium* RGBGridMedium::Create(const TextureParameterDictionary& params,
         throw SceneError(params.Loc("temperature"),
                          "a medium glows either by \"Le\" or by its \"temperature\", not both",
                          "temperature");
+    double LePeak = 0;
+    for (const Spectrum& s : le) LePeak = std::max(LePeak, double(s.MaxValue()));
+    if (!le.empty()) CheckMediumEmissionPeak(LePeak * LeScale, params);
     auto grid = [&](std::vector<Spectrum> v) {
         return v.empty() ? SampledGrid<Spectrum>()
                          : SampledGrid<Spectrum>(std::move(v), nx, ny, nz);

@@ -245,6 +245,13 @@ SceneMaterials CreateMaterials(SceneDescription& desc, const NamedTextures& text
 }
 
 // Shapes of one directive with their material, heat and media
+// The directive a light comes from
+struct LightOrigin {
+    FileLoc loc;
+    std::string name;
+    bool hotShape = false;  // a thermal light (the shape's temperature makes it glow)
+};
+
 struct SceneShapes {
     std::vector<Shape> shapes;
     ShapeHeat heat;
@@ -322,16 +329,20 @@ SceneShapes CreateShapes(ShapeSceneEntity& s, const NamedTextures& textures,
 }
 
 // Lights: the scene's lights, then one area or thermal light per shape of each hot or
-// emitting shape directive. Returns, per shape directive, the indices of its shapes' lights.
+// emitting shape directive. Returns, per shape directive, the indices of its shapes' lights;
+// origins gets each light's directive (LightSource, AreaLightSource or the hot shape): where
+// it is and its name.
 std::vector<std::vector<int>> CreateLights(Scene& scene, SceneDescription& desc,
                                            const std::vector<SceneShapes>& shapes,
-                                           ThermalEmitters& emitters, Diagnostics& diag) {
+                                           ThermalEmitters& emitters,
+                                           std::vector<LightOrigin>& origins, Diagnostics& diag) {
     ObjectArena& arena = scene.arena;
     for (TransformedSceneEntity& e : desc.lights) {
         std::optional<Light> light =
             Light::Create(e.name, e.parameters, e.renderFromObject, e.loc, arena, diag,
                           desc.camera.cameraTransform.RenderFromWorld());
         if (light) scene.lights.push_back(*light);
+        if (light) origins.push_back({e.loc, e.name});
     }
     std::vector<std::vector<int>> shapeLights(desc.shapes.size());
     for (size_t i = 0; i < desc.shapes.size(); ++i) {
@@ -350,6 +361,7 @@ std::vector<std::vector<int>> CreateLights(Scene& scene, SceneDescription& desc,
                 scene.lights.push_back(Light::CreateArea("diffuse", le.parameters,
                                                          le.renderFromObject, shape, le.loc, arena,
                                                          diag, shapes[i].alpha));
+                origins.push_back({le.loc, le.name});
             }
         } else if (shapes[i].heat.emission && s.motion) {
             diag.Warn(s.loc,
@@ -358,17 +370,35 @@ std::vector<std::vector<int>> CreateLights(Scene& scene, SceneDescription& desc,
             shapeLights[i] = emitters.CreateLights(shapes[i].shapes, shapes[i].heat, scene.lights,
                                                    shapes[i].alpha);
             scene.thermalEmitterCount += int(shapeLights[i].size());
+            origins.resize(scene.lights.size(), {s.loc, s.name, true});
         }
     }
     return shapeLights;
 }
 
-// Lights learn the scene's extent (infinite and distant lights need it)
-void PreprocessLights(Scene& scene) {
+// Lights learn the scene's extent (infinite and distant lights need it). The power of each
+// light but those at infinity (whose power grows with the scene's extent and is not what
+// selects them) must be finite: light selection weighs lights by it. Light creation limits
+// the emission itself (lights/light_create.cpp); this catches emission times a huge area.
+void PreprocessLights(Scene& scene, const std::vector<LightOrigin>& origins) {
     Bounds3f bounds = scene.aggregate->Bounds();
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         scene.lights[i].Preprocess(bounds);
-        if (scene.lights[i].Type() == LightType::Infinite) scene.infiniteLights.push_back(int(i));
+        if (scene.lights[i].Type() == LightType::Infinite) {
+            scene.infiniteLights.push_back(int(i));
+            continue;
+        }
+        SampledSpectrum phi = scene.lights[i].Phi(scene.spectralRange.Spread(0.5f));
+        for (int c = 0; c < NSpectrumSamples; ++c)
+            if (!std::isfinite(phi[c]))
+                throw SceneError(origins[i].loc,
+                                 origins[i].hotShape
+                                     ? "this hot shape radiates more power than single precision "
+                                       "holds: its temperature (textured ones too) times its area "
+                                       "is too large; at most 1e27 K, and less on large shapes"
+                                     : "this light emits more power than single precision holds "
+                                       "(its emission times its area); make it dimmer or smaller",
+                                 origins[i].name);
     }
 }
 
@@ -640,11 +670,13 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
     std::vector<SceneShapes> shapes;
     for (ShapeSceneEntity& s : desc.shapes)
         shapes.push_back(CreateShapes(s, textures, materials, media, emitters, scene.arena, diag));
-    std::vector<std::vector<int>> shapeLights = CreateLights(scene, desc, shapes, emitters, diag);
+    std::vector<LightOrigin> lightOrigins;
+    std::vector<std::vector<int>> shapeLights =
+        CreateLights(scene, desc, shapes, emitters, lightOrigins, diag);
     std::vector<std::vector<int>> shapeWindows = CreateGlassWindows(scene, desc, shapes);
     CreateAggregate(scene, desc, shapes, shapeLights, shapeWindows, textures, materials, media,
                     emitters, diag);
-    PreprocessLights(scene);
+    PreprocessLights(scene, lightOrigins);
     CreateLightSampler(scene);
     scene.varyingThermalLights = emitters.VaryingLights();
     scene.features = DecideFeatures(scene, desc, shapes, materials, emitters, options);

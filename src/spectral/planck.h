@@ -23,18 +23,22 @@ inline constexpr double kSecondRadiationConstant =
 inline constexpr double kFirstRadiationConstantL =
     2 * kPlanckConstant * kSpeedOfLight * kSpeedOfLight;
 inline constexpr double kStefanBoltzmannConstant = 5.670374419184429e-8;
-// Wien's displacement constant b = c2 / x5, m K, where x5 solves x = 5 (1 - e^-x).
 // The hottest temperature kiln renders, kelvin. At 1e27 K, B(360 nm) is 4.9e29
 // W m^-2 sr^-1 nm^-1 (Rayleigh-Jeans, 493 T at kiln's shortest wavelength), leaving float
 // (3.4e38) nine orders of magnitude for path throughputs, sampling weights and the film's
 // sensor response; hotter scene temperatures are errors at their parameter.
 inline constexpr double kMaxRenderTemperature = 1e27;
+// The brightest emission kiln renders, with the same headroom: spectral radiance in
+// W m^-2 sr^-1 nm^-1 (intensity in W sr^-1 nm^-1 for point-like lights) at any wavelength.
+// Brighter lights and media are errors at their parameter.
+inline constexpr double kMaxEmission = 1e30;
 // A temperature for messages: "1e+38", "1500"
 inline std::string FormatKelvin(double T) {
     char text[32];
     std::snprintf(text, sizeof(text), "%g", T);
     return text;
 }
+// Wien's displacement constant b = c2 / x5, m K, where x5 solves x = 5 (1 - e^-x).
 inline constexpr double kWienX5 = 4.9651142317442763;
 inline constexpr double kWienDisplacementConstant = 2.897771955185173e-3;
 

@@ -27,7 +27,9 @@ Float RGBSigmoidPolynomial::MaxValue() const {
 
 // RGBToSpectrumTable
 RGBSigmoidPolynomial RGBToSpectrumTable::operator()(const RGB& in) const {
-    RGB rgb(Clamp(in.r, 0, 1), Clamp(in.g, 0, 1), Clamp(in.b, 0, 1));
+    // (Not-a-number components as 0: the table is indexed by them)
+    auto unit = [](Float v) { return v > 0 ? std::min<Float>(v, 1) : 0; };
+    RGB rgb(unit(in.r), unit(in.g), unit(in.b));
 
     // Greys have an exact constant spectrum: S(c2) = v with c2 = (v - 1/2) / sqrt(v (1 - v))
     if (rgb.r == rgb.g && rgb.g == rgb.b) {

@@ -181,10 +181,26 @@ SampledSpectrum RGBAlbedoSpectrum::Sample(const SampledWavelengths& lambda) cons
     return SamplePointwise(*this, lambda);
 }
 
+namespace {
+
+// An unbounded RGB's shape, rgb / (2 m) for its largest component m: as rgb / m / 2 so that it
+// does not overflow for m above half of float's largest value (whose spectrum 2 m times the
+// shape is then infinite), and with infinite components as 1 / 2, the others 0.
+RGB UnboundedShape(const RGB& rgb, Float m) {
+    if (m == 0) return RGB(0, 0, 0);
+    if (std::isinf(m)) {
+        auto part = [](Float c) { return std::isinf(c) ? Float(0.5) : Float(0); };
+        return RGB(part(rgb.r), part(rgb.g), part(rgb.b));
+    }
+    return rgb / m / 2;
+}
+
+}  // namespace
+
 RGBUnboundedSpectrum::RGBUnboundedSpectrum(const RGBColorSpace& cs, const RGB& rgb) {
     Float m = std::max({rgb.r, rgb.g, rgb.b});
     scale = 2 * m;
-    rsp = cs.ToRGBCoeffs(scale != 0 ? rgb / scale : RGB(0, 0, 0));
+    rsp = cs.ToRGBCoeffs(UnboundedShape(rgb, m));
 }
 
 SampledSpectrum RGBUnboundedSpectrum::Sample(const SampledWavelengths& lambda) const {
@@ -195,7 +211,7 @@ RGBIlluminantSpectrum::RGBIlluminantSpectrum(const RGBColorSpace& cs, const RGB&
     : illuminant(&cs.Illuminant()) {
     Float m = std::max({rgb.r, rgb.g, rgb.b});
     scale = 2 * m;
-    rsp = cs.ToRGBCoeffs(scale != 0 ? rgb / scale : RGB(0, 0, 0));
+    rsp = cs.ToRGBCoeffs(UnboundedShape(rgb, m));
 }
 
 SampledSpectrum RGBIlluminantSpectrum::Sample(const SampledWavelengths& lambda) const {

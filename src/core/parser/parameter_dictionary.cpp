@@ -2,6 +2,8 @@
 
 #include "core/parser/parameter_dictionary.h"
 
+#include <algorithm>
+#include <limits>
 #include <utility>
 
 #include "core/parser/parameter_names.h"
@@ -154,6 +156,11 @@ std::vector<Spectrum> ParameterDictionary::ExtractSpectra(const ParsedParameter&
             RGB rgb(v[0], v[1], v[2]);
             if (rgb.r < 0 || rgb.g < 0 || rgb.b < 0)
                 Fail(p, "RGB parameter '" + p.name + "' has a negative component");
+            // (An RGB's spectrum is twice its largest component times a sigmoid)
+            if (std::max({rgb.r, rgb.g, rgb.b}) > std::numeric_limits<Float>::max() / 2)
+                Fail(p, "RGB parameter '" + p.name +
+                            "' has a component above 1.7e38, beyond what its spectrum can hold in "
+                            "single precision");
             if (type == SpectrumType::Albedo) {
                 if (rgb.r > 1 || rgb.g > 1 || rgb.b > 1)
                     Fail(p, "RGB reflectance parameter '" + p.name +
