@@ -50,6 +50,7 @@ CloudMedium* CloudMedium::Create(const TextureParameterDictionary& params,
                                  std::optional<EmissionModel> modelOverride, const FileLoc& loc,
                                  ObjectArena& arena, Diagnostics& diag) {
     MediumCoefficients c = ReadMediumCoefficients(params, loc, diag);
+    CheckExtinction(c, 1, params, loc);  // (its density is at most 1)
     Float density = params.GetOneFloat("density", 1);
     Float wispiness = params.GetOneFloat("wispiness", 1);
     Float frequency = params.GetOneFloat("frequency", 5);

@@ -162,6 +162,7 @@ GridMedium* GridMedium::Create(const TextureParameterDictionary& params,
         if (grid) temperature = SampledGrid<Float>(std::move(t), nx, ny, nz);
     }
     MediumCoefficients c = ReadMediumCoefficients(params, loc, diag);
+    CheckExtinction(c, *std::max_element(density.begin(), density.end()), params, loc);
     MediumEmission emission =
         ReadGridEmission(params, std::move(temperature), nx, ny, nz, modelOverride, arena);
     return arena.New<GridMedium>(ReadGridBounds(params, loc), renderFromMedium, c,
@@ -179,6 +180,10 @@ GridMedium* GridMedium::CreateFromVDB(const TextureParameterDictionary& params,
                                 params.GetOneString("temperaturename", "temperature"),
                                 params.Loc("filename"), size_t(1) << 30, &arena.Budget());
     MediumCoefficients c = ReadMediumCoefficients(params, loc, diag);
+    CheckExtinction(
+        c,
+        v.density.MaxValue(Bounds3f(Point3f(0, 0, 0), Point3f(1, 1, 1)), [](Float d) { return d; }),
+        params, loc);
     int nx = v.density.XSize(), ny = v.density.YSize(), nz = v.density.ZSize();
     MediumEmission emission =
         ReadGridEmission(params, std::move(v.temperature), nx, ny, nz, modelOverride, arena, true);

@@ -9,6 +9,7 @@ HomogeneousMedium* HomogeneousMedium::Create(const TextureParameterDictionary& p
                                              const FileLoc& loc, ObjectArena& arena,
                                              Diagnostics& diag) {
     MediumCoefficients c = ReadMediumCoefficients(params, loc, diag);
+    CheckExtinction(c, 1, params, loc);
     MediumEmission emission;
     std::optional<MediumEmission> thermal = ReadMediumThermalEmission(params, modelOverride, arena);
     std::optional<Spectrum> Le = ReadMediumLe(params);

@@ -43,6 +43,33 @@ MediumCoefficients ReadMediumCoefficients(const TextureParameterDictionary& para
     return c;
 }
 
+void CheckExtinction(double sigmaMax, const TextureParameterDictionary& params,
+                     const FileLoc& loc) {
+    if (sigmaMax <= kMaxExtinction) return;
+    std::string name = "scale";
+    for (const char* n : {"scale", "density", "sigma_s", "sigma_a", "preset"})
+        if (params.Has(n)) {
+            name = n;
+            break;
+        }
+    char value[32] = "not a finite number";
+    if (std::isfinite(sigmaMax)) std::snprintf(value, sizeof(value), "%g", sigmaMax);
+    throw SceneError(params.Loc(name, loc),
+                     std::string("this medium's extinction (sigma_a + sigma_s, times \"scale\" "
+                                 "and its density) reaches ") +
+                         value +
+                         " per unit length, beyond the 1e30 that kiln tracks in single "
+                         "precision",
+                     name);
+}
+
+void CheckExtinction(const MediumCoefficients& c, double densityMax,
+                     const TextureParameterDictionary& params, const FileLoc& loc) {
+    CheckExtinction((double(c.sigma_a.MaxValue()) + double(c.sigma_s.MaxValue())) *
+                        double(c.scale) * densityMax,
+                    params, loc);
+}
+
 Float ReadHGAsymmetry(const TextureParameterDictionary& params) {
     Float g = params.GetOneFloat("g", 0);
     if (!(std::abs(g) < 1))

@@ -30,6 +30,15 @@ std::optional<std::pair<Spectrum, Spectrum>> MediumPreset(const std::string& nam
 MediumCoefficients ReadMediumCoefficients(const TextureParameterDictionary& params,
                                           const FileLoc& loc, Diagnostics& diag);
 
+// The largest extinction a medium may have, per unit length of render space: beyond it, or not
+// a number, tracking's ratios of majorants overflow single precision. CheckExtinction: a
+// SceneError at "scale" (or the density or coefficients, whichever is given) when the largest
+// sigma_a + sigma_s times "scale" times densityMax exceeds it.
+inline constexpr double kMaxExtinction = 1e30;
+void CheckExtinction(double sigmaMax, const TextureParameterDictionary& params, const FileLoc& loc);
+void CheckExtinction(const MediumCoefficients& c, double densityMax,
+                     const TextureParameterDictionary& params, const FileLoc& loc);
+
 // "float g" in (-1, 1), default 0.
 Float ReadHGAsymmetry(const TextureParameterDictionary& params);
 // "float scale", finite and >= 0, default 1.

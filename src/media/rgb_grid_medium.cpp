@@ -84,6 +84,11 @@ RGBGridMedium* RGBGridMedium::Create(const TextureParameterDictionary& params,
         throw SceneError(params.Loc("temperature"),
                          "a medium glows either by \"Le\" or by its \"temperature\", not both",
                          "temperature");
+    double sigmaMax = 0;
+    for (size_t i = 0; i < n; ++i)
+        sigmaMax = std::max(sigmaMax, (sa.empty() ? 1 : double(sa[i].MaxValue())) +
+                                          (ss.empty() ? 1 : double(ss[i].MaxValue())));
+    CheckExtinction(sigmaMax * scale, params, loc);
     double LePeak = 0;
     for (const Spectrum& s : le) LePeak = std::max(LePeak, double(s.MaxValue()));
     if (!le.empty()) CheckMediumEmissionPeak(LePeak * LeScale, params);

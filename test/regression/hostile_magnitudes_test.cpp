@@ -1,9 +1,9 @@
-// Emission too bright for single precision. Lights, emission images and media brighter than
-// kMaxEmission (1e30 W m^-2 sr^-1 nm^-1, spectral/planck.h), RGBs whose spectrum overflows and
-// lights whose power overflows used to render black images (the light sampler dropped lights
-// of infinite power; NaN samples were discarded) or crash (a hair fibre's infinite absorption
-// indexed the RGB-to-spectrum table out of range). Each is now an error at the parameter that
-// made it so, or renders finite.
+// Magnitudes beyond single precision. Lights, emission images and media brighter than
+// kMaxEmission (1e30 W m^-2 sr^-1 nm^-1, spectral/planck.h), RGBs whose spectrum overflows,
+// lights whose power overflows and media whose extinction overflows used to render black
+// images (the light sampler dropped lights of infinite power; NaN samples were discarded) or
+// crash (a hair fibre's infinite absorption indexed the RGB-to-spectrum table out of range).
+// Each is now an error at the parameter that made it so, or renders finite.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,7 +16,7 @@
 #include "spectral/color.h"
 #include "spectral/spectrum.h"
 
-namespace kiln::hostile_emission {
+namespace kiln::hostile_magnitudes {
 namespace {
 
 // World lines start at line 8
@@ -55,7 +55,7 @@ void ExpectFiniteAndLit(const std::string& world) {
 
 const char* kTooBright = "this light is too bright";
 
-TEST(HostileEmission, LightsBrighterThanRenderableAreErrorsAtTheParameterThatSetsThem) {
+TEST(HostileMagnitudes, LightsBrighterThanRenderableAreErrorsAtTheParameterThatSetsThem) {
     ExpectErrorAt(R"(LightSource "point" "rgb I" [3 3 3] "float scale" 1e38 "point3 from" [0 2 0])",
                   "8:37: error: " + std::string(kTooBright), "(at 'scale')");
     ExpectErrorAt(R"(LightSource "spot" "float power" 1e36 "point3 from" [0 2 0])",
@@ -80,7 +80,7 @@ Translate 0 2 0 Shape "sphere" "float radius" 0.2
 AttributeEnd)");
 }
 
-TEST(HostileEmission, MediaBrighterThanRenderableAreErrorsAtTheirEmission) {
+TEST(HostileMagnitudes, MediaBrighterThanRenderableAreErrorsAtTheirEmission) {
     const std::string inside = R"(
 AttributeBegin MediumInterface "glow" "" Material "interface"
 Shape "sphere" "float radius" 0.7 AttributeEnd)";
@@ -107,7 +107,36 @@ Shape "sphere" "float radius" 0.7 AttributeEnd)";
         inside);
 }
 
-TEST(HostileEmission, LightsWhosePowerOverflowsAreErrorsAtTheirDirective) {
+TEST(HostileMagnitudes, MediaWhoseExtinctionOverflowsAreErrorsAtTheirParameters) {
+    const std::string inside = R"(
+AttributeBegin MediumInterface "fog" "" Material "interface"
+Shape "sphere" "float radius" 0.7 AttributeEnd)";
+    // sigma_s below float's largest value, times a density of 5 beyond it
+    ExpectErrorAt(R"(MakeNamedMedium "fog" "string type" "uniformgrid" "integer nx" 2
+    "float density" [1 5] "rgb sigma_a" [1 1 1] "rgb sigma_s" [1e38 1 1])" +
+                      inside,
+                  "9:5:", "this medium's extinction");
+    ExpectErrorAt(
+        R"(MakeNamedMedium "fog" "string type" "homogeneous" "float scale" 1e31)" + inside,
+        "8:51:", "(at 'scale')");
+    ExpectErrorAt(R"(MakeNamedMedium "fog" "string type" "rgbgrid" "integer nx" 1
+    "rgb sigma_a" [1 1 1] "rgb sigma_s" [3e30 1 1])" +
+                      inside,
+                  "9:27:", "(at 'sigma_s')");
+    ExpectErrorAt(
+        R"(MakeNamedMedium "fog" "string type" "cloud" "rgb sigma_s" [2e30 2e30 2e30])" + inside,
+        "8:45:", "(at 'sigma_s')");
+    // Dense but within the limit: finite (and dark, as the light cannot get in)
+    testing::ImageStats dense = testing::RenderStats(std::string(kView) + R"(
+LightSource "point" "rgb I" [3 3 3] "point3 from" [0 2 -1]
+MakeNamedMedium "fog" "string type" "homogeneous" "float scale" 1e20 "rgb sigma_a" [0.1 0.1 0.1])" +
+                                                         inside + kSphere,
+                                                     1, 4);
+    EXPECT_EQ(dense.nonFinite, 0);
+    EXPECT_EQ(dense.nonFinitePixels, 0);
+}
+
+TEST(HostileMagnitudes, LightsWhosePowerOverflowsAreErrorsAtTheirDirective) {
     // Bright, not too bright, but a light source the size of a solar system
     ExpectErrorAt(R"(AttributeBegin
 AreaLightSource "diffuse" "float scale" 1e25
@@ -121,7 +150,7 @@ AttributeEnd)",
                   "10:20:", "this hot shape radiates more power than single precision holds");
 }
 
-TEST(HostileEmission, EmissionImagesAboveTheLimitAreErrorsAtTheirFile) {
+TEST(HostileMagnitudes, EmissionImagesAboveTheLimitAreErrorsAtTheirFile) {
     test::TempDir dir;
     Image bright(PixelFormat::Float, {4, 4}, {"R", "G", "B"});
     for (int y = 0; y < 4; ++y)
@@ -139,7 +168,7 @@ TEST(HostileEmission, EmissionImagesAboveTheLimitAreErrorsAtTheirFile) {
                   "8:", "image has pixels above 1e30");
 }
 
-TEST(HostileEmission, InfiniteAndNaNRGBsGiveSpectraWithoutNaN) {
+TEST(HostileMagnitudes, InfiniteAndNaNRGBsGiveSpectraWithoutNaN) {
     // A hair fibre of infinite absorption (melanin 3e38) crashed in the RGB-to-spectrum table
     const RGBColorSpace& cs = RGBColorSpace::sRGB();
     const Float inf = std::numeric_limits<Float>::infinity();
@@ -175,4 +204,4 @@ Shape "curve" "point3 P" [-1 0.5 0 -0.3 0.6 0 0.3 0.4 0 1 0.5 0] "float width" 0
 }
 
 }  // namespace
-}  // namespace kiln::hostile_emission
+}  // namespace kiln::hostile_magnitudes
