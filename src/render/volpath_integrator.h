@@ -147,6 +147,7 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
                             Float pdf = T_maj[0] * mp.sigma_s[0];
                             beta = beta * (T_maj * mp.sigma_s / pdf);
                             r_u *= T_maj * mp.sigma_s / pdf;
+                            KeepInRange(beta, r_u, r_l, r_n);
                             if (!beta || !r_u) return false;
                             // Direct light at the scattering point, then a new direction
                             Vector3f wo = -ray.d;
@@ -186,6 +187,7 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
                         r_u *= T_maj * sigma_n / pdf;
                         r_l *= T_maj * sigma_maj / pdf;
                         if (windowChord) r_n *= T_maj * sigma_maj / pdf;
+                        KeepInRange(beta, r_u, r_l, r_n);
                         return bool(beta) && bool(r_u);
                     });
                 if (terminated || !beta || !r_u) return L;
@@ -330,6 +332,23 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
     }
 
   private:
+    // beta and the rescaled probabilities r_u, r_l, r_n enter every estimate as ratios (beta
+    // over a mean of r's), so one common factor changes nothing. Where a medium's extinction
+    // differs by orders of magnitude between the wavelengths, each collision multiplies them
+    // all by that ratio, and after a few they overflow single precision together (pbrt-v4's
+    // volpath then returns NaN); dividing them by their largest r keeps them in range.
+    static void KeepInRange(Throughput& beta, SampledSpectrum& r_u, SampledSpectrum& r_l,
+                            SampledSpectrum& r_n) {
+        Float m = std::max(r_u.MaxComponentValue(), r_l.MaxComponentValue());
+        if (!(m > kRescaleAbove)) return;
+        Float k = 1 / m;
+        beta = beta * Radiance::Depolarizing(SampledSpectrum(k));
+        r_u *= k;
+        r_l *= k;
+        r_n *= k;
+    }
+    static constexpr Float kRescaleAbove = 1e16f;
+
     // Where a path below a subsurface boundary leaves the material, with the estimator's
     // factors: weight = Sp / (p_choice pdf_hero) and r_u's factor pdf / pdf_hero (spectral MIS
     // over the wavelengths' exit densities, pbrt-v4)
