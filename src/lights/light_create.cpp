@@ -96,9 +96,10 @@ void CheckEmissionPixel(Float value, const FileLoc& loc, const std::string& file
 }
 
 // Reads an emission image, keeping its R, G, B channels, and the colour space its file names
-// (sRGB if none, as pbrt-v4); SceneError if that fails.
+// (sRGB if none, as pbrt-v4); SceneError if that fails. Negative values emit nothing (the
+// lights clamp them), with a warning.
 Image ReadEmissionImage(const std::string& filename, const FileLoc& loc,
-                        const RGBColorSpace** colorSpace, MemoryBudget& budget) {
+                        const RGBColorSpace** colorSpace, MemoryBudget& budget, Diagnostics& diag) {
     Image image;
     ImageMetadata metadata;
     try {
@@ -112,10 +113,14 @@ Image ReadEmissionImage(const std::string& filename, const FileLoc& loc,
                          filename);
     image = image.SelectChannels({"R", "G", "B"});
     Point2i res = image.Resolution();
+    bool negative = false;
     for (int y = 0; y < res.y; ++y)
         for (int x = 0; x < res.x; ++x)
-            for (int c = 0; c < 3; ++c)
+            for (int c = 0; c < 3; ++c) {
                 CheckEmissionPixel(image.GetChannel({x, y}, c), loc, filename);
+                negative |= image.GetChannel({x, y}, c) < 0;
+            }
+    if (negative) diag.Warn(loc, "a light's image has negative values; they emit nothing");
     *colorSpace = metadata.colorSpace ? metadata.colorSpace : &RGBColorSpace::sRGB();
     return image;
 }
@@ -271,7 +276,7 @@ Light CreateProjection(const ParameterDictionary& params, const Transform& rende
                          std::to_string(fov));
     const RGBColorSpace* imageCS = &RGBColorSpace::sRGB();
     Image image =
-        ReadEmissionImage(filename, params.Loc("filename", loc), &imageCS, arena.Budget());
+        ReadEmissionImage(filename, params.Loc("filename", loc), &imageCS, arena.Budget(), diag);
     scale = PhotometricScale(scale, Spectrum(imageCS->Illuminant()));
     if (phi_v > 0) {
         double k_e = ProjectionLight::LuminousIntegral(image, *imageCS, fov);
@@ -371,7 +376,8 @@ Light CreateInfinite(const ParameterDictionary& params, const Transform& renderF
     const RGBColorSpace* imageCSp = &RGBColorSpace::sRGB();
     Image image;
     if (!filename.empty()) {
-        image = ReadEmissionImage(filename, loc, &imageCSp, arena.Budget());
+        image = ReadEmissionImage(filename, params.Loc("filename", loc), &imageCSp, arena.Budget(),
+                                  diag);
     } else {
         Spectrum Le = L ? *L : Spectrum(cs.Illuminant());
         if (L && params.TypeOf("L") != "rgb")
@@ -466,7 +472,7 @@ Light Light::CreateArea(const std::string& name, const ParameterDictionary& para
         if (L)
             throw SceneError(loc, "both \"L\" and \"filename\" specified for a diffuse area light",
                              filename);
-        image = ReadEmissionImage(filename, loc, &imageCS, arena.Budget());
+        image = ReadEmissionImage(filename, loc, &imageCS, arena.Budget(), diag);
     }
     Spectrum Le = L ? *L : Spectrum(cs.Illuminant());
     scale = PhotometricScale(scale, image ? Spectrum(imageCS->Illuminant()) : Le);

@@ -191,7 +191,19 @@ TEST(HostileMagnitudes, EmissionImagesAboveTheLimitAreErrorsAtTheirFile) {
                           "\" \"float power\" 10",
                       "8:", "image has pixels above 1e30");
     ExpectErrorAt("LightSource \"infinite\" \"string filename\" \"" + file + "\"",
-                  "8:", "image has pixels above 1e30");
+                  "8:24:", "image has pixels above 1e30");
+    // Negative values emit nothing, with a warning (as goniometric maps had)
+    bright.SetChannel({1, 2}, 1, -2);
+    std::string negative = (dir.path / "negative.exr").string();
+    bright.Write(negative);
+    for (const char* light : {"projection", "infinite"}) {
+        testing::ImageStats r =
+            testing::RenderStats(std::string(kView) + "LightSource \"" + light +
+                                     "\" \"string filename\" \"" + negative + "\"" + kSphere,
+                                 1, 1);
+        ASSERT_EQ(r.warnings.size(), 1u) << light;
+        EXPECT_NE(r.warnings[0].find("image has negative values"), std::string::npos);
+    }
 }
 
 TEST(HostileMagnitudes, InfiniteAndNaNRGBsGiveSpectraWithoutNaN) {
