@@ -131,8 +131,8 @@ Spectrum NormalizedLe(const Spectrum& Le, Float scale) {
 void CheckMediumEmissionPeak(double peak, const TextureParameterDictionary& params) {
     if (peak <= kMaxEmission) return;
     const char* name = params.Has("Lescale") ? "Lescale" : "Le";
-    char value[32];
-    std::snprintf(value, sizeof(value), "%g", peak);
+    char value[32] = "not a finite number";
+    if (std::isfinite(peak)) std::snprintf(value, sizeof(value), "%g", peak);
     throw SceneError(params.Loc(name),
                      std::string("this medium's emission is too bright: its radiance (\"Le\" "
                                  "or pbrt-v4's blackbody, times \"Lescale\") reaches ") +

@@ -244,7 +244,6 @@ SceneMaterials CreateMaterials(SceneDescription& desc, const NamedTextures& text
     return materials;
 }
 
-// Shapes of one directive with their material, heat and media
 // The directive a light comes from
 struct LightOrigin {
     FileLoc loc;
@@ -252,6 +251,7 @@ struct LightOrigin {
     bool hotShape = false;  // a thermal light (the shape's temperature makes it glow)
 };
 
+// Shapes of one directive with their material, heat and media
 struct SceneShapes {
     std::vector<Shape> shapes;
     ShapeHeat heat;
@@ -397,7 +397,8 @@ void PreprocessLights(Scene& scene, const std::vector<LightOrigin>& origins) {
                                        "holds: its temperature (textured ones too) times its area "
                                        "is too large; at most 1e27 K, and less on large shapes"
                                      : "this light emits more power than single precision holds "
-                                       "(its emission times its area); make it dimmer or smaller",
+                                       "(its emission times its area, or the scene's cross-"
+                                       "section for a distant light); make it dimmer",
                                  origins[i].name);
     }
 }
