@@ -57,6 +57,12 @@ void ExpectFiniteAndLit(const std::string& world) {
 
 const char* kTooBright = "this light is too bright";
 
+// A sphere of radius 0.7 holding the named medium, from a new line
+std::string SphereFilledWith(const std::string& medium) {
+    return "\nAttributeBegin MediumInterface \"" + medium +
+           "\" \"\" Material \"interface\"\nShape \"sphere\" \"float radius\" 0.7 AttributeEnd";
+}
+
 TEST(HostileMagnitudes, LightsBrighterThanRenderableAreErrorsAtTheParameterThatSetsThem) {
     ExpectErrorAt(R"(LightSource "point" "rgb I" [3 3 3] "float scale" 1e38 "point3 from" [0 2 0])",
                   "8:37: error: " + std::string(kTooBright), "(at 'scale')");
@@ -83,9 +89,7 @@ AttributeEnd)");
 }
 
 TEST(HostileMagnitudes, MediaBrighterThanRenderableAreErrorsAtTheirEmission) {
-    const std::string inside = R"(
-AttributeBegin MediumInterface "glow" "" Material "interface"
-Shape "sphere" "float radius" 0.7 AttributeEnd)";
+    const std::string inside = SphereFilledWith("glow");
     ExpectErrorAt(R"(MakeNamedMedium "glow" "string type" "homogeneous" "rgb Le" [1e30 1e30 1e30]
     "float Lescale" 100 "rgb sigma_a" [1 1 1] "rgb sigma_s" [0 0 0])" +
                       inside,
@@ -110,9 +114,7 @@ Shape "sphere" "float radius" 0.7 AttributeEnd)";
 }
 
 TEST(HostileMagnitudes, MediaWhoseExtinctionOverflowsAreErrorsAtTheirParameters) {
-    const std::string inside = R"(
-AttributeBegin MediumInterface "fog" "" Material "interface"
-Shape "sphere" "float radius" 0.7 AttributeEnd)";
+    const std::string inside = SphereFilledWith("fog");
     // sigma_s below float's largest value, times a density of 5 beyond it
     ExpectErrorAt(R"(MakeNamedMedium "fog" "string type" "uniformgrid" "integer nx" 2
     "float density" [1 5] "rgb sigma_a" [1 1 1] "rgb sigma_s" [1e38 1 1])" +
