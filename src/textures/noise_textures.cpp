@@ -1,12 +1,32 @@
 #include "textures/noise_textures.h"
 
 #include <cmath>
+#include <string>
 
+#include "core/parser/diagnostics.h"
 #include "spectral/color.h"
 #include "textures/noise.h"
 #include "textures/texture_parameter_dictionary.h"
 
 namespace kiln {
+
+namespace {
+
+// "integer octaves" (8). Each octave's frequency is 1.99 times the last, so beyond 64 (1.99^64 =
+// 1e19 times the first) they add nothing single precision can tell apart; more is an error at
+// the parameter (octaves 1e38 ran wrinkled's loop over the aliased octaves 2^31 times per
+// lookup, as pbrt-v4's Turbulence would).
+int ReadOctaves(const TextureParameterDictionary& params) {
+    int octaves = params.GetOneInt("octaves", 8);
+    if (octaves > 64)
+        throw SceneError(params.Loc("octaves"),
+                         "\"octaves\" above 64 add nothing in single precision (each octave's "
+                         "frequency is 1.99 times the last)",
+                         std::to_string(octaves));
+    return octaves;
+}
+
+}  // namespace
 
 // FBmTexture and WrinkledTexture Method Definitions
 Float FBmTexture::Evaluate(const TextureEvalContext& ctx) const {
@@ -16,8 +36,7 @@ Float FBmTexture::Evaluate(const TextureEvalContext& ctx) const {
 
 FBmTexture* FBmTexture::Create(const TextureParameterDictionary& params,
                                const Transform& renderFromTexture, ObjectArena& arena) {
-    return arena.New<FBmTexture>(TextureMapping3D::Create(renderFromTexture),
-                                 params.GetOneInt("octaves", 8),
+    return arena.New<FBmTexture>(TextureMapping3D::Create(renderFromTexture), ReadOctaves(params),
                                  params.GetOneFloat("roughness", 0.5f));
 }
 
@@ -29,8 +48,7 @@ Float WrinkledTexture::Evaluate(const TextureEvalContext& ctx) const {
 WrinkledTexture* WrinkledTexture::Create(const TextureParameterDictionary& params,
                                          const Transform& renderFromTexture, ObjectArena& arena) {
     return arena.New<WrinkledTexture>(TextureMapping3D::Create(renderFromTexture),
-                                      params.GetOneInt("octaves", 8),
-                                      params.GetOneFloat("roughness", 0.5f));
+                                      ReadOctaves(params), params.GetOneFloat("roughness", 0.5f));
 }
 
 // WindyTexture Method Definitions
@@ -97,10 +115,10 @@ SampledSpectrum MarbleTexture::Evaluate(const TextureEvalContext& ctx,
 
 MarbleTexture* MarbleTexture::Create(const TextureParameterDictionary& params,
                                      const Transform& renderFromTexture, ObjectArena& arena) {
-    return arena.New<MarbleTexture>(
-        TextureMapping3D::Create(renderFromTexture), params.GetOneInt("octaves", 8),
-        params.GetOneFloat("roughness", 0.5f), params.GetOneFloat("scale", 1),
-        params.GetOneFloat("variation", 0.2f));
+    return arena.New<MarbleTexture>(TextureMapping3D::Create(renderFromTexture),
+                                    ReadOctaves(params), params.GetOneFloat("roughness", 0.5f),
+                                    params.GetOneFloat("scale", 1),
+                                    params.GetOneFloat("variation", 0.2f));
 }
 
 }  // namespace kiln

@@ -164,6 +164,15 @@ TEST(HostileMagnitudes, ExtinctionsOrdersOfMagnitudeApartAcrossWavelengthsRender
     EXPECT_EQ(r.scene->job->film->NonFiniteSampleCount(), 0);
 }
 
+TEST(HostileMagnitudes, NoiseOctavesBeyondSinglePrecisionAreAnError) {
+    // wrinkled's aliased octaves were summed one by one: octaves 1e38 (2^31) never ended
+    for (const char* texture : {"wrinkled", "fbm", "marble"})
+        ExpectErrorAt(std::string("Texture \"t\" \"") +
+                          (std::string(texture) == "marble" ? "spectrum" : "float") + "\" \"" +
+                          texture + "\" \"integer octaves\" 100000",
+                      "8:", "(at '100000')");
+}
+
 TEST(HostileMagnitudes, LightsWhosePowerOverflowsAreErrorsAtTheirDirective) {
     // Bright, not too bright, but a light source the size of a solar system
     ExpectErrorAt(R"(AttributeBegin
