@@ -85,5 +85,22 @@ TEST(MeshDisplacement, BadInputIsReported) {
     EXPECT_THROW(DisplaceMesh(noUV, d, Transform(), 10000), std::invalid_argument);
 }
 
+// Edge lengths below single precision's resolution of the mesh. An edge length of 1e-38 fails
+// at once (its longest edges alone need more pieces than allowed; it refined 2^25 triangles,
+// 84 s, first). A square 1e7 from the origin, where float's spacing is 1, refined to 0.3
+// bisected until midpoints fell on their ends, then recursed until the stack overflowed; it
+// now stops there.
+TEST(MeshDisplacement, EdgeLengthsBelowFloatResolutionEndInErrorsOrStopAtIt) {
+    MeshDisplacement tiny{[](Point3f, Normal3f, Point2f) { return 0.f; }, 1e-38f};
+    TriQuadMesh square = Square();
+    EXPECT_THROW(DisplaceMesh(square, tiny, Transform(), 1 << 25), std::length_error);
+    MeshDisplacement fine{[](Point3f, Normal3f, Point2f) { return 0.f; }, 0.3f};
+    TriQuadMesh far = Square();
+    for (Point3f& p : far.p) p = Point3f(1e7f + 4 * p.x, 1e7f + 4 * p.y, 0);
+    DisplaceMesh(far, fine, Transform(), 1 << 20);
+    EXPECT_GT(far.triIndices.size(), 6u);
+    EXPECT_LE(MaxEdge(far, Transform()), 2.f);  // split to float's spacing (1), not to 0.3
+}
+
 }  // namespace
 }  // namespace kiln

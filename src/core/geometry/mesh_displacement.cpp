@@ -1,5 +1,6 @@
 #include "core/geometry/mesh_displacement.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -38,10 +39,7 @@ class Refiner {
     void Refine(int v0, int v1, int v2, int face) {
         Float d01 = Distance(v0, v1), d12 = Distance(v1, v2), d20 = Distance(v2, v0);
         if (d01 < maxEdge && d12 < maxEdge && d20 < maxEdge) {
-            if (out.size() / 3 >= maxTriangles)
-                throw std::length_error("more than " + std::to_string(maxTriangles) + " triangles");
-            out.insert(out.end(), {v0, v1, v2});
-            if (face >= 0) faces.push_back(face);
+            Emit(v0, v1, v2, face);
             return;
         }
         // Rotate so that (a, b) is the longest edge, keeping the winding
@@ -51,6 +49,13 @@ class Refiner {
         else
             d12 > d20 ? (a = v1, b = v2, c = v0) : (a = v2, b = v0, c = v1);
         int mid = Midpoint(a, b);
+        // A midpoint single precision cannot tell from an end (an edge length far below the
+        // mesh's size): the triangle is as refined as float allows (bisecting on would recurse
+        // until the stack overflowed)
+        if (m.p[size_t(mid)] == m.p[size_t(a)] || m.p[size_t(mid)] == m.p[size_t(b)]) {
+            Emit(v0, v1, v2, face);
+            return;
+        }
         Refine(a, mid, c, face);
         Refine(mid, b, c, face);
     }
@@ -58,6 +63,12 @@ class Refiner {
     std::vector<int> out, faces;
 
   private:
+    void Emit(int v0, int v1, int v2, int face) {
+        if (out.size() / 3 >= maxTriangles)
+            throw std::length_error("more than " + std::to_string(maxTriangles) + " triangles");
+        out.insert(out.end(), {v0, v1, v2});
+        if (face >= 0) faces.push_back(face);
+    }
     Float Distance(int i, int j) const {
         return kiln::Distance(renderFromObject(m.p[size_t(i)]), renderFromObject(m.p[size_t(j)]));
     }
@@ -108,6 +119,18 @@ void DisplaceMesh(TriQuadMesh& mesh, const MeshDisplacement& displacement,
     mesh.quadFaceIndices.clear();
     if (mesh.n.size() != mesh.p.size()) mesh.n = VertexNormals(mesh.p, mesh.triIndices);
 
+    // At least longest edge / edge length triangles come from each (its pieces are edges of
+    // different ones): more than maxTriangles fails at once, before refining
+    double atLeast = 0;
+    for (size_t t = 0; t + 2 < mesh.triIndices.size(); t += 3) {
+        Point3f q[3];
+        for (int k = 0; k < 3; ++k) q[k] = renderFromObject(mesh.p[size_t(mesh.triIndices[t + k])]);
+        Float longest =
+            std::max({Distance(q[0], q[1]), Distance(q[1], q[2]), Distance(q[2], q[0])});
+        atLeast += std::ceil(double(longest) / double(displacement.edgeLength));
+    }
+    if (!(atLeast <= double(maxTriangles)))
+        throw std::length_error("more than " + std::to_string(maxTriangles) + " triangles");
     Refiner refiner(mesh, renderFromObject, displacement.edgeLength, maxTriangles);
     std::vector<int> tris = std::move(mesh.triIndices);
     bool faces = !mesh.triFaceIndices.empty();

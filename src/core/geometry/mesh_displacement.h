@@ -22,10 +22,12 @@ struct MeshDisplacement {
 // Displaces mesh in place, as pbrt-v4's TriQuadMesh::Displace: quads become two triangles
 // (p00 p10 p11, p00 p11 p01); missing normals are computed first; each triangle is split at the
 // midpoint of its longest edge (shared between neighbours, so the mesh stays watertight) until
-// all edges are shorter than edgeLength; vertex attributes, uv and normals are interpolated at
-// the midpoints and face indices inherited; after displacing, each vertex normal is the
-// normalised sum of its triangles' unit normals. Throws std::length_error when the refined mesh
-// would have more than maxTriangles triangles, std::invalid_argument without uv.
+// all edges are shorter than edgeLength, or until a midpoint falls on an end of its edge in
+// single precision; vertex attributes, uv and normals are interpolated at the midpoints and face
+// indices inherited; after displacing, each vertex normal is the normalised sum of its
+// triangles' unit normals. Throws std::length_error when the refined mesh would have more than
+// maxTriangles triangles (before refining when the longest edges alone need more),
+// std::invalid_argument without uv.
 void DisplaceMesh(TriQuadMesh& mesh, const MeshDisplacement& displacement,
                   const Transform& renderFromObject, size_t maxTriangles);
 
