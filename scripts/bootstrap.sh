@@ -10,9 +10,12 @@ build="${KILN_BUILD_DIR:-$root/build}"
 # What rendering needs (scripts/demo.sh: KILN_SETUP=render), and what the tests add
 packages=(build-essential cmake pkg-config libembree-dev libopenimageio-dev libopenexr-dev
           libpng-dev libjpeg-dev libopencolorio-dev libtbb-dev zlib1g-dev libopenvdb-dev libboost-dev
-          pybind11-dev python3-dev python3-numpy)  # the Python module
+          pybind11-dev python3-dev python3-numpy  # the Python module
+          # Debian 12's OpenImageIO CMake package names /usr/bin/iconvert and the other tools
+          # among its targets, so find_package(OpenImageIO) fails without them
+          openimageio-tools)
 if [ "${KILN_SETUP:-all}" != render ]; then
-    packages+=(openimageio-tools libgtest-dev libbenchmark-dev libfmt-dev clang-format
+    packages+=(libgtest-dev libbenchmark-dev libfmt-dev clang-format
                dpkg-dev  # the Debian package test (dpkg-shlibdeps)
                munge slurmctld slurmd slurm-client  # the Slurm cluster test
                python3-pytest python3-matplotlib blender)  # the Python and Blender tests
@@ -21,8 +24,9 @@ source "$root/scripts/packages.sh"
 kiln_install_missing "${packages[@]}"
 
 jobs="$(nproc 2>/dev/null || echo 2)"
-# Configured again after a render-only set-up, so that the test frameworks are found
-if [ ! -f "$build/CMakeCache.txt" ] || [ "${KILN_SETUP:-all}" != render ]; then
+# Configured again after a render-only set-up, so that the test frameworks are found, and
+# whenever an earlier configuration did not finish (a cache but no build system)
+if [ ! -f "$build/Makefile" ] && [ ! -f "$build/build.ninja" ] || [ "${KILN_SETUP:-all}" != render ]; then
     cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 fi
 cmake --build "$build" -j "$jobs" "$@"
