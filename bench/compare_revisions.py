@@ -89,7 +89,7 @@ def main():
                 continue
             zmax = 0.0
             for region in REGIONS:
-                for c in range(3):
+                for c in range(len(stats["a"][0][region])):
                     z = z_score([s[region][c] for s in stats["a"]],
                                 [s[region][c] for s in stats["b"]])
                     zmax = max(zmax, abs(z))

@@ -7,7 +7,9 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstring>
 
 #include "base/vecmath.h"
 
@@ -16,97 +18,106 @@ namespace kiln {
 inline constexpr int NSpectrumSamples = 4;
 inline constexpr Float Lambda_min = 360, Lambda_max = 830;
 
+// The values live in one SIMD register (GCC's and Clang's vector extension: SSE on x86-64,
+// NEON on ARM): arithmetic is one instruction per operation, and a spectrum is passed to and
+// returned from functions in a register rather than through memory, as a struct of four floats
+// is under the x86-64 calling convention.
 class SampledSpectrum {
+    // may_alias: single values are read and written through Float pointers (operator[])
+    using Lanes =
+        Float __attribute__((vector_size(sizeof(Float) * NSpectrumSamples), __may_alias__));
+    using Mask = decltype(Lanes{} != Lanes{});
+
   public:
-    SampledSpectrum() { values.fill(0); }
-    explicit SampledSpectrum(Float c) { values.fill(c); }
-    explicit SampledSpectrum(const std::array<Float, NSpectrumSamples>& v) : values(v) {}
+    SampledSpectrum() : values{} {}
+    explicit SampledSpectrum(Float c) : values(Lanes{} + c) {}
+    explicit SampledSpectrum(const std::array<Float, NSpectrumSamples>& v) {
+        std::memcpy(&values, v.data(), sizeof values);
+    }
 
     Float operator[](int i) const { return values[i]; }
-    Float& operator[](int i) { return values[i]; }
+    Float& operator[](int i) { return reinterpret_cast<Float*>(&values)[i]; }
 
-    explicit operator bool() const {
-        for (Float v : values)
-            if (v != 0) return true;
-        return false;
-    }
+    explicit operator bool() const { return Any(values != 0); }
     bool IsZero() const { return !bool(*this); }
 
-#define KILN_SS_OP(op)                                                    \
-    SampledSpectrum& operator op##=(const SampledSpectrum& s) {           \
-        for (int i = 0; i < NSpectrumSamples; ++i) values[i] op## = s[i]; \
-        return *this;                                                     \
-    }                                                                     \
-    SampledSpectrum operator op(const SampledSpectrum& s) const {         \
-        SampledSpectrum r = *this;                                        \
-        return r op## = s;                                                \
-    }                                                                     \
-    SampledSpectrum& operator op##=(Float a) {                            \
-        for (int i = 0; i < NSpectrumSamples; ++i) values[i] op## = a;    \
-        return *this;                                                     \
-    }                                                                     \
-    SampledSpectrum operator op(Float a) const {                          \
-        SampledSpectrum r = *this;                                        \
-        return r op## = a;                                                \
-    }
+#define KILN_SS_OP(op)                                            \
+    SampledSpectrum& operator op##=(const SampledSpectrum& s) {   \
+        values op## = s.values;                                   \
+        return *this;                                             \
+    }                                                             \
+    SampledSpectrum operator op(const SampledSpectrum& s) const { \
+        return SampledSpectrum(values op s.values);               \
+    }                                                             \
+    SampledSpectrum& operator op##=(Float a) {                    \
+        values op## = a;                                          \
+        return *this;                                             \
+    }                                                             \
+    SampledSpectrum operator op(Float a) const { return SampledSpectrum(values op a); }
     KILN_SS_OP(+)
     KILN_SS_OP(-)
     KILN_SS_OP(*)
     KILN_SS_OP(/)
 #undef KILN_SS_OP
 
-    SampledSpectrum operator-() const {
-        SampledSpectrum r;
-        for (int i = 0; i < NSpectrumSamples; ++i) r[i] = -values[i];
-        return r;
-    }
-    bool operator==(const SampledSpectrum& s) const { return values == s.values; }
-    bool operator!=(const SampledSpectrum& s) const { return values != s.values; }
+    SampledSpectrum operator-() const { return SampledSpectrum(-values); }
+    bool operator==(const SampledSpectrum& s) const { return !Any(values != s.values); }
+    bool operator!=(const SampledSpectrum& s) const { return Any(values != s.values); }
 
     Float MinComponentValue() const {
         Float m = values[0];
-        for (int i = 1; i < NSpectrumSamples; ++i) m = std::min(m, values[i]);
+        for (int i = 1; i < NSpectrumSamples; ++i) m = std::min<Float>(m, values[i]);
         return m;
     }
     Float MaxComponentValue() const {
         Float m = values[0];
-        for (int i = 1; i < NSpectrumSamples; ++i) m = std::max(m, values[i]);
+        for (int i = 1; i < NSpectrumSamples; ++i) m = std::max<Float>(m, values[i]);
         return m;
     }
     Float Average() const {
         Float s = 0;
-        for (Float v : values) s += v;
+        for (int i = 0; i < NSpectrumSamples; ++i) s += values[i];
         return s / NSpectrumSamples;
     }
-    bool HasNaN() const {
-        for (Float v : values)
-            if (std::isnan(v)) return true;
-        return false;
-    }
+    bool HasNaN() const { return Any(values != values); }
     bool IsFinite() const {
-        for (Float v : values)
-            if (!std::isfinite(v)) return false;
+        for (int i = 0; i < NSpectrumSamples; ++i)
+            if (!std::isfinite(values[i])) return false;
         return true;
     }
 
-    const std::array<Float, NSpectrumSamples>& Values() const { return values; }
+    std::array<Float, NSpectrumSamples> Values() const {
+        std::array<Float, NSpectrumSamples> v;
+        std::memcpy(v.data(), &values, sizeof values);
+        return v;
+    }
+
+    // a / b, and 0 where b is 0
+    friend SampledSpectrum SafeDiv(const SampledSpectrum& a, const SampledSpectrum& b) {
+        const Mask nonzero = b.values != 0;
+        return SampledSpectrum(
+            std::bit_cast<Lanes>(std::bit_cast<Mask>(a.values / b.values) & nonzero));
+    }
 
   private:
-    std::array<Float, NSpectrumSamples> values;
+    explicit SampledSpectrum(Lanes v) : values(v) {}
+    static bool Any(Mask m) {
+        bool any = false;
+        for (int i = 0; i < NSpectrumSamples; ++i) any |= m[i] != 0;
+        return any;
+    }
+
+    Lanes values;
 };
 
 inline SampledSpectrum operator*(Float a, const SampledSpectrum& s) { return s * a; }
+SampledSpectrum SafeDiv(const SampledSpectrum& a, const SampledSpectrum& b);
 
 // Component-wise functions
 template <typename F>
 inline SampledSpectrum Map(const SampledSpectrum& s, F f) {
     SampledSpectrum r;
     for (int i = 0; i < NSpectrumSamples; ++i) r[i] = f(s[i]);
-    return r;
-}
-inline SampledSpectrum SafeDiv(const SampledSpectrum& a, const SampledSpectrum& b) {
-    SampledSpectrum r;
-    for (int i = 0; i < NSpectrumSamples; ++i) r[i] = (b[i] != 0) ? a[i] / b[i] : 0;
     return r;
 }
 inline SampledSpectrum Sqrt(const SampledSpectrum& s) {
