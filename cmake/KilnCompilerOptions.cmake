@@ -20,9 +20,14 @@ endif()
 # build-time generators; kiln_options adds the sanitizers to kiln's own code.
 add_library(kiln_warnings INTERFACE)
 target_compile_features(kiln_warnings INTERFACE cxx_std_20)
+# -fno-math-errno: sqrt and friends set no errno, so they compile to single instructions.
+# -fno-trapping-math (Clang's default): kiln never enables floating-point traps or reads the
+# exception flags, so GCC may compute both sides of a select between floating-point values and
+# vectorise loops with conditions (materials/bxdfs/fresnel.cpp: FrComplex over a path's
+# wavelengths). Neither changes a computed value.
 target_compile_options(kiln_warnings INTERFACE
     $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic -Wno-unused-parameter
-        -Wno-missing-field-initializers -fno-math-errno>)
+        -Wno-missing-field-initializers -fno-math-errno -fno-trapping-math>)
 if(KILN_WERROR)
     target_compile_options(kiln_warnings INTERFACE -Werror)
 endif()

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <complex>
+#include <iterator>
 
 #include "materials/bxdfs/dielectric_bxdf.h"
 #include "materials/bxdfs/fresnel.h"
@@ -26,6 +27,34 @@ TEST(Fresnel, ComplexNormalIncidence) {
         SampledSpectrum r = FrComplex(1, SampledSpectrum(ns[i]), SampledSpectrum(ks[i]));
         for (int j = 0; j < NSpectrumSamples; ++j) EXPECT_NEAR(r[j], expected, 1e-6f);
     }
+}
+
+// The spectral form computes every wavelength's lanes together (selects instead of branches):
+// each lane must be exactly the scalar form's value, in every case the scalar form branches on
+// (eta = 0, k = 0, eta below 1 beyond the critical angle, grazing and normal incidence, huge
+// and tiny constants).
+TEST(Fresnel, SpectralComplexEqualsTheScalarFormLaneByLane) {
+    const Float etas[] = {0, 0.05f, 0.2f, 0.27f, 0.6f, 1, 1.5f, 3.9f, 1e-20f, 1e20f};
+    const Float ks[] = {0, 1e-6f, 0.5f, 2.8f, 3, 7.5f, 1e-20f, 1e20f};
+    const Float cosines[] = {-0.5f, 0, 1e-7f, 0.01f, 0.3f, 0.5f, 0.70710677f, 0.99f, 1, 1.5f};
+    int compared = 0;
+    const size_t nEta = std::size(etas), nK = std::size(ks);
+    for (Float c : cosines)
+        for (size_t e = 0; e < nEta; ++e)
+            for (size_t j = 0; j < nK; ++j) {
+                // Four different constants per call, so lanes of each kind mix
+                SampledSpectrum eta, k;
+                for (int i = 0; i < NSpectrumSamples; ++i) {
+                    eta[i] = etas[(e + 3 * size_t(i)) % nEta];
+                    k[i] = ks[(j + 5 * size_t(i)) % nK];
+                }
+                SampledSpectrum r = FrComplex(c, eta, k);
+                for (int i = 0; i < NSpectrumSamples; ++i, ++compared) {
+                    Float scalar = FrComplex(c, std::complex<Float>(eta[i], k[i]));
+                    EXPECT_EQ(r[i], scalar) << "cos " << c << ", eta " << eta[i] << ", k " << k[i];
+                }
+            }
+    EXPECT_EQ(compared, 10 * 10 * 8 * NSpectrumSamples);
 }
 
 TEST(Fresnel, BrewsterAngle) {
