@@ -7,6 +7,7 @@
 #include "base/rng.h"
 #include "materials/bxdfs/fresnel.h"
 #include "materials/bxdfs/layered_albedo.h"
+#include "materials/bxdfs/layered_bxdf.h"
 #include "materials/material.h"
 #include "materials/materials.h"
 #include "textures/basic_textures.h"
@@ -139,7 +140,7 @@ CoatedDiffuseEmissivity::CoatedDiffuseEmissivity(const CoatedDiffuseMaterial& m,
         int li = cell / nA, ai = cell % nA;
         Float eta = m.Eta()(lambdas.Node(li));
         CoatParameters coat{eta == 0 ? 1.0 : double(eta), double(alphas.Node(ai)),
-                            double(*thickness), m.MaxDepth()};
+                            double(LayerThickness(*thickness)), m.MaxDepth()};
         std::vector<std::vector<double>> poly = CoatedDiffuseAlbedoPolynomials(coat, mus);
         for (int c = 0; c < nCos; ++c)
             for (int k = 0; k < nCoefficients && k < int(poly[size_t(c)].size()); ++k)
@@ -239,8 +240,8 @@ CoatedConductorEmissivity::CoatedConductorEmissivity(const CoatedConductorMateri
     albedo.assign(size_t(coatAlphas.Size()) * nB * nCos * nL, 0);
     tbb::parallel_for(0, coatAlphas.Size() * nB, [&](int cell) {
         int ca = cell / nB, ba = cell % nB;
-        CoatParameters coat{double(eta), double(coatAlphas.Node(ca)), double(*thickness),
-                            p.maxDepth};
+        CoatParameters coat{double(eta), double(coatAlphas.Node(ca)),
+                            double(LayerThickness(*thickness)), p.maxDepth};
         std::vector<std::vector<double>> A =
             CoatedConductorAlbedo(coat, baseAlphas.Node(ba), fresnels, mus);
         for (int c = 0; c < nCos; ++c)

@@ -217,6 +217,28 @@ TEST(HostileMagnitudes, EmissionImagesAboveTheLimitAreErrorsAtTheirFile) {
     }
 }
 
+// A coat of negative thickness is an infinitely thin one: pbrt-v4 clamps the thickness to the
+// smallest positive float, as kiln's layered BSDF did, but the hot materials' emissivity tables
+// took it as given (a transmittance exp(1e38)), and every sample of a hot sphere with a
+// coat of thickness -1e38 was NaN.
+TEST(HostileMagnitudes, NegativeCoatThicknessIsAnInfinitelyThinCoatInEmissionToo) {
+    for (std::string material : {"coateddiffuse", "coatedconductor"}) {
+        auto render = [&](const char* thickness) {
+            return testing::RenderStats(std::string(kView) + "Material \"" + material +
+                                            "\" \"float roughness\" 0 \"float thickness\" " +
+                                            thickness +
+                                            "\nShape \"sphere\" \"float radius\" 0.5 "
+                                            "\"float temperature\" 1500\n",
+                                        1, 4);
+        };
+        testing::ImageStats negative = render("-1e38"), zero = render("0");
+        EXPECT_EQ(negative.nonFinite, 0) << material;
+        EXPECT_EQ(negative.nonFinitePixels, 0) << material;
+        EXPECT_GT(negative.meanY, 0) << material;
+        EXPECT_EQ(negative.meanY, zero.meanY) << material;
+    }
+}
+
 TEST(HostileMagnitudes, InfiniteAndNaNRGBsGiveSpectraWithoutNaN) {
     // A hair fibre of infinite absorption (melanin 3e38) crashed in the RGB-to-spectrum table
     const RGBColorSpace& cs = RGBColorSpace::sRGB();

@@ -75,6 +75,13 @@ class TopOrBottomBxDF {
 //           emits by the walk's albedo and is no longer in equilibrium with what it reflects.
 enum class LayeredMIS { Kiln, PbrtV4 };
 
+// The thickness (mean free paths) a layered BxDF works with for a given one: at least the
+// smallest positive float, as pbrt-v4 clamps it, so zero and negative thicknesses are an
+// infinitely thin layer. Emissivity tables of layered materials use it too.
+inline Float LayerThickness(Float thickness) {
+    return std::max(thickness, std::numeric_limits<Float>::min());
+}
+
 template <typename TopBxDF, typename BottomBxDF, bool twoSided>
 class LayeredBxDF {
   public:
@@ -88,7 +95,7 @@ class LayeredBxDF {
                 Float g, int maxDepth, int nSamples, LayeredMIS mis = LayeredMIS::Kiln)
         : top(top),
           bottom(bottom),
-          thickness(std::max(thickness, std::numeric_limits<Float>::min())),
+          thickness(LayerThickness(thickness)),
           g(g),
           albedo(albedo),
           maxDepth(maxDepth),
