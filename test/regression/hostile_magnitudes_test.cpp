@@ -239,6 +239,35 @@ TEST(HostileMagnitudes, NegativeCoatThicknessIsAnInfinitelyThinCoatInEmissionToo
     }
 }
 
+// A film's iso is its gain: zero or negative gains gave black or negative images, and with
+// bright light (a sphere at 1e9 K) -1e38 overflowed to NaN samples. An error at the parameter.
+TEST(HostileMagnitudes, FilmSensitivityMustBePositiveAndFinite) {
+    for (std::string iso : {"0", "-5", "-1e38", "100"}) {
+        std::string text =
+            "Film \"rgb\" \"integer xresolution\" 4 \"integer yresolution\" 4\n"
+            "    \"float iso\" " +
+            iso +
+            "\nCamera \"perspective\"\nWorldBegin\n"
+            "LightSource \"point\" \"point3 from\" [0 0 -2]\n"
+            "Translate 0 0 1.2" +
+            kSphere;
+        std::string error;
+        double meanY = 0;
+        try {
+            meanY = testing::RenderStats(text, 1, 1).meanY;
+        } catch (const SceneError& e) {
+            error = e.what();
+        }
+        if (iso == "100") {
+            EXPECT_EQ(error, "");
+            EXPECT_GT(meanY, 0);
+            continue;
+        }
+        EXPECT_NE(error.find("<test>:2:"), std::string::npos) << iso << ": " << error;
+        EXPECT_NE(error.find("iso must be positive and finite"), std::string::npos) << error;
+    }
+}
+
 TEST(HostileMagnitudes, InfiniteAndNaNRGBsGiveSpectraWithoutNaN) {
     // A hair fibre of infinite absorption (melanin 3e38) crashed in the RGB-to-spectrum table
     const RGBColorSpace& cs = RGBColorSpace::sRGB();

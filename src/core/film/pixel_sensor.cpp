@@ -68,7 +68,13 @@ PixelSensor PixelSensor::Create(const ParameterDictionary& params, const RGBColo
     Float iso = params.GetOneFloat("iso", 100);
     Float whiteBalance = params.GetOneFloat("whitebalance", 0);
     std::string sensorName = params.GetOneString("sensor", "cie1931");
-    if (whiteBalance < 0) throw SceneError(loc, "whitebalance must be >= 0 K", "whitebalance");
+    if (whiteBalance < 0)
+        throw SceneError(params.Loc("whitebalance", loc), "whitebalance must be >= 0 K",
+                         "whitebalance");
+    // The sensor's gain: a film of zero, negative or infinite sensitivity records nothing
+    // meaningful (negative radiance, or infinities and NaN where bright light overflows it)
+    if (!(iso > 0 && std::isfinite(iso)))
+        throw SceneError(params.Loc("iso", loc), "iso must be positive and finite", "iso");
     // pbrt-v4: camera sensors white balance for 6500 K unless told otherwise.
     if (sensorName != "cie1931" && whiteBalance == 0) whiteBalance = 6500;
     Float imagingRatio = exposureTime * iso / 100;
