@@ -129,7 +129,6 @@ SampledSpectrum FrComplex(Float cosTheta_i, SampledSpectrum eta, SampledSpectrum
     if (cosi == 0) return SampledSpectrum(1);  // grazing limit
     double sin2Theta_i = (1 - cosi) * (1 + cosi);
     double R[NSpectrumSamples];
-#pragma GCC unroll 1  // a loop, for the vectoriser (fully unrolled, GCC 12 leaves it scalar)
     for (int i = 0; i < NSpectrumSamples; ++i) {
         double er = eta[i], ei = k[i];
         double e2r = er * er - ei * ei, e2i = 2 * er * ei;
