@@ -109,6 +109,8 @@ std::string UsageText() {
            "  --exact-medium-emission E  emission of uniform media along each ray segment:\n"
            "                        integrated exactly (on, default) or met at collisions\n"
            "                        (off, as pbrt-v4)\n"
+           "  --weight-absorption A  in media, absorption weighs paths that carry much (on,\n"
+           "                        default) or ends them by chance (off, as pbrt-v4)\n"
            "  --wavelength-sampling W  wavelengths in scenes with hot matter: partly by the\n"
            "                        spectrum it radiates (emission, default) or by the\n"
            "                        visible density alone (visible, as pbrt-v4)\n"
@@ -172,6 +174,7 @@ const char* const kOptions[] = {"--help",
                                 "--medium-emission",
                                 "--glass-windows",
                                 "--exact-medium-emission",
+                                "--weight-absorption",
                                 "--wavelength-sampling",
                                 "--strategy",
                                 "--wavelengths",
@@ -362,6 +365,8 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
             o.glassWindows = either("on", "off");
         } else if (a == "--exact-medium-emission") {
             o.exactMediumEmission = either("on", "off");
+        } else if (a == "--weight-absorption") {
+            o.weightAbsorption = either("on", "off");
         } else if (a == "--wavelength-sampling") {
             o.wavelengthSampling = either("emission", "visible");
         } else if (a == "--strategy") {

@@ -135,6 +135,8 @@ RenderOptions RenderOptionsFor(const CommandLineOptions& options, std::optional<
     if (options.glassWindows) renderOptions.glassWindows = *options.glassWindows == "on";
     if (options.exactMediumEmission)
         renderOptions.exactMediumEmission = *options.exactMediumEmission == "on";
+    if (options.weightAbsorption)
+        renderOptions.weightAbsorption = *options.weightAbsorption == "on";
     if (options.wavelengthSampling)
         renderOptions.emissionWavelengths = *options.wavelengthSampling == "emission";
     if (options.wavelengths) renderOptions.singleWavelength = *options.wavelengths == 1;

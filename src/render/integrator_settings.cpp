@@ -76,6 +76,8 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOpti
     s.glassWindows = options.glassWindows.value_or(e.parameters.GetOneBool("glasswindows", true));
     s.exactMediumEmission =
         options.exactMediumEmission.value_or(e.parameters.GetOneBool("exactmediumemission", true));
+    s.weightAbsorption =
+        options.weightAbsorption.value_or(e.parameters.GetOneBool("weightabsorption", true));
     s.emissionWavelengths = options.emissionWavelengths.value_or(Choice(
         e, "wavelengthsampling", "emission",
         [](std::string_view v) -> std::optional<bool> {

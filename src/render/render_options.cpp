@@ -51,6 +51,8 @@ std::string RenderOptionsKey(const RenderOptions& o) {
     key += ";glasswindows=" + optional(o.glassWindows, [](bool b) { return b ? "1" : "0"; });
     key += ";exactmediumemission=" +
            optional(o.exactMediumEmission, [](bool b) { return b ? "1" : "0"; });
+    key +=
+        ";weightabsorption=" + optional(o.weightAbsorption, [](bool b) { return b ? "1" : "0"; });
     key += ";wavelengthsampling=" +
            optional(o.emissionWavelengths, [](bool b) { return b ? "emission" : "visible"; });
     key += ";wavelengths=" + optional(o.singleWavelength, [](bool b) { return b ? "1" : "4"; });

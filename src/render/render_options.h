@@ -59,14 +59,15 @@ struct RenderOptions {
     // default the machine's memory.
     std::optional<double> memoryLimitBytes;
     // The integrator's choices (Integrator "lightsampler", "strategy", "emittersampling",
-    // "mediumemission", "glasswindows", "exactmediumemission", "wavelengthsampling",
-    // "wavelengths"), for comparisons
+    // "mediumemission", "glasswindows", "exactmediumemission", "weightabsorption",
+    // "wavelengthsampling", "wavelengths"), for comparisons
     std::optional<LightSelection> lightSelection;
     std::optional<LightStrategy> strategy;
     std::optional<bool> emitterPowerSampling;
     std::optional<bool> mediumEmissionSampling;
     std::optional<bool> glassWindows;         // Integrator "glasswindows"
     std::optional<bool> exactMediumEmission;  // Integrator "exactmediumemission"
+    std::optional<bool> weightAbsorption;     // Integrator "weightabsorption"
     std::optional<bool> emissionWavelengths;  // Integrator "wavelengthsampling" "emission"
     std::optional<bool> singleWavelength;     // one wavelength per path rather than four
 };

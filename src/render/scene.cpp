@@ -29,7 +29,8 @@ std::string SceneFeatures::ToString() const {
         "light sampler %s; area lights %s, environment light %s, dispersion %s; shadow rays "
         "cross %d sheet material%s; subsurface materials %d (%d BSSRDF tables in %.3f s); "
         "polarisation %s; media %d (%d emissive, %d thermal, %d sampled as lights in %.3f s, "
-        "%d glass windows onto hot media, %d uniform ones integrated exactly along rays); "
+        "%d glass windows onto hot media, %d uniform ones integrated exactly along rays; "
+        "absorption %s); "
         "wavelengths %s, "
         "integrator %s%s%s%s",
         onOff(thermalEmission), thermalLights, emissivityTables, emissivitySeconds,
@@ -45,7 +46,7 @@ std::string SceneFeatures::ToString() const {
         sheets == 1 ? "" : "s", subsurface, bssrdfTables, bssrdfSeconds,
         polarized ? "on (Stokes vectors, Mueller matrices)" : "off", media, emissiveMedia,
         thermalMedia, sampledMedia, mediumSamplerSeconds, glassWindows, exactEmissionMedia,
-        wavelengths,
+        weightAbsorption ? "weighting paths" : "ending paths", wavelengths,
         ambientOcclusion ? "ambientocclusion"
         : bidirectional  ? "bdpt"
         : volumetric     ? "volpath"

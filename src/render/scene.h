@@ -67,6 +67,13 @@ struct PathIntegratorSettings {
     // emission) along a ray segment no light sampling strategy could have found is integrated
     // exactly (true, default) rather than met at tentative collisions (false, pbrt-v4's way)
     bool exactMediumEmission = true;
+    // kiln "bool weightabsorption": at a tentative collision volpath chooses between scattering
+    // and passing on, absorption weighting the path that passes on by sigma_n / (sigma_n +
+    // sigma_a) (true, default, while the path's Russian-roulette weight is at least 1/4),
+    // rather than ending it with probability sigma_a / sigma_maj (false, pbrt-v4's way): what
+    // lies behind a thin absorbing medium is seen through it without the noise of paths ended
+    // there or not
+    bool weightAbsorption = true;
     // kiln "string wavelengthsampling": in scenes with hot matter, the film draws wavelengths
     // partly by the spectrum it radiates ("emission", default; render/scene_wavelengths.h)
     // or by pbrt-v4's visible density alone ("visible", for comparisons)
@@ -122,6 +129,9 @@ struct SceneFeatures {
     // Emissive media whose emission volpath integrates exactly along ray segments
     // (Scene::exactEmissionMedia)
     int exactEmissionMedia = 0;
+    // Whether volpath weighs paths by absorption rather than ending them
+    // (PathIntegratorSettings::weightAbsorption)
+    bool weightAbsorption = false;
     // The share of the visible density (a thermal film: of its sensor's response) in the film's
     // wavelength distribution (1: it alone; less where hot matter's spectrum makes the rest:
     // scene_wavelengths.h)

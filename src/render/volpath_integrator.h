@@ -59,6 +59,10 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
     VolPathIntegrator(const Scene& scene, PathIntegratorSettings settings)
         : Base(scene, settings) {}
 
+    // Absorption weighs paths whose Russian-roulette weight is at least this (Integrator "bool
+    // weightabsorption"); below it, absorption ends them as in pbrt-v4
+    static constexpr Float kWeightAbsorptionAbove = 0.25f;
+
     // As PathIntegrator::Li; the camera ray starts in the camera's medium.
     Spectrum Li(Ray ray, SampledWavelengths& lambda, Sampler& sampler,
                 VisibleSurface* visibleSurface) const {
@@ -131,8 +135,15 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
                                     Radiance::Unpolarized(mp.emission / WavelengthMean(r, lambda)));
                             }
                         }
-                        // Absorption, real scattering or a null collision
-                        Float pAbsorb = mp.sigma_a[0] / sigma_maj[0];
+                        // Absorption, real scattering or a null collision. While the path
+                        // carries much (its throughput over the wavelengths' mean probability,
+                        // as Russian roulette weighs it: the same whichever wavelength is the
+                        // hero), absorption is a weight on passing on rather than an end
+                        bool weightAbsorption =
+                            settings.weightAbsorption && Radiance::RouletteWeight(beta) * etaScale /
+                                                                 WavelengthMean(r_u, lambda) >=
+                                                             kWeightAbsorptionAbove;
+                        Float pAbsorb = weightAbsorption ? 0 : mp.sigma_a[0] / sigma_maj[0];
                         Float pScatter = mp.sigma_s[0] / sigma_maj[0];
                         Float um = rng.UniformFloat();
                         if (um < pAbsorb) {
@@ -176,15 +187,17 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
                             anyNonSpecularBounces = true;
                             return false;
                         }
-                        // Null collision
+                        // Null collision (or absorption, weighted)
                         SampledSpectrum sigma_n = ClampZero(sigma_maj - mp.sigma_a - mp.sigma_s);
-                        Float pdf = T_maj[0] * sigma_n[0];
+                        SampledSpectrum sigma_pass =
+                            weightAbsorption ? sigma_n + mp.sigma_a : sigma_n;
+                        Float pdf = T_maj[0] * sigma_pass[0];
                         if (pdf == 0) {
                             beta = Throughput{};
                             return false;
                         }
                         beta = beta * (T_maj * sigma_n / pdf);
-                        r_u *= T_maj * sigma_n / pdf;
+                        r_u *= T_maj * sigma_pass / pdf;
                         r_l *= T_maj * sigma_maj / pdf;
                         if (windowChord) r_n *= T_maj * sigma_maj / pdf;
                         KeepInRange(beta, r_u, r_l, r_n);

@@ -231,6 +231,7 @@ constexpr std::string_view kNames[] = {
     "wavelength",
     "wavelengths",
     "wavelengthsampling",
+    "weightabsorption",
     "whitebalance",
     "width",
     "width0",
