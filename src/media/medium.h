@@ -145,7 +145,6 @@ class Medium : public ClosedSet<HomogeneousMedium*, GridMedium*, RGBGridMedium*,
     // The length of the ray MajorantAt looks along: short against any majorant voxel.
     static constexpr Float kMajorantProbe = 1e-6f;
 
-  private:
     // exp(-dt sigma) per wavelength; an infinite segment with sigma 0 transmits everything.
     static SampledSpectrum FastExpTransmittance(Float dt, const SampledSpectrum& sigma) {
         SampledSpectrum T;

@@ -69,10 +69,11 @@ struct PathIntegratorSettings {
     bool exactMediumEmission = true;
     // kiln "bool weightabsorption": at a tentative collision volpath chooses between scattering
     // and passing on, absorption weighting the path that passes on by sigma_n / (sigma_n +
-    // sigma_a) (true, default, while the path's Russian-roulette weight is at least 1/4),
-    // rather than ending it with probability sigma_a / sigma_maj (false, pbrt-v4's way): what
-    // lies behind a thin absorbing medium is seen through it without the noise of paths ended
-    // there or not
+    // sigma_a), and in a uniform medium it samples only scattering, the path carrying
+    // exp(-sigma_a t) (true, default, while the path's Russian-roulette weight is at least
+    // 1/4), rather than ending it with probability sigma_a / sigma_maj (false, pbrt-v4's way):
+    // what lies behind a thin absorbing medium is seen through it without the noise of paths
+    // ended there or not
     bool weightAbsorption = true;
     // kiln "string wavelengthsampling": in scenes with hot matter, the film draws wavelengths
     // partly by the spectrum it radiates ("emission", default; render/scene_wavelengths.h)

@@ -6,7 +6,11 @@
 // probabilities sigma_a, sigma_s and sigma_n = sigma_maj - sigma_t over sigma_maj of the hero
 // wavelength. The other wavelengths follow with weights, and rescaled path probabilities r_u
 // (unidirectional) and r_l (light sampling) combine the wavelengths and the two strategies in
-// one spectral MIS estimate (Miller, Georgiev & Jarosz 2019). Shadow rays pass through
+// one spectral MIS estimate (Miller, Georgiev & Jarosz 2019). While a path carries much
+// (Integrator "bool weightabsorption"), absorption weighs it rather than ending it: passing a
+// collision, by sigma_n / (sigma_n + sigma_a); in a uniform medium only scattering is sampled
+// and the path carries exp(-sigma_a t). r_u and r_l stay those of the tracking above, as light
+// sampling computes them; beta divides by what was sampled. Shadow rays pass through
 // interface surfaces and estimate transmittance by ratio tracking. Media emit at every
 // tentative collision (sigma_a Le, or thermal emission: medium_emission.h), except where a
 // uniform medium's emission along the whole segment is integrated exactly (Integrator "bool
@@ -106,109 +110,157 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
                                 beta, Radiance::Unpolarized(*E / WavelengthMean(r_u, lambda)));
                     }
                 }
+                // A real scattering at p, its weight in beta and r_u: direct light there, then
+                // a new direction (scattered), or the path's end (terminated)
+                auto scatterAt = [&](Point3f p, const MediumProperties& mp) {
+                    KeepInRange(beta, r_u, r_l, r_n);
+                    if (!beta || !r_u) return;
+                    Vector3f wo = -ray.d;
+                    HGPhaseFunction phase(mp.g);
+                    windowChord = false;
+                    if (settings.strategy != LightStrategy::BSDFOnly) {
+                        Interaction intr(p, Normal3f(), Point2f(), wo, ray.time);
+                        L += SampleLd(intr, nullptr, &phase, medium, lambda, sampler, beta, r_u);
+                        L += SampleEmittersLd(intr, nullptr, &phase, medium, depth, lambda, sampler,
+                                              beta, r_u);
+                    }
+                    std::optional<PhaseFunctionSample> ps = phase.Sample_p(wo, sampler.Get2D());
+                    if (!ps || ps->pdf == 0) {
+                        terminated = true;
+                        return;
+                    }
+                    beta = beta * Radiance::Depolarizing(SampledSpectrum(ps->p / ps->pdf));
+                    r_l = r_u / ps->pdf;
+                    prevContext = LightSampleContext(Interaction(p, Normal3f(), Point2f()));
+                    prevScatterMedium = medium;
+                    scattered = true;
+                    ray = Ray(p, ps->wi, ray.time);
+                    specularBounce = false;
+                    anyNonSpecularBounces = true;
+                };
+                const Medium& segmentMedium = scene.media[size_t(medium)];
                 RNG rng(Hash(sampler.Get1D()), Hash(sampler.Get1D()));
-                SampledSpectrum T_maj = scene.media[size_t(medium)].SampleT_maj(
-                    ray, tMax, sampler.Get1D(), rng, lambda,
-                    [&](Point3f p, const MediumProperties& mp, const SampledSpectrum& sigma_maj,
-                        const SampledSpectrum& T_maj) {
-                        if (!beta) {
-                            terminated = true;
-                            return false;
-                        }
-                        // Emission at the tentative collision, weighted against sampling
-                        // the medium's emission from the previous vertex
-                        if (depth < maxDepth && !emissionDone && mp.emission) {
-                            Float pdf = sigma_maj[0] * T_maj[0];
-                            SampledSpectrum r_e = r_u * sigma_maj * T_maj / pdf;
-                            Float p_l = depth == 0 || specularBounce
-                                            ? 0
-                                            : MediumEmissionPDF(medium, p, prevContext.p,
-                                                                prevScatterMedium);
-                            if ((p_l > 0 || windowChord) &&
-                                settings.strategy == LightStrategy::LightOnly)
-                                r_e = SampledSpectrum(0.f);
-                            if (r_e) {
-                                SampledSpectrum r = r_e + r_l * T_maj * (p_l / pdf);
-                                if (windowChord) r += r_n * sigma_maj * T_maj / pdf;
-                                L += Radiance::Apply(
-                                    beta * (T_maj / pdf),
-                                    Radiance::Unpolarized(mp.emission / WavelengthMean(r, lambda)));
-                            }
-                        }
-                        // Absorption, real scattering or a null collision. While the path
-                        // carries much (its throughput over the wavelengths' mean probability,
-                        // as Russian roulette weighs it: the same whichever wavelength is the
-                        // hero), absorption is a weight on passing on rather than an end
-                        bool weightAbsorption =
-                            settings.weightAbsorption && Radiance::RouletteWeight(beta) * etaScale /
-                                                                 WavelengthMean(r_u, lambda) >=
-                                                             kWeightAbsorptionAbove;
-                        Float pAbsorb = weightAbsorption ? 0 : mp.sigma_a[0] / sigma_maj[0];
-                        Float pScatter = mp.sigma_s[0] / sigma_maj[0];
-                        Float um = rng.UniformFloat();
-                        if (um < pAbsorb) {
-                            terminated = true;
-                            return false;
-                        }
-                        if (um < pAbsorb + pScatter) {
-                            if (depth++ >= maxDepth) {
+                Float uDistance = sampler.Get1D();
+                // A uniform medium whose emission is settled (or that has none), on a path that
+                // carries much: only scattering is sampled, and absorption weighs the path,
+                // exp(-sigma_a t) (a uniform medium's majorant is its extinction, so the
+                // tracking below has no null collision absorption could weigh)
+                if (settings.weightAbsorption && !windowChord && segmentMedium.IsUniform() &&
+                    (emissionDone || !segmentMedium.IsEmissive()) &&
+                    Radiance::RouletteWeight(beta) * etaScale / WavelengthMean(r_u, lambda) >=
+                        kWeightAbsorptionAbove) {
+                    MediumProperties mp = segmentMedium.SamplePoint(ray.o, lambda);
+                    const SampledSpectrum sigma_t = mp.sigma_a + mp.sigma_s;
+                    const Float len = Length(ray.d), distance = tMax * len;
+                    Float t =
+                        mp.sigma_s[0] > 0 ? SampleExponential(uDistance, mp.sigma_s[0]) : Infinity;
+                    // beta divides by the probability of what was done; the rescaled
+                    // probabilities are those of pbrt-v4's tracking (as for null collisions)
+                    if (t < distance) {
+                        if (depth++ >= maxDepth) return L;
+                        SampledSpectrum T_t = Medium::FastExpTransmittance(t, sigma_t);
+                        Float pdf = mp.sigma_s[0] * T_t[0];
+                        if (!(pdf > 0)) return L;
+                        Float pdfScatter =
+                            mp.sigma_s[0] * Medium::FastExpTransmittance(t, mp.sigma_s)[0];
+                        beta = beta * (mp.sigma_s * T_t / pdfScatter);
+                        r_u *= mp.sigma_s * T_t / pdf;
+                        scatterAt(ray(t / len), mp);
+                        if (terminated || !beta || !r_u) return L;
+                        continue;
+                    }
+                    // Through to the surface (or forever, where nothing scatters): the light
+                    // strategy's transmittance is the majorant's, exp(-sigma_t d)
+                    Float pdfPass = Medium::FastExpTransmittance(distance, mp.sigma_s)[0];
+                    SampledSpectrum T_t = Medium::FastExpTransmittance(distance, sigma_t);
+                    if (!(T_t[0] > 0)) return L;
+                    beta = beta * (T_t / pdfPass);
+                    r_u *= T_t / T_t[0];
+                    r_l *= T_t / T_t[0];
+                    if (!beta || !r_u) return L;
+                } else {
+                    SampledSpectrum T_maj = segmentMedium.SampleT_maj(
+                        ray, tMax, uDistance, rng, lambda,
+                        [&](Point3f p, const MediumProperties& mp, const SampledSpectrum& sigma_maj,
+                            const SampledSpectrum& T_maj) {
+                            if (!beta) {
                                 terminated = true;
                                 return false;
                             }
-                            Float pdf = T_maj[0] * mp.sigma_s[0];
-                            beta = beta * (T_maj * mp.sigma_s / pdf);
-                            r_u *= T_maj * mp.sigma_s / pdf;
+                            // Emission at the tentative collision, weighted against sampling
+                            // the medium's emission from the previous vertex
+                            if (depth < maxDepth && !emissionDone && mp.emission) {
+                                Float pdf = sigma_maj[0] * T_maj[0];
+                                SampledSpectrum r_e = r_u * sigma_maj * T_maj / pdf;
+                                Float p_l = depth == 0 || specularBounce
+                                                ? 0
+                                                : MediumEmissionPDF(medium, p, prevContext.p,
+                                                                    prevScatterMedium);
+                                if ((p_l > 0 || windowChord) &&
+                                    settings.strategy == LightStrategy::LightOnly)
+                                    r_e = SampledSpectrum(0.f);
+                                if (r_e) {
+                                    SampledSpectrum r = r_e + r_l * T_maj * (p_l / pdf);
+                                    if (windowChord) r += r_n * sigma_maj * T_maj / pdf;
+                                    L += Radiance::Apply(
+                                        beta * (T_maj / pdf),
+                                        Radiance::Unpolarized(mp.emission /
+                                                              WavelengthMean(r, lambda)));
+                                }
+                            }
+                            // Absorption, real scattering or a null collision. While the path
+                            // carries much (its throughput over the wavelengths' mean probability,
+                            // as Russian roulette weighs it: the same whichever wavelength is the
+                            // hero), absorption is a weight on passing on rather than an end
+                            bool weightAbsorption = settings.weightAbsorption &&
+                                                    Radiance::RouletteWeight(beta) * etaScale /
+                                                            WavelengthMean(r_u, lambda) >=
+                                                        kWeightAbsorptionAbove;
+                            Float pAbsorb = weightAbsorption ? 0 : mp.sigma_a[0] / sigma_maj[0];
+                            Float pScatter = mp.sigma_s[0] / sigma_maj[0];
+                            Float um = rng.UniformFloat();
+                            if (um < pAbsorb) {
+                                terminated = true;
+                                return false;
+                            }
+                            if (um < pAbsorb + pScatter) {
+                                if (depth++ >= maxDepth) {
+                                    terminated = true;
+                                    return false;
+                                }
+                                Float pdf = T_maj[0] * mp.sigma_s[0];
+                                beta = beta * (T_maj * mp.sigma_s / pdf);
+                                r_u *= T_maj * mp.sigma_s / pdf;
+                                scatterAt(p, mp);
+                                return false;
+                            }
+                            // Null collision (or absorption, weighted). The rescaled
+                            // probabilities stay those of pbrt-v4's tracking, as light sampling
+                            // computes them along shadow rays, so that MIS weights still sum to
+                            // one; beta divides by the probability of what was done
+                            SampledSpectrum sigma_n =
+                                ClampZero(sigma_maj - mp.sigma_a - mp.sigma_s);
+                            Float pdf = T_maj[0] * sigma_n[0];
+                            if (pdf == 0) {
+                                beta = Throughput{};
+                                return false;
+                            }
+                            Float pdfPass =
+                                weightAbsorption ? T_maj[0] * (sigma_n[0] + mp.sigma_a[0]) : pdf;
+                            beta = beta * (T_maj * sigma_n / pdfPass);
+                            r_u *= T_maj * sigma_n / pdf;
+                            r_l *= T_maj * sigma_maj / pdf;
+                            if (windowChord) r_n *= T_maj * sigma_maj / pdf;
                             KeepInRange(beta, r_u, r_l, r_n);
-                            if (!beta || !r_u) return false;
-                            // Direct light at the scattering point, then a new direction
-                            Vector3f wo = -ray.d;
-                            HGPhaseFunction phase(mp.g);
-                            windowChord = false;
-                            if (settings.strategy != LightStrategy::BSDFOnly) {
-                                Interaction intr(p, Normal3f(), Point2f(), wo, ray.time);
-                                L += SampleLd(intr, nullptr, &phase, medium, lambda, sampler, beta,
-                                              r_u);
-                                L += SampleEmittersLd(intr, nullptr, &phase, medium, depth, lambda,
-                                                      sampler, beta, r_u);
-                            }
-                            std::optional<PhaseFunctionSample> ps =
-                                phase.Sample_p(wo, sampler.Get2D());
-                            if (!ps || ps->pdf == 0) {
-                                terminated = true;
-                                return false;
-                            }
-                            beta = beta * Radiance::Depolarizing(SampledSpectrum(ps->p / ps->pdf));
-                            r_l = r_u / ps->pdf;
-                            prevContext = LightSampleContext(Interaction(p, Normal3f(), Point2f()));
-                            prevScatterMedium = medium;
-                            scattered = true;
-                            ray = Ray(p, ps->wi, ray.time);
-                            specularBounce = false;
-                            anyNonSpecularBounces = true;
-                            return false;
-                        }
-                        // Null collision (or absorption, weighted)
-                        SampledSpectrum sigma_n = ClampZero(sigma_maj - mp.sigma_a - mp.sigma_s);
-                        SampledSpectrum sigma_pass =
-                            weightAbsorption ? sigma_n + mp.sigma_a : sigma_n;
-                        Float pdf = T_maj[0] * sigma_pass[0];
-                        if (pdf == 0) {
-                            beta = Throughput{};
-                            return false;
-                        }
-                        beta = beta * (T_maj * sigma_n / pdf);
-                        r_u *= T_maj * sigma_pass / pdf;
-                        r_l *= T_maj * sigma_maj / pdf;
-                        if (windowChord) r_n *= T_maj * sigma_maj / pdf;
-                        KeepInRange(beta, r_u, r_l, r_n);
-                        return bool(beta) && bool(r_u);
-                    });
-                if (terminated || !beta || !r_u) return L;
-                if (scattered) continue;
-                if (T_maj[0] == 0) return L;
-                beta = beta * (T_maj / T_maj[0]);
-                r_u *= T_maj / T_maj[0];
-                r_l *= T_maj / T_maj[0];
+                            return bool(beta) && bool(r_u);
+                        });
+                    if (terminated || !beta || !r_u) return L;
+                    if (scattered) continue;
+                    if (T_maj[0] == 0) return L;
+                    beta = beta * (T_maj / T_maj[0]);
+                    r_u *= T_maj / T_maj[0];
+                    r_l *= T_maj / T_maj[0];
+                }
             }
             windowChord = false;  // a chord ends at the first surface
 

@@ -135,6 +135,14 @@ const VolumeCase kVolumeCases[] = {
      "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.2 0.2 0.2] \"rgb sigma_s\" [0.3 0.3 "
      "0.3]",
      1024},
+    // Graded, chromatic hot air filling the cavity: tracking meets null collisions, where
+    // absorption weighs the path (Integrator "weightabsorption"), and light sampling from the
+    // air (the wall) is weighed against it
+    {"hot graded air", "\"dielectric\" \"float eta\" 1.5", "",
+     "\"string type\" \"uniformgrid\" \"float density\" [0.2 1 0.5 0.1 0.8 0.3 1 0.6] "
+     "\"integer nx\" 2 \"integer ny\" 2 \"integer nz\" 2 \"point3 p0\" [-6 -6 -6] \"point3 "
+     "p1\" [6 6 6] \"rgb sigma_a\" [0.3 0.15 0.05] \"rgb sigma_s\" [0.1 0.2 0.3]",
+     1024},
 };
 
 // Each case in one geometry, spheres and meshes by turns: every case, and meshes and spheres each

@@ -42,9 +42,9 @@ std::string Box(Float x0, Float y0, Float z0, Float x1, Float y1, Float z1) {
 }
 
 // A large uniform emitter seen through an absorbing slab (thickness 1): each camera ray
-// survives delta tracking with probability exp(-sigma_a) (absorption ends it). With
-// "weightabsorption" on or off alike: a homogeneous medium's majorant is its extinction, so
-// no collision is null and there is nothing to weigh a passing path by.
+// survives delta tracking with probability exp(-sigma_a) (absorption ends it; "bool
+// weightabsorption" false), or passes with weight exp(-sigma_a) (absorption weighs it, by
+// default), which leaves only the noise of the wavelengths drawn.
 TEST(VolumeTest, CameraRaysThroughASlabFollowBeerLambert) {
     const Float sigma = 0.7f;
     auto render = [&](bool slab, bool weighted) {
@@ -68,6 +68,7 @@ TEST(VolumeTest, CameraRaysThroughASlabFollowBeerLambert) {
     testing::RenderedScene open = render(false, true);
     RunningStats o = ImageY(*open.scene);
     ASSERT_GT(o.Mean(), 0);
+    double seWeighted = 0, seEnded = 0;
     for (bool weighted : {true, false}) {
         testing::RenderedScene slab = render(true, weighted);
         ExpectNoWarnings(slab);
@@ -81,7 +82,10 @@ TEST(VolumeTest, CameraRaysThroughASlabFollowBeerLambert) {
                     expected, se, weighted ? "weighting" : "ending paths");
         EXPECT_NEAR(ratio, expected, 4 * se);
         EXPECT_LT(4 * se, 0.01);
+        (weighted ? seWeighted : seEnded) = t.StandardError() / t.Mean();
     }
+    // Ending paths adds the noise of survival (a binomial with p = 0.5 over 256 samples)
+    EXPECT_LT(seWeighted, 0.2 * seEnded);
 }
 
 // A distant light shining down through a scattering slab onto a diffuse floor that the camera
