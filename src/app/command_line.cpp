@@ -111,6 +111,9 @@ std::string UsageText() {
            "                        (off, as pbrt-v4)\n"
            "  --weight-absorption A  in media, absorption weighs paths that carry much (on,\n"
            "                        default) or ends them by chance (off, as pbrt-v4)\n"
+           "  --collision-light-sampling C  on camera rays in media, lights sampled at\n"
+           "                        tentative collisions (on, default) or at real\n"
+           "                        scatterings only (off, as pbrt-v4)\n"
            "  --wavelength-sampling W  wavelengths in scenes with hot matter: partly by the\n"
            "                        spectrum it radiates (emission, default) or by the\n"
            "                        visible density alone (visible, as pbrt-v4)\n"
@@ -175,6 +178,7 @@ const char* const kOptions[] = {"--help",
                                 "--glass-windows",
                                 "--exact-medium-emission",
                                 "--weight-absorption",
+                                "--collision-light-sampling",
                                 "--wavelength-sampling",
                                 "--strategy",
                                 "--wavelengths",
@@ -367,6 +371,8 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
             o.exactMediumEmission = either("on", "off");
         } else if (a == "--weight-absorption") {
             o.weightAbsorption = either("on", "off");
+        } else if (a == "--collision-light-sampling") {
+            o.collisionLightSampling = either("on", "off");
         } else if (a == "--wavelength-sampling") {
             o.wavelengthSampling = either("emission", "visible");
         } else if (a == "--strategy") {

@@ -22,15 +22,16 @@ struct CommandLineOptions {
     bool quiet = false;
     bool verbose = false;
     std::string view;  // display view override for PNG/JPEG/... outputs ("" = the film's)
-    std::optional<std::string> exposure;             // EV stops added to the film's, or "auto"
-    std::optional<std::string> lightSampler;         // bvh | power | uniform | area
-    std::optional<std::string> strategy;             // mis | light | bsdf
-    std::optional<std::string> emitterSampling;      // power | shape
-    std::optional<std::string> mediumEmission;       // sampled | tracked
-    std::optional<std::string> glassWindows;         // on | off
-    std::optional<std::string> exactMediumEmission;  // on | off
-    std::optional<std::string> weightAbsorption;     // on | off
-    std::optional<std::string> wavelengthSampling;   // emission | visible
+    std::optional<std::string> exposure;                // EV stops added to the film's, or "auto"
+    std::optional<std::string> lightSampler;            // bvh | power | uniform | area
+    std::optional<std::string> strategy;                // mis | light | bsdf
+    std::optional<std::string> emitterSampling;         // power | shape
+    std::optional<std::string> mediumEmission;          // sampled | tracked
+    std::optional<std::string> glassWindows;            // on | off
+    std::optional<std::string> exactMediumEmission;     // on | off
+    std::optional<std::string> weightAbsorption;        // on | off
+    std::optional<std::string> collisionLightSampling;  // on | off
+    std::optional<std::string> wavelengthSampling;      // emission | visible
     // --generic footprints,aovs: run those generic code paths (measuring specialisation)
     bool genericFootprints = false, genericAOVs = false, genericVolumes = false;
     std::optional<int> wavelengths;           // 1 | 4

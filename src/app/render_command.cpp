@@ -137,6 +137,8 @@ RenderOptions RenderOptionsFor(const CommandLineOptions& options, std::optional<
         renderOptions.exactMediumEmission = *options.exactMediumEmission == "on";
     if (options.weightAbsorption)
         renderOptions.weightAbsorption = *options.weightAbsorption == "on";
+    if (options.collisionLightSampling)
+        renderOptions.collisionLightSampling = *options.collisionLightSampling == "on";
     if (options.wavelengthSampling)
         renderOptions.emissionWavelengths = *options.wavelengthSampling == "emission";
     if (options.wavelengths) renderOptions.singleWavelength = *options.wavelengths == 1;

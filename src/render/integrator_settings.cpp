@@ -78,6 +78,8 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOpti
         options.exactMediumEmission.value_or(e.parameters.GetOneBool("exactmediumemission", true));
     s.weightAbsorption =
         options.weightAbsorption.value_or(e.parameters.GetOneBool("weightabsorption", true));
+    s.collisionLightSampling = options.collisionLightSampling.value_or(
+        e.parameters.GetOneBool("collisionlightsampling", true));
     s.emissionWavelengths = options.emissionWavelengths.value_or(Choice(
         e, "wavelengthsampling", "emission",
         [](std::string_view v) -> std::optional<bool> {

@@ -60,16 +60,17 @@ struct RenderOptions {
     std::optional<double> memoryLimitBytes;
     // The integrator's choices (Integrator "lightsampler", "strategy", "emittersampling",
     // "mediumemission", "glasswindows", "exactmediumemission", "weightabsorption",
-    // "wavelengthsampling", "wavelengths"), for comparisons
+    // "collisionlightsampling", "wavelengthsampling", "wavelengths"), for comparisons
     std::optional<LightSelection> lightSelection;
     std::optional<LightStrategy> strategy;
     std::optional<bool> emitterPowerSampling;
     std::optional<bool> mediumEmissionSampling;
-    std::optional<bool> glassWindows;         // Integrator "glasswindows"
-    std::optional<bool> exactMediumEmission;  // Integrator "exactmediumemission"
-    std::optional<bool> weightAbsorption;     // Integrator "weightabsorption"
-    std::optional<bool> emissionWavelengths;  // Integrator "wavelengthsampling" "emission"
-    std::optional<bool> singleWavelength;     // one wavelength per path rather than four
+    std::optional<bool> glassWindows;            // Integrator "glasswindows"
+    std::optional<bool> exactMediumEmission;     // Integrator "exactmediumemission"
+    std::optional<bool> weightAbsorption;        // Integrator "weightabsorption"
+    std::optional<bool> collisionLightSampling;  // Integrator "collisionlightsampling"
+    std::optional<bool> emissionWavelengths;     // Integrator "wavelengthsampling" "emission"
+    std::optional<bool> singleWavelength;        // one wavelength per path rather than four
 };
 
 // The options that change what a render's pixels are, as canonical text (unset ones empty: the

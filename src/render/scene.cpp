@@ -30,7 +30,7 @@ std::string SceneFeatures::ToString() const {
         "cross %d sheet material%s; subsurface materials %d (%d BSSRDF tables in %.3f s); "
         "polarisation %s; media %d (%d emissive, %d thermal, %d sampled as lights in %.3f s, "
         "%d glass windows onto hot media, %d uniform ones integrated exactly along rays; "
-        "absorption %s); "
+        "absorption %s, lights sampled at %s on camera rays); "
         "wavelengths %s, "
         "integrator %s%s%s%s",
         onOff(thermalEmission), thermalLights, emissivityTables, emissivitySeconds,
@@ -46,7 +46,8 @@ std::string SceneFeatures::ToString() const {
         sheets == 1 ? "" : "s", subsurface, bssrdfTables, bssrdfSeconds,
         polarized ? "on (Stokes vectors, Mueller matrices)" : "off", media, emissiveMedia,
         thermalMedia, sampledMedia, mediumSamplerSeconds, glassWindows, exactEmissionMedia,
-        weightAbsorption ? "weighting paths" : "ending paths", wavelengths,
+        weightAbsorption ? "weighting paths" : "ending paths",
+        collisionLightSampling ? "collisions" : "scatterings", wavelengths,
         ambientOcclusion ? "ambientocclusion"
         : bidirectional  ? "bdpt"
         : volumetric     ? "volpath"

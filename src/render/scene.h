@@ -75,6 +75,11 @@ struct PathIntegratorSettings {
     // what lies behind a thin absorbing medium is seen through it without the noise of paths
     // ended there or not
     bool weightAbsorption = true;
+    // kiln "bool collisionlightsampling": on camera rays and after specular bounces, volpath
+    // samples lights at tentative collisions in media (the k-th of a segment with probability
+    // 1 / k, weighted by the probability of scattering there) rather than at real scatterings
+    // (true, default; false: pbrt-v4's way)
+    bool collisionLightSampling = true;
     // kiln "string wavelengthsampling": in scenes with hot matter, the film draws wavelengths
     // partly by the spectrum it radiates ("emission", default; render/scene_wavelengths.h)
     // or by pbrt-v4's visible density alone ("visible", for comparisons)
@@ -133,6 +138,9 @@ struct SceneFeatures {
     // Whether volpath weighs paths by absorption rather than ending them
     // (PathIntegratorSettings::weightAbsorption)
     bool weightAbsorption = false;
+    // Whether volpath samples lights at tentative collisions on camera rays
+    // (PathIntegratorSettings::collisionLightSampling)
+    bool collisionLightSampling = false;
     // The share of the visible density (a thermal film: of its sensor's response) in the film's
     // wavelength distribution (1: it alone; less where hot matter's spectrum makes the rest:
     // scene_wavelengths.h)

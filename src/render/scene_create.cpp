@@ -690,6 +690,8 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
         int(std::count(scene.exactEmissionMedia.begin(), scene.exactEmissionMedia.end(), 1));
     scene.features.weightAbsorption =
         scene.features.volumetric && scene.integrator.weightAbsorption;
+    scene.features.collisionLightSampling =
+        scene.features.volumetric && scene.integrator.collisionLightSampling;
     scene.wavelengths = CreateWavelengthDistribution(scene, &scene.features.wavelengthVisibleShare);
     scene.features.sensorResponseWavelengths = scene.job->film->Thermal() != nullptr;
     scene.job->film->SetWavelengths(scene.wavelengths);

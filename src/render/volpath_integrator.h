@@ -112,13 +112,22 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
                 }
                 // A real scattering at p, its weight in beta and r_u: direct light there, then
                 // a new direction (scattered), or the path's end (terminated)
+                // Light sampling at tentative collisions rather than at real scatterings, on
+                // segments no scattering could have started (camera rays, after specular
+                // bounces): what a thin medium scatters towards the camera is estimated on
+                // every path, not on the few that scatter (Integrator "bool
+                // collisionlightsampling")
+                bool lightAtCollisions = settings.collisionLightSampling && !windowChord &&
+                                         settings.strategy != LightStrategy::BSDFOnly &&
+                                         (depth == 0 || specularBounce);
+                int segmentCollisions = 0;
                 auto scatterAt = [&](Point3f p, const MediumProperties& mp) {
                     KeepInRange(beta, r_u, r_l, r_n);
                     if (!beta || !r_u) return;
                     Vector3f wo = -ray.d;
                     HGPhaseFunction phase(mp.g);
                     windowChord = false;
-                    if (settings.strategy != LightStrategy::BSDFOnly) {
+                    if (settings.strategy != LightStrategy::BSDFOnly && !lightAtCollisions) {
                         Interaction intr(p, Normal3f(), Point2f(), wo, ray.time);
                         L += SampleLd(intr, nullptr, &phase, medium, lambda, sampler, beta, r_u);
                         L += SampleEmittersLd(intr, nullptr, &phase, medium, depth, lambda, sampler,
@@ -149,6 +158,7 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
                     (emissionDone || !segmentMedium.IsEmissive()) &&
                     Radiance::RouletteWeight(beta) * etaScale / WavelengthMean(r_u, lambda) >=
                         kWeightAbsorptionAbove) {
+                    lightAtCollisions = false;  // no tentative collisions here
                     MediumProperties mp = segmentMedium.SamplePoint(ray.o, lambda);
                     const SampledSpectrum sigma_t = mp.sigma_a + mp.sigma_s;
                     const Float len = Length(ray.d), distance = tMax * len;
@@ -207,6 +217,25 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
                                         Radiance::Unpolarized(mp.emission /
                                                               WavelengthMean(r, lambda)));
                                 }
+                            }
+                            // Light sampling at the k-th tentative collision of the segment
+                            // with probability 1 / k (about the log of their number in all),
+                            // weighted by the probability of scattering there; MIS as for a
+                            // real scattering
+                            ++segmentCollisions;
+                            if (lightAtCollisions && depth < maxDepth && mp.sigma_s[0] > 0 &&
+                                (segmentCollisions == 1 ||
+                                 rng.UniformFloat() * Float(segmentCollisions) < 1)) {
+                                Float pdfRef = T_maj[0] * mp.sigma_s[0];
+                                Float pdfDone = T_maj[0] * sigma_maj[0] / Float(segmentCollisions);
+                                Throughput betaS = beta * (T_maj * mp.sigma_s / pdfDone);
+                                SampledSpectrum r_s = r_u * T_maj * mp.sigma_s / pdfRef;
+                                HGPhaseFunction phase(mp.g);
+                                Interaction intr(p, Normal3f(), Point2f(), -ray.d, ray.time);
+                                L += SampleLd(intr, nullptr, &phase, medium, lambda, sampler, betaS,
+                                              r_s);
+                                L += SampleEmittersLd(intr, nullptr, &phase, medium, depth + 1,
+                                                      lambda, sampler, betaS, r_s);
                             }
                             // Absorption, real scattering or a null collision. While the path
                             // carries much (its throughput over the wavelengths' mean probability,

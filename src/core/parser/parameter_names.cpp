@@ -40,6 +40,7 @@ constexpr std::string_view kNames[] = {
     "beta_n",
     "bootstrapsamples",
     "chains",
+    "collisionlightsampling",
     "color",
     "conductor.eta",
     "conductor.k",
