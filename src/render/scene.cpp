@@ -30,7 +30,7 @@ std::string SceneFeatures::ToString() const {
         "cross %d sheet material%s; subsurface materials %d (%d BSSRDF tables in %.3f s); "
         "polarisation %s; media %d (%d emissive, %d thermal, %d sampled as lights in %.3f s, "
         "%d glass windows onto hot media, %d uniform ones integrated exactly along rays; "
-        "absorption %s, lights sampled at %s on camera rays); "
+        "absorption %s, lights sampled at %s on camera rays and after specular bounces); "
         "wavelengths %s, "
         "integrator %s%s%s%s",
         onOff(thermalEmission), thermalLights, emissivityTables, emissivitySeconds,

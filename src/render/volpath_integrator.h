@@ -110,8 +110,6 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
                                 beta, Radiance::Unpolarized(*E / WavelengthMean(r_u, lambda)));
                     }
                 }
-                // A real scattering at p, its weight in beta and r_u: direct light there, then
-                // a new direction (scattered), or the path's end (terminated)
                 // Light sampling at tentative collisions rather than at real scatterings, on
                 // segments no scattering could have started (camera rays, after specular
                 // bounces): what a thin medium scatters towards the camera is estimated on
@@ -121,6 +119,9 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
                                          settings.strategy != LightStrategy::BSDFOnly &&
                                          (depth == 0 || specularBounce);
                 int segmentCollisions = 0;
+                // A real scattering at p, its weight in beta and r_u: direct light there (unless
+                // sampled at collisions), then a new direction (scattered), or the path's end
+                // (terminated)
                 auto scatterAt = [&](Point3f p, const MediumProperties& mp) {
                     KeepInRange(beta, r_u, r_l, r_n);
                     if (!beta || !r_u) return;
