@@ -146,7 +146,12 @@ class Medium : public ClosedSet<HomogeneousMedium*, GridMedium*, RGBGridMedium*,
     static constexpr Float kMajorantProbe = 1e-6f;
 
     // exp(-dt sigma) per wavelength; an infinite segment with sigma 0 transmits everything.
+    // One exponential where every wavelength has the same coefficient (grey media and their
+    // majorants), the same values.
     static SampledSpectrum FastExpTransmittance(Float dt, const SampledSpectrum& sigma) {
+        bool grey = true;
+        for (int i = 1; i < NSpectrumSamples; ++i) grey &= sigma[i] == sigma[0];
+        if (grey) return SampledSpectrum(sigma[0] == 0 ? 1 : std::exp(-dt * sigma[0]));
         SampledSpectrum T;
         for (int i = 0; i < NSpectrumSamples; ++i)
             T[i] = sigma[i] == 0 ? 1 : std::exp(-dt * sigma[i]);
