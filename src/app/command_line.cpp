@@ -114,6 +114,9 @@ std::string UsageText() {
            "  --collision-light-sampling C  on camera rays in media, lights sampled at\n"
            "                        tentative collisions (on, default) or at real\n"
            "                        scatterings only (off, as pbrt-v4)\n"
+           "  --split-dielectrics S  a camera ray's first smooth dielectric: both reflection\n"
+           "                        and transmission traced (on, default) or one by chance\n"
+           "                        (off, as pbrt-v4)\n"
            "  --wavelength-sampling W  wavelengths in scenes with hot matter: partly by the\n"
            "                        spectrum it radiates (emission, default) or by the\n"
            "                        visible density alone (visible, as pbrt-v4)\n"
@@ -179,6 +182,7 @@ const char* const kOptions[] = {"--help",
                                 "--exact-medium-emission",
                                 "--weight-absorption",
                                 "--collision-light-sampling",
+                                "--split-dielectrics",
                                 "--wavelength-sampling",
                                 "--strategy",
                                 "--wavelengths",
@@ -373,6 +377,8 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
             o.weightAbsorption = either("on", "off");
         } else if (a == "--collision-light-sampling") {
             o.collisionLightSampling = either("on", "off");
+        } else if (a == "--split-dielectrics") {
+            o.splitDielectrics = either("on", "off");
         } else if (a == "--wavelength-sampling") {
             o.wavelengthSampling = either("emission", "visible");
         } else if (a == "--strategy") {

@@ -139,6 +139,8 @@ RenderOptions RenderOptionsFor(const CommandLineOptions& options, std::optional<
         renderOptions.weightAbsorption = *options.weightAbsorption == "on";
     if (options.collisionLightSampling)
         renderOptions.collisionLightSampling = *options.collisionLightSampling == "on";
+    if (options.splitDielectrics)
+        renderOptions.splitDielectrics = *options.splitDielectrics == "on";
     if (options.wavelengthSampling)
         renderOptions.emissionWavelengths = *options.wavelengthSampling == "emission";
     if (options.wavelengths) renderOptions.singleWavelength = *options.wavelengths == 1;

@@ -80,6 +80,8 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOpti
         options.weightAbsorption.value_or(e.parameters.GetOneBool("weightabsorption", true));
     s.collisionLightSampling = options.collisionLightSampling.value_or(
         e.parameters.GetOneBool("collisionlightsampling", true));
+    s.splitDielectrics =
+        options.splitDielectrics.value_or(e.parameters.GetOneBool("splitdielectrics", true));
     s.emissionWavelengths = options.emissionWavelengths.value_or(Choice(
         e, "wavelengthsampling", "emission",
         [](std::string_view v) -> std::optional<bool> {

@@ -39,14 +39,35 @@ class PathIntegrator {
     // for AOVs.
     Spectrum Li(Ray ray, SampledWavelengths& lambda, Sampler& sampler,
                 VisibleSurface* visibleSurface) const {
-        Spectrum L{};
+        return Trace(ray, PathState{}, lambda, sampler, visibleSurface);
+    }
+
+  private:
+    // A path's state where it starts: at the camera, or where a smooth dielectric split it
+    struct PathState {
         Throughput beta = Radiance::One();
         bool specularBounce = false, anyNonSpecularBounces = false;
         int depth = 0;
         Float etaScale = 1;
-        Float prevBsdfPdf = 0;  // pdf (solid angle) of the BSDF sample that made ray
+        Float prevBsdfPdf = 0;
         int sheetCrossings = 0;
         LightSampleContext prevContext;
+        bool mayBranch = true;  // a branch splits no further
+    };
+
+    // The radiance arriving along ray at a path in state start.
+    Spectrum Trace(Ray ray, const PathState& start, SampledWavelengths& lambda, Sampler& sampler,
+                   VisibleSurface* visibleSurface) const {
+        Spectrum L{};
+        Throughput beta = start.beta;
+        bool specularBounce = start.specularBounce,
+             anyNonSpecularBounces = start.anyNonSpecularBounces;
+        int depth = start.depth;
+        Float etaScale = start.etaScale;
+        Float prevBsdfPdf =
+            start.prevBsdfPdf;  // pdf (solid angle) of the BSDF sample that made ray
+        int sheetCrossings = start.sheetCrossings;
+        LightSampleContext prevContext = start.prevContext;
 
         while (true) {
             std::optional<ShapeIntersection> si = scene.aggregate->Intersect(ray, Infinity);
@@ -120,7 +141,32 @@ class PathIntegrator {
             std::optional<BSDFSampleOf<Throughput>> bs = sheetSample;
             if (!bs) {
                 Float u = sampler.Get1D();
-                bs = bsdf.Sample_f<Throughput>(wo, u, sampler.Get2D());
+                Point2f u2 = sampler.Get2D();
+                if (start.mayBranch && depth == 1 && settings.splitDielectrics &&
+                    IsSmoothDielectric(bsdf.Flags())) {
+                    // A camera ray's first surface, a smooth dielectric: reflection traced as a
+                    // branch of its own, transmission here, each weighted by its Fresnel factor,
+                    // rather than one of them by chance (Integrator "bool splitdielectrics")
+                    std::optional<BSDFSampleOf<Throughput>> rs = bsdf.Sample_f<Throughput>(
+                        wo, u, u2, TransportMode::Radiance, BxDFReflTransFlags::Reflection);
+                    if (rs && rs->pdf > 0 && rs->f) {
+                        PathState branch;
+                        branch.beta = beta * (rs->f * (AbsDot(rs->wi, isect.shading.n) / rs->pdf));
+                        branch.specularBounce = true;
+                        branch.anyNonSpecularBounces = anyNonSpecularBounces;
+                        branch.depth = depth;
+                        branch.etaScale = etaScale;
+                        branch.prevBsdfPdf = rs->pdf;
+                        branch.sheetCrossings = sheetCrossings;
+                        branch.prevContext = LightSampleContext(isect);
+                        branch.mayBranch = false;
+                        L += Trace(isect.SpawnRay(rs->wi), branch, lambda, sampler, nullptr);
+                    }
+                    bs = bsdf.Sample_f<Throughput>(wo, u, u2, TransportMode::Radiance,
+                                                   BxDFReflTransFlags::Transmission);
+                } else {
+                    bs = bsdf.Sample_f<Throughput>(wo, u, u2);
+                }
             }
             if (!bs || bs->pdf == 0 || !bs->f) break;
             beta = beta * (bs->f * (AbsDot(bs->wi, isect.shading.n) / bs->pdf));

@@ -32,7 +32,7 @@ std::string SceneFeatures::ToString() const {
         "%d glass windows onto hot media, %d uniform ones integrated exactly along rays; "
         "absorption %s, lights sampled at %s on camera rays and after specular bounces); "
         "wavelengths %s, "
-        "integrator %s%s%s%s",
+        "camera rays %s at smooth dielectrics; integrator %s%s%s%s",
         onOff(thermalEmission), thermalLights, emissivityTables, emissivitySeconds,
         varyingTemperatures ? ", varying temperatures" : "", footprintMaterials, materials,
         onOff(aovs), singleWavelength ? 1 : NSpectrumSamples, singleWavelength ? "" : "s",
@@ -48,6 +48,7 @@ std::string SceneFeatures::ToString() const {
         thermalMedia, sampledMedia, mediumSamplerSeconds, glassWindows, exactEmissionMedia,
         weightAbsorption ? "weighting paths" : "ending paths",
         collisionLightSampling ? "collisions" : "scatterings", wavelengths,
+        splitDielectrics ? "split" : "choose a way",
         ambientOcclusion ? "ambientocclusion"
         : bidirectional  ? "bdpt"
         : volumetric     ? "volpath"

@@ -80,6 +80,10 @@ struct PathIntegratorSettings {
     // 1 / k, weighted by the probability of scattering there) rather than at real scatterings
     // (true, default; false: pbrt-v4's way)
     bool collisionLightSampling = true;
+    // kiln "bool splitdielectrics": where a camera ray first meets a smooth dielectric, path
+    // and volpath trace both its reflection and its transmission, each weighted by its Fresnel
+    // factor (true, default), rather than one of them chosen by chance (false, pbrt-v4's way)
+    bool splitDielectrics = true;
     // kiln "string wavelengthsampling": in scenes with hot matter, the film draws wavelengths
     // partly by the spectrum it radiates ("emission", default; render/scene_wavelengths.h)
     // or by pbrt-v4's visible density alone ("visible", for comparisons)
@@ -141,6 +145,9 @@ struct SceneFeatures {
     // Whether volpath samples lights at tentative collisions on camera rays
     // (PathIntegratorSettings::collisionLightSampling)
     bool collisionLightSampling = false;
+    // Whether camera rays split at their first smooth dielectric
+    // (PathIntegratorSettings::splitDielectrics)
+    bool splitDielectrics = false;
     // The share of the visible density (a thermal film: of its sensor's response) in the film's
     // wavelength distribution (1: it alone; less where hot matter's spectrum makes the rest:
     // scene_wavelengths.h)

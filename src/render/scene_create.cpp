@@ -692,10 +692,15 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
         scene.features.volumetric && scene.integrator.weightAbsorption;
     scene.features.collisionLightSampling =
         scene.features.volumetric && scene.integrator.collisionLightSampling;
+
     scene.wavelengths = CreateWavelengthDistribution(scene, &scene.features.wavelengthVisibleShare);
     scene.features.sensorResponseWavelengths = scene.job->film->Thermal() != nullptr;
     scene.job->film->SetWavelengths(scene.wavelengths);
     DecideBidirectional(scene, desc, diag);
+    // path and volpath split camera rays at smooth dielectrics; bdpt and ambient occlusion not
+    scene.features.splitDielectrics = scene.integrator.splitDielectrics &&
+                                      !scene.features.bidirectional &&
+                                      !scene.features.ambientOcclusion;
     if (!scene.integrator.volumetric && !scene.media.empty())
         diag.Warn(desc.integrator.loc,
                   "integrator \"path\" ignores participating media (as pbrt-v4); use "

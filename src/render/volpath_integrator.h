@@ -70,20 +70,43 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
     // As PathIntegrator::Li; the camera ray starts in the camera's medium.
     Spectrum Li(Ray ray, SampledWavelengths& lambda, Sampler& sampler,
                 VisibleSurface* visibleSurface) const {
-        Spectrum L{};
+        PathState start;
+        start.medium = scene.cameraMedium;
+        return Trace(ray, start, lambda, sampler, visibleSurface);
+    }
+
+  private:
+    // A path's state where it starts: at the camera, or where a smooth dielectric split it
+    struct PathState {
         Throughput beta = Radiance::One();
-        SampledSpectrum r_u(1.f), r_l(1.f);
+        SampledSpectrum r_u{1.f}, r_l{1.f};
         bool specularBounce = false, anyNonSpecularBounces = false;
         int depth = 0;
         Float etaScale = 1;
         int sheetCrossings = 0;
         LightSampleContext prevContext;
+        int medium = -1;
+        bool mayBranch = true;  // a branch splits no further
+    };
+
+    // The radiance arriving along ray at a path in state start.
+    Spectrum Trace(Ray ray, const PathState& start, SampledWavelengths& lambda, Sampler& sampler,
+                   VisibleSurface* visibleSurface) const {
+        Spectrum L{};
+        Throughput beta = start.beta;
+        SampledSpectrum r_u = start.r_u, r_l = start.r_l;
+        bool specularBounce = start.specularBounce,
+             anyNonSpecularBounces = start.anyNonSpecularBounces;
+        int depth = start.depth;
+        Float etaScale = start.etaScale;
+        int sheetCrossings = start.sheetCrossings;
+        LightSampleContext prevContext = start.prevContext;
         int prevScatterMedium = -1;  // the medium prevContext scattered in (-1: a surface)
         // On the first chord inside a hot medium after refracting into it through one of its
         // glass windows: the rescaled probability r_n of window sampling making the path
         bool windowChord = false;
         SampledSpectrum r_n(0.f);
-        int medium = scene.cameraMedium;
+        int medium = start.medium;
         const int maxDepth = settings.maxDepth;
 
         while (true) {
@@ -357,7 +380,34 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
             std::optional<BSDFSampleOf<Throughput>> bs = sheetSample;
             if (!bs) {
                 Float u = sampler.Get1D();
-                bs = bsdf.Sample_f<Throughput>(wo, u, sampler.Get2D());
+                Point2f u2 = sampler.Get2D();
+                if (start.mayBranch && depth == 1 && settings.splitDielectrics &&
+                    IsSmoothDielectric(bsdf.Flags())) {
+                    // A camera ray's first surface, a smooth dielectric: reflection traced as a
+                    // branch of its own, transmission here, each weighted by its Fresnel factor,
+                    // rather than one of them by chance (Integrator "bool splitdielectrics")
+                    std::optional<BSDFSampleOf<Throughput>> rs = bsdf.Sample_f<Throughput>(
+                        wo, u, u2, TransportMode::Radiance, BxDFReflTransFlags::Reflection);
+                    if (rs && rs->pdf > 0 && rs->f) {
+                        PathState branch;
+                        branch.beta = beta * (rs->f * (AbsDot(rs->wi, isect.shading.n) / rs->pdf));
+                        branch.r_u = r_u;
+                        branch.r_l = r_u / rs->pdf;
+                        branch.specularBounce = true;
+                        branch.anyNonSpecularBounces = anyNonSpecularBounces;
+                        branch.depth = depth;
+                        branch.etaScale = etaScale;
+                        branch.sheetCrossings = sheetCrossings;
+                        branch.prevContext = prevContext;
+                        branch.medium = isect.MediumAfter(rs->wi, medium);
+                        branch.mayBranch = false;
+                        L += Trace(isect.SpawnRay(rs->wi), branch, lambda, sampler, nullptr);
+                    }
+                    bs = bsdf.Sample_f<Throughput>(wo, u, u2, TransportMode::Radiance,
+                                                   BxDFReflTransFlags::Transmission);
+                } else {
+                    bs = bsdf.Sample_f<Throughput>(wo, u, u2);
+                }
             }
             if (!bs || bs->pdf == 0 || !bs->f) break;
             // Refracting into a hot medium through its glass window after a vertex that

@@ -17,8 +17,6 @@
 // light sampling is weighed against both (volume_equilibrium_test.cpp).
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <cstdio>
 #include <sstream>
 
 #include "render_test_util.h"
@@ -80,46 +78,15 @@ std::string ThinHaze(const std::string& integrator, int seed) {
                     "0.05 0.05] \"rgb sigma_s\" [0.2 0.25 0.3]\n");
 }
 
-// The scene rendered with `integrator` (the technique on, seeds 1, 2) and with `pbrtWay` (seeds
-// 3, 4): image means within 5 combined standard errors, and the technique's per-pixel variance
-// below maxRatio of the other's.
-template <typename SceneText>
-void ExpectSameImageWithLessNoise(const char* what, SceneText scene, const std::string& pbrtWay,
-                                  double maxRatio) {
-    testing::TwoSeedNoise on = testing::RenderTwoSeeds([&](int s) { return scene("", s); }, 1);
-    testing::TwoSeedNoise off =
-        testing::RenderTwoSeeds([&](int s) { return scene(pbrtWay, s); }, 3);
-    ASSERT_GT(on.mean, 0);
-    double ratio = on.variance / off.variance;
-    std::printf(
-        "%s: pbrt-v4's way's image mean %.5f of the technique's (standard errors %.5f "
-        "and %.5f), per-pixel variance ratio %.4f\n",
-        what, off.mean / on.mean, off.se / on.mean, on.se / on.mean, ratio);
-    EXPECT_NEAR(off.mean, on.mean, 5 * std::hypot(on.se, off.se)) << what;
-    EXPECT_LT(ratio, maxRatio) << what;
-}
-
-// On by default, off with the Integrator parameter `off` gives, and off where the command line's
-// option (RenderOptions::*option) says so whatever the scene says.
-template <typename SceneText>
-void ExpectSwitch(SceneText scene, const std::string& off, bool SceneFeatures::*feature,
-                  std::optional<bool> RenderOptions::*option) {
-    EXPECT_TRUE(testing::RenderText(scene("", 1)).scene->features.*feature);
-    EXPECT_FALSE(testing::RenderText(scene(off, 1)).scene->features.*feature);
-    RenderOptions options;
-    options.*option = false;
-    EXPECT_FALSE(testing::RenderText(scene("", 1), 0, options).scene->features.*feature);
-}
-
 TEST(AbsorptionWeights, OnByDefaultAndSwitchable) {
-    ExpectSwitch([](const std::string& i, int seed) { return ThinSmoke(i, seed); },
-                 "\"bool weightabsorption\" false", &SceneFeatures::weightAbsorption,
-                 &RenderOptions::weightAbsorption);
+    testing::ExpectSwitch([](const std::string& i, int seed) { return ThinSmoke(i, seed); },
+                          "\"bool weightabsorption\" false", &SceneFeatures::weightAbsorption,
+                          &RenderOptions::weightAbsorption);
 }
 
 TEST(AbsorptionWeights, SameImageAsEndingPathsWithLessNoiseBehindAThinMedium) {
     for (bool graded : {true, false})
-        ExpectSameImageWithLessNoise(
+        testing::ExpectSameImageWithLessNoise(
             graded ? "grid" : "homogeneous",
             [&](const std::string& integrator, int seed) {
                 return ThinSmoke(integrator, seed, graded);
@@ -128,12 +95,14 @@ TEST(AbsorptionWeights, SameImageAsEndingPathsWithLessNoiseBehindAThinMedium) {
 }
 
 TEST(CollisionLightSampling, OnByDefaultAndSwitchable) {
-    ExpectSwitch(ThinHaze, "\"bool collisionlightsampling\" false",
-                 &SceneFeatures::collisionLightSampling, &RenderOptions::collisionLightSampling);
+    testing::ExpectSwitch(ThinHaze, "\"bool collisionlightsampling\" false",
+                          &SceneFeatures::collisionLightSampling,
+                          &RenderOptions::collisionLightSampling);
 }
 
 TEST(CollisionLightSampling, SameImageAsScatteringsWithLessNoiseInAThinMedium) {
-    ExpectSameImageWithLessNoise("haze", ThinHaze, "\"bool collisionlightsampling\" false", 0.6);
+    testing::ExpectSameImageWithLessNoise("haze", ThinHaze, "\"bool collisionlightsampling\" false",
+                                          0.6);
 }
 
 }  // namespace

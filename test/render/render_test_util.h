@@ -5,7 +5,9 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -178,6 +180,36 @@ TwoSeedNoise RenderTwoSeeds(SceneText sceneText, int seed) {
     }
     double n = double(a.size()), variance = sq / (2 * n);
     return {(sumA + sumB) / (2 * n), std::sqrt(variance / (2 * n)), variance};
+}
+
+// The scene rendered with `integrator` (the technique on, seeds 1, 2) and with `pbrtWay` (seeds
+// 3, 4): image means within 5 combined standard errors, and the technique's per-pixel variance
+// below maxRatio of the other's.
+template <typename SceneText>
+void ExpectSameImageWithLessNoise(const char* what, SceneText scene, const std::string& pbrtWay,
+                                  double maxRatio) {
+    TwoSeedNoise on = RenderTwoSeeds([&](int s) { return scene("", s); }, 1);
+    TwoSeedNoise off = RenderTwoSeeds([&](int s) { return scene(pbrtWay, s); }, 3);
+    ASSERT_GT(on.mean, 0);
+    double ratio = on.variance / off.variance;
+    std::printf(
+        "%s: pbrt-v4's way's image mean %.5f of the technique's (standard errors %.5f "
+        "and %.5f), per-pixel variance ratio %.4f\n",
+        what, off.mean / on.mean, off.se / on.mean, on.se / on.mean, ratio);
+    EXPECT_NEAR(off.mean, on.mean, 5 * std::hypot(on.se, off.se)) << what;
+    EXPECT_LT(ratio, maxRatio) << what;
+}
+
+// On by default, off with the Integrator parameter `off` gives, and off where the command line's
+// option (RenderOptions::*option) says so whatever the scene says.
+template <typename SceneText>
+void ExpectSwitch(SceneText scene, const std::string& off, bool SceneFeatures::*feature,
+                  std::optional<bool> RenderOptions::*option) {
+    EXPECT_TRUE(RenderText(scene("", 1)).scene->features.*feature);
+    EXPECT_FALSE(RenderText(scene(off, 1)).scene->features.*feature);
+    RenderOptions options;
+    options.*option = false;
+    EXPECT_FALSE(RenderText(scene("", 1), 0, options).scene->features.*feature);
 }
 
 }  // namespace kiln::testing

@@ -184,6 +184,7 @@ constexpr std::string_view kNames[] = {
     "space",
     "specificheat",
     "splitdepth",
+    "splitdielectrics",
     "splitmethod",
     "stokes",
     "strategy",

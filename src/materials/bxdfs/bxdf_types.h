@@ -39,6 +39,10 @@ inline bool IsGlossy(BxDFFlags f) { return f & BxDFFlags::Glossy; }
 inline bool IsSpecular(BxDFFlags f) { return f & BxDFFlags::Specular; }
 inline bool IsNonSpecular(BxDFFlags f) { return f & (BxDFFlags::Diffuse | BxDFFlags::Glossy); }
 inline bool IsStraightThrough(BxDFFlags f) { return f & BxDFFlags::StraightThrough; }
+// Specular reflection and specular transmission and nothing else: a smooth dielectric interface
+inline bool IsSmoothDielectric(BxDFFlags f) {
+    return f == (BxDFFlags::SpecularReflection | BxDFFlags::SpecularTransmission);
+}
 
 // Which hemispheres a sampling call may choose from.
 enum class BxDFReflTransFlags : unsigned {
