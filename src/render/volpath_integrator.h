@@ -35,6 +35,7 @@
 #include "core/camera/sampler.h"
 #include "materials/bxdfs/hg_phase_function.h"
 #include "materials/subsurface_material.h"
+#include "render/dielectric_split.h"
 #include "render/radiance.h"
 #include "render/scene.h"
 #include "render/volpath_light_sampling.h"
@@ -381,14 +382,11 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
             if (!bs) {
                 Float u = sampler.Get1D();
                 Point2f u2 = sampler.Get2D();
-                if (start.mayBranch && depth == 1 && settings.splitDielectrics &&
-                    IsSmoothDielectric(bsdf.Flags())) {
-                    // A camera ray's first surface, a smooth dielectric: reflection traced as a
-                    // branch of its own, transmission here, each weighted by its Fresnel factor,
-                    // rather than one of them by chance (Integrator "bool splitdielectrics")
-                    std::optional<BSDFSampleOf<Throughput>> rs = bsdf.Sample_f<Throughput>(
-                        wo, u, u2, TransportMode::Radiance, BxDFReflTransFlags::Reflection);
-                    if (rs && rs->pdf > 0 && rs->f) {
+                if (SplitsAt(settings, start.mayBranch, depth, bsdf)) {
+                    // Reflection as a branch of its own, transmission here (dielectric_split.h)
+                    DielectricSplit<Throughput> split =
+                        SplitDielectric<Throughput>(bsdf, wo, u, u2);
+                    if (const auto& rs = split.reflection) {
                         PathState branch;
                         branch.beta = beta * (rs->f * (AbsDot(rs->wi, isect.shading.n) / rs->pdf));
                         branch.r_u = r_u;
@@ -403,8 +401,7 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
                         branch.mayBranch = false;
                         L += Trace(isect.SpawnRay(rs->wi), branch, lambda, sampler, nullptr);
                     }
-                    bs = bsdf.Sample_f<Throughput>(wo, u, u2, TransportMode::Radiance,
-                                                   BxDFReflTransFlags::Transmission);
+                    bs = split.transmission;
                 } else {
                     bs = bsdf.Sample_f<Throughput>(wo, u, u2);
                 }
