@@ -688,19 +688,18 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
         scene.exactEmissionMedia = ExactEmissionMedia(scene.media);
     scene.features.exactEmissionMedia =
         int(std::count(scene.exactEmissionMedia.begin(), scene.exactEmissionMedia.end(), 1));
-    scene.features.weightAbsorption =
-        scene.features.volumetric && scene.integrator.weightAbsorption;
-    scene.features.collisionLightSampling =
-        scene.features.volumetric && scene.integrator.collisionLightSampling;
-
     scene.wavelengths = CreateWavelengthDistribution(scene, &scene.features.wavelengthVisibleShare);
     scene.features.sensorResponseWavelengths = scene.job->film->Thermal() != nullptr;
     scene.job->film->SetWavelengths(scene.wavelengths);
     DecideBidirectional(scene, desc, diag);
-    // path and volpath split camera rays at smooth dielectrics; bdpt and ambient occlusion not
-    scene.features.splitDielectrics = scene.integrator.splitDielectrics &&
-                                      !scene.features.bidirectional &&
-                                      !scene.features.ambientOcclusion;
+    // What volpath does in media, and path and volpath at smooth dielectrics; bdpt and ambient
+    // occlusion do neither
+    const bool unidirectional = !scene.features.bidirectional && !scene.features.ambientOcclusion;
+    scene.features.weightAbsorption =
+        unidirectional && scene.features.volumetric && scene.integrator.weightAbsorption;
+    scene.features.collisionLightSampling =
+        unidirectional && scene.features.volumetric && scene.integrator.collisionLightSampling;
+    scene.features.splitDielectrics = unidirectional && scene.integrator.splitDielectrics;
     if (!scene.integrator.volumetric && !scene.media.empty())
         diag.Warn(desc.integrator.loc,
                   "integrator \"path\" ignores participating media (as pbrt-v4); use "
