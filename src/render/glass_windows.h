@@ -4,9 +4,10 @@
 // Shadow rays do not cross a dielectric, so light sampling cannot find a medium glowing inside
 // glass, and paths reach it only by a chance refraction. Behind one smooth interface no
 // manifold search is needed: a point s sampled on the window fixes, by refraction, the ray
-// into the medium, and the emission along that first inner chord is estimated by ratio
-// tracking. volpath weighs this against the path's own refraction by MIS over the direction
-// to s (VolPathLightSampling::SampleWindowLd). Windows are chosen in proportion to their area;
+// into the medium, and the emission along that first inner chord is integrated exactly in a
+// uniform medium (Medium::UniformSegmentEmission) and estimated by ratio tracking elsewhere.
+// volpath weighs this against the path's own refraction by MIS over the direction to s
+// (VolPathLightSampling::SampleWindowLd). Windows are chosen in proportion to their area;
 // from a point where the bounding sphere of all windows onto the same medium subtends a solid
 // angle Omega above kSolidAngleBudget, the choice is kept only with probability
 // kSolidAngleBudget / Omega (paths refract into so large a body often by themselves); the

@@ -14,7 +14,8 @@
 // interface surfaces and estimate transmittance by ratio tracking. Media emit at every
 // tentative collision (sigma_a Le, or thermal emission: medium_emission.h), except where a
 // uniform medium's emission along the whole segment is integrated exactly (Integrator "bool
-// exactmediumemission", on segments no light sampling could have found). Light sampling
+// exactmediumemission", on segments no light sampling could have found, and on chords behind
+// glass windows, weighted against window sampling as a whole). Light sampling
 // (volpath_light_sampling.h) also samples kiln's emitters besides lights, by default
 // (Integrator "string mediumemission" "sampled"): a point of a hot medium by emitted power,
 // and a hot medium inside glass through its glass ("bool glasswindows"); emission the path
@@ -119,9 +120,11 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
                 // A uniform medium's emission along the whole segment, integrated exactly
                 // where no light sampling strategy could have found it (MIS would weigh it
                 // point by point): camera rays, after specular bounces, from a point
-                // scattering in the medium itself, or a medium not sampled as a light
+                // scattering in the medium itself, or a medium not sampled as a light; and on
+                // a window chord, which window sampling integrates the same way (the two are
+                // weighted against each other as a whole, r_n being window sampling's)
                 bool emissionDone = false;
-                if (depth < maxDepth && !windowChord && !scene.exactEmissionMedia.empty() &&
+                if (depth < maxDepth && !scene.exactEmissionMedia.empty() &&
                     scene.exactEmissionMedia[size_t(medium)] &&
                     (depth == 0 || specularBounce ||
                      !MediumEmissionSampled(medium, prevScatterMedium))) {
@@ -129,9 +132,13 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
                             scene.media[size_t(medium)].UniformSegmentEmission(tMax * Length(ray.d),
                                                                                lambda)) {
                         emissionDone = true;
+                        SampledSpectrum r = windowChord ? r_u + r_n : r_u;
+                        if (windowChord && settings.strategy == LightStrategy::LightOnly)
+                            *E = SampledSpectrum(0.f);
                         if (*E)
                             L += Radiance::Apply(
-                                beta, Radiance::Unpolarized(*E / WavelengthMean(r_u, lambda)));
+                                beta, Radiance::Unpolarized(*E / WavelengthMean(r, lambda)));
+                        windowChord = false;
                     }
                 }
                 // Light sampling at tentative collisions rather than at real scatterings, on

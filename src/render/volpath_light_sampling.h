@@ -285,10 +285,11 @@ class VolPathLightSampling {
     // Light sampling of a medium glowing inside glass (glass_windows.h): a point s on one of
     // its windows, the window's specular transmission there (f cos of its transmission
     // sample, P_T its probability in a path), and the emission along the refracted chord
-    // inside by ratio tracking. Each emission point is weighted by spectral MIS against the
-    // path that refracts at s itself, whose density is the scattering pdf times P_T (in the
-    // same measure: directions at intr) and whose null collisions have sigma_n's density
-    // rather than sigma_maj's.
+    // inside: integrated exactly in a uniform medium and weighted as a whole by spectral MIS
+    // against the path that refracts at s itself (which integrates it the same way), whose
+    // density is the scattering pdf times P_T (in the same measure: directions at intr);
+    // elsewhere by ratio tracking, each emission point weighted against that path, whose null
+    // collisions have sigma_n's density rather than sigma_maj's.
     Spectrum SampleWindowLd(const Interaction& intr, const BSDF* bsdf, const HGPhaseFunction* phase,
                             int medium, const SampledWavelengths& lambda, Sampler& sampler,
                             const Throughput& beta, const SampledSpectrum& r_p) const {
@@ -335,10 +336,21 @@ class VolPathLightSampling {
             // Unoccluded up to the window, arriving from its cold side
             std::optional<Transmission> tr = Transmit(intr, surface, medium, si, lambda);
             if (!tr || tr->medium == w.hot || si.MediumAfter(-wi, -2) != tr->medium) return {};
-            // The chord inside, by ratio tracking with emission at every tentative collision
+            // The chord inside: its emission integrated exactly in a uniform medium (as the
+            // path that refracts at s integrates it), else by ratio tracking with emission at
+            // every tentative collision
             Ray chord = si.SpawnRay(bt->wi);
             std::optional<ShapeIntersection> end = scene.aggregate->Intersect(chord, Infinity);
             SampledSpectrum Rl = tr->r_l * r_p * q, Ru = tr->r_u * r_p * (scatterPDF * bt->pdf);
+            Float denomExact = settings.strategy == LightStrategy::LightOnly
+                                   ? WavelengthMean(Rl, lambda)
+                                   : WavelengthMean(Rl + Ru, lambda);
+            if (!(denomExact > 0)) return {};
+            if (!scene.exactEmissionMedia.empty() && scene.exactEmissionMedia[size_t(w.hot)])
+                if (std::optional<SampledSpectrum> E =
+                        scene.media[size_t(w.hot)].UniformSegmentEmission(
+                            (end ? end->tHit : Infinity) * Length(chord.d), lambda))
+                    return beta * f_hat * tr->T_sheets * tr->T_ray * F * (*E / denomExact);
             SampledSpectrum Tr(1.f), emitted(0.f);
             RNG rng(Hash(chord.o), Hash(chord.d));
             scene.media[size_t(w.hot)].SampleT_maj(

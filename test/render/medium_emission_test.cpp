@@ -2,7 +2,8 @@
 // scattering grid lighting a floor renders the same image whether its emission is sampled
 // with MIS, by light sampling alone, by path sampling alone or by tracking alone (pbrt-v4's
 // way), and sampling it makes the floor far less noisy than tracking does. The same for a
-// hot melt inside a glass ball, sampled through the glass (glass windows) or not.
+// hot melt inside a glass ball, sampled through the glass (glass windows) or not, and with the
+// emission along the chord behind a window integrated exactly or met at collisions.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,13 +24,14 @@ std::string GlassBall() {
 }
 
 std::string SmallFlame(const std::string& strategy, const std::string& emission, int seed,
-                       bool glass = false, bool windows = true) {
+                       bool glass = false, bool windows = true,
+                       const std::string& integrator = "") {
     std::ostringstream s;
     s << "Film \"rgb\" \"integer xresolution\" 16 \"integer yresolution\" 16\n"
       << "Sampler \"zsobol\" \"integer pixelsamples\" 256 \"integer seed\" " << seed << "\n"
       << "Integrator \"volpath\" \"integer maxdepth\" 4 \"string strategy\" \"" << strategy
       << "\" \"string mediumemission\" \"" << emission << "\" \"bool glasswindows\" "
-      << (windows ? "true" : "false")
+      << (windows ? "true" : "false") << " " << integrator
       << "\n"
       // The floor in front of the flame, the flame itself out of view
       << "LookAt 0 1.2 -2.5  0 0 -1  0 1 0\nCamera \"perspective\" \"float fov\" 30\n"
@@ -127,6 +129,18 @@ TEST(MediumEmission, HotMeltInGlassRendersTheSameImageThroughItsWindows) {
     double ratio = mis.variance / off.variance;
     std::printf("per-pixel variance, windows / off: %.4f\n", ratio);
     EXPECT_LT(ratio, 0.5);
+}
+
+// A uniform melt's emission along the chord a window opens onto is integrated exactly, by
+// window sampling and by the path that refracts there alike (weighted against each other as a
+// whole), rather than met at collisions: the same floor, far less noisy
+TEST(MediumEmission, WindowChordsIntoUniformMeltsAreIntegratedExactly) {
+    testing::ExpectSameImageWithLessNoise(
+        "floor lit through the glass",
+        [](const std::string& integrator, int seed) {
+            return SmallFlame("mis", "sampled", seed, true, true, integrator);
+        },
+        "\"bool exactmediumemission\" false", 0.5);
 }
 
 }  // namespace
