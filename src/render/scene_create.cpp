@@ -461,10 +461,11 @@ void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<Sce
         if (!made.shapes.empty()) {
             if (target < 0)
                 aggregate.Add(made.shapes, made.heat.material, lights, made.heat.emission,
-                              made.media, made.alpha, windows);
+                              made.media, made.alpha, windows, made.interfaceMaterial);
             else
                 aggregate.AddToInstanceDefinition(target, made.shapes, made.heat.material,
-                                                  made.heat.emission, made.media, made.alpha);
+                                                  made.heat.emission, made.media, made.alpha,
+                                                  made.interfaceMaterial);
         }
         if (s.motion) aggregate.AddAnimatedInstance(target, *s.motion, definition);
     };

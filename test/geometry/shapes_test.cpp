@@ -118,6 +118,44 @@ TEST(Triangle, SliverHasFiniteNormal) {
     EXPECT_NEAR(Length(si.n), 1, 1e-5f);
 }
 
+// A medium boundary's hit carries the point and the normal, oriented as the full interaction
+// orients it (by winding, orientation, handedness and vertex normals), so that a ray crossing
+// it picks the same medium
+TEST(Triangle, BoundaryInteractionHasTheFullInteractionsPointAndNormal) {
+    RNG rng(3);
+    auto random = [&](Float scale) {
+        return Vector3f(rng.UniformFloat() - 0.5f, rng.UniformFloat() - 0.5f,
+                        rng.UniformFloat() - 0.5f) *
+               scale;
+    };
+    for (int mesh = 0; mesh < 64; ++mesh) {
+        bool reverse = mesh & 1, withNormals = mesh & 2;
+        Transform t = (mesh & 4) ? Scale(-1, 1, 1) : Transform();
+        std::vector<Point3f> P;
+        std::vector<Normal3f> N;
+        for (int v = 0; v < 3; ++v) P.push_back(Point3f(random(4)));
+        if (mesh % 16 == 15) P[2] = P[0] + (P[1] - P[0]) * 2.f + Vector3f(0, 0, 1e-30f);  // sliver
+        if (withNormals)
+            for (int v = 0; v < 3; ++v) N.push_back(Normal3f(random(2)));
+        TriangleMesh m(t, reverse, {0, 1, 2}, P, N, {}, {}, {5});
+        if (m.NumTriangles() == 0) continue;
+        Triangle tri(&m, 0);
+        for (int k = 0; k < 8; ++k) {
+            Float b1 = rng.UniformFloat(), b2 = rng.UniformFloat() * (1 - b1);
+            std::array<Float, 3> b = {1 - b1 - b2, b1, b2};
+            Vector3f wo = random(2);
+            SurfaceInteraction full = tri.InteractionFromBarycentrics(b, 0.25f, wo);
+            SurfaceInteraction boundary = tri.BoundaryInteraction(b, 0.25f, wo);
+            EXPECT_EQ(boundary.p, full.p);
+            EXPECT_EQ(boundary.n, full.n) << "mesh " << mesh;
+            EXPECT_EQ(boundary.shading.n, full.shading.n) << "mesh " << mesh;
+            EXPECT_EQ(boundary.wo, full.wo);
+            EXPECT_EQ(boundary.time, full.time);
+            EXPECT_EQ(boundary.faceIndex, 5);
+        }
+    }
+}
+
 TEST(Triangle, DegenerateTrianglesAreDropped) {
     std::vector<Point3f> P = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}};
     TriangleMesh mesh(Transform(), false, {0, 1, 2, 0, 1, 3, 1, 1, 3}, P, {}, {}, {}, {});

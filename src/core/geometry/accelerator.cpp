@@ -41,6 +41,7 @@ struct GeomRecord {
     const ThermalEmission* thermal = nullptr;
     MediumInterface media;
     const AlphaMask* alpha = nullptr;        // cut-outs; nullptr: opaque
+    bool boundaryOnly = false;               // Triangles: hits only for crossing media
     Transform renderFromInstance;            // Instance
     std::unique_ptr<MotionInstance> motion;  // Motion
 };
@@ -193,8 +194,9 @@ std::optional<ShapeIntersection> RecordHit(const GeomRecord& rec, const RTCRayHi
         int tri = rec.triIndices.empty() ? int(prim) : rec.triIndices[prim];
         Float b1 = Clamp(rh.hit.u, 0, 1), b2 = Clamp(rh.hit.v, 0, 1);
         if (b1 + b2 > 1) b1 /= (b1 + b2), b2 = 1 - b1;
-        si.intr =
-            Triangle(rec.mesh, tri).InteractionFromBarycentrics({1 - b1 - b2, b1, b2}, time, -d);
+        Triangle t(rec.mesh, tri);
+        si.intr = rec.boundaryOnly ? t.BoundaryInteraction({1 - b1 - b2, b1, b2}, time, -d)
+                                   : t.InteractionFromBarycentrics({1 - b1 - b2, b1, b2}, time, -d);
         si.tHit = rh.ray.tfar;
     } else if (rec.kind == GeomRecord::Kind::Curves) {
         si.intr = rec.curves->InteractionAt(int(prim), rh.hit.u, o, d, rh.ray.tfar, time);
@@ -340,8 +342,8 @@ struct Accelerator::Impl {
     }
     void AddShapes(SceneBVH& s, std::span<const Shape> shapes, const Material* material,
                    std::span<const int> areaLights, const ThermalEmission* thermal,
-                   MediumInterface media, const AlphaMask* alpha,
-                   std::span<const int> windows = {});
+                   MediumInterface media, const AlphaMask* alpha, std::span<const int> windows = {},
+                   bool boundaryOnly = false);
     std::vector<int> RemoveUntraceableInstances();
 };
 
@@ -349,7 +351,8 @@ struct Accelerator::Impl {
 void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
                                   const Material* material, std::span<const int> areaLights,
                                   const ThermalEmission* thermal, MediumInterface media,
-                                  const AlphaMask* alpha, std::span<const int> windows) {
+                                  const AlphaMask* alpha, std::span<const int> windows,
+                                  bool boundaryOnly) {
     primitives += shapes.size();
     for (const Shape& shape : shapes) s.bounds = Union(s.bounds, shape.Bounds());
     bool haveLights = !areaLights.empty();
@@ -377,6 +380,7 @@ void Accelerator::Impl::AddShapes(SceneBVH& s, std::span<const Shape> shapes,
         rec->thermal = thermal;
         rec->media = media;
         rec->alpha = alpha;
+        rec->boundaryOnly = boundaryOnly && !haveLights && !thermal && windows.empty();
         // All of the mesh's triangles in order (the usual case): Embree shares the mesh's
         // index buffer and no per-triangle index is kept
         bool identity = int(idx.size()) == mesh->nTriangles;
@@ -466,13 +470,13 @@ Accelerator::~Accelerator() {
 void Accelerator::Add(std::span<const Shape> shapes, const Material* material,
                       std::span<const int> lightIndices, const ThermalEmission* thermal,
                       MediumInterface media, const AlphaMask* alpha,
-                      std::span<const int> windowIndices) {
+                      std::span<const int> windowIndices, bool boundaryOnly) {
     if (!lightIndices.empty() && lightIndices.size() != shapes.size())
         throw std::invalid_argument("Accelerator::Add: need one light per shape or none");
     if (!windowIndices.empty() && windowIndices.size() != shapes.size())
         throw std::invalid_argument("Accelerator::Add: need one window index per shape or none");
-    impl->AddShapes(impl->top, shapes, material, lightIndices, thermal, media, alpha,
-                    windowIndices);
+    impl->AddShapes(impl->top, shapes, material, lightIndices, thermal, media, alpha, windowIndices,
+                    boundaryOnly);
 }
 
 int Accelerator::NewInstanceDefinition() {
@@ -482,8 +486,10 @@ int Accelerator::NewInstanceDefinition() {
 
 void Accelerator::AddToInstanceDefinition(int definition, std::span<const Shape> shapes,
                                           const Material* material, const ThermalEmission* thermal,
-                                          MediumInterface media, const AlphaMask* alpha) {
-    impl->AddShapes(impl->definitions.at(definition), shapes, material, {}, thermal, media, alpha);
+                                          MediumInterface media, const AlphaMask* alpha,
+                                          bool boundaryOnly) {
+    impl->AddShapes(impl->definitions.at(definition), shapes, material, {}, thermal, media, alpha,
+                    {}, boundaryOnly);
 }
 
 void Accelerator::AddInstance(int definition, const Transform& renderFromInstance) {

@@ -50,16 +50,20 @@ class Accelerator {
     // SurfaceInteraction. alpha (nullptr: opaque) cuts the shapes out where it is below 1, for
     // closest hits and shadow rays alike (alpha_mask.h); it must outlive the accelerator.
     // windowIndices: empty, or one per shape, reported as SurfaceInteraction::windowIndex.
+    // boundaryOnly: the shapes only separate media (an interface material, no light, not
+    // hot); their triangles' hits then report what crossing needs and no more
+    // (Triangle::BoundaryInteraction).
     void Add(std::span<const Shape> shapes, const Material* material,
              std::span<const int> lightIndices, const ThermalEmission* thermal,
              MediumInterface media = {}, const AlphaMask* alpha = nullptr,
-             std::span<const int> windowIndices = {});
+             std::span<const int> windowIndices = {}, bool boundaryOnly = false);
     // Object instancing: a definition's shapes are given in the definition's own space (they
     // can glow, but are no lights).
     int NewInstanceDefinition();
     void AddToInstanceDefinition(int definition, std::span<const Shape> shapes,
                                  const Material* material, const ThermalEmission* thermal,
-                                 MediumInterface media = {}, const AlphaMask* alpha = nullptr);
+                                 MediumInterface media = {}, const AlphaMask* alpha = nullptr,
+                                 bool boundaryOnly = false);
     // Places a definition.
     void AddInstance(int definition, const Transform& renderFromInstance);
     // Places a definition that moves over the shutter (pbrt-v4's AnimatedPrimitive): each ray

@@ -226,6 +226,37 @@ SurfaceInteraction Triangle::InteractionFromBarycentrics(const std::array<Float,
     return isect;
 }
 
+SurfaceInteraction Triangle::BoundaryInteraction(const std::array<Float, 3>& b, Float time,
+                                                 Vector3f wo) const {
+    auto vi = mesh->VertexIndices(triIndex);
+    Point3f p0 = mesh->p[vi[0]], p1 = mesh->p[vi[1]], p2 = mesh->p[vi[2]];
+    SurfaceInteraction isect;
+    isect.p = Point3f(b[0] * Vector3f(p0) + b[1] * Vector3f(p1) + b[2] * Vector3f(p2));
+    isect.wo = SafeNormalize(wo);
+    isect.time = time;
+    // The geometric normal as InteractionFromBarycentrics computes and orients it
+    Normal3f nGeom(SafeNormalize(Cross(p0 - p2, p1 - p2)));
+    if (nGeom == Normal3f(0, 0, 0)) {
+        Vector3f ng = SafeNormalize(Cross(p2 - p0, p1 - p0));
+        nGeom = ng == Vector3f(0, 0, 0) ? Normal3f(0, 0, -1) : Normal3f(-ng);
+    }
+    bool flip = mesh->reverseOrientation ^ mesh->transformSwapsHandedness;
+    isect.n = isect.shading.n = flip ? -nGeom : nGeom;
+    if (!mesh->n.empty()) {
+        Normal3f ns =
+            SafeNormalize(b[0] * mesh->n[vi[0]] + b[1] * mesh->n[vi[1]] + b[2] * mesh->n[vi[2]]);
+        if (ns != Normal3f(0, 0, 0)) {
+            isect.shading.n = ns;
+            isect.n = FaceForward(isect.n, Vector3f(ns));
+        }
+    }
+    isect.faceIndex = mesh->faceIndices.empty() ? 0 : mesh->faceIndices[triIndex];
+    isect.mesh = mesh;
+    isect.triIndex = triIndex;
+    isect.b = b;
+    return isect;
+}
+
 // Triangle sampling
 // The surface point at barycentrics b: position, geometric normal (facing the interpolated
 // shading normal when the mesh has normals, else flipped by orientation) and uv.

@@ -92,6 +92,12 @@ class Triangle {
     // Full differential geometry at barycentrics b (pbrt-v4 InteractionFromIntersection).
     SurfaceInteraction InteractionFromBarycentrics(const std::array<Float, 3>& b, Float time,
                                                    Vector3f wo) const;
+    // What a ray crossing a medium boundary (an interface surface) needs at barycentrics b:
+    // the point, the geometric normal oriented as InteractionFromBarycentrics orients it (so
+    // SurfaceInteraction::MediumAfter picks the same side), wo, time and the triangle; no
+    // parameterisation, derivatives or shading frame (shading.n = n).
+    SurfaceInteraction BoundaryInteraction(const std::array<Float, 3>& b, Float time,
+                                           Vector3f wo) const;
 
     const TriangleMesh* GetMesh() const { return mesh; }
     int TriangleIndex() const { return triIndex; }
