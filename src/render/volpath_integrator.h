@@ -24,7 +24,7 @@
 // handled as in PathIntegrator: emission computed from the BSDF at the hit, and thin sheets
 // crossed by shadow rays (a path straight through one keeps its MIS state and depth, as at an
 // interface). A path transmitted through a "subsurface" boundary continues from an exit point
-// that pbrt-v4's BSSRDF samples (SampleSubsurfaceExit, materials/subsurface_material.h).
+// that pbrt-v4's BSSRDF samples (SampleSubsurfaceExit, render/subsurface_exit.h).
 //
 // Scenes without media or subsurface materials run PathIntegrator (renderer.cpp); kiln
 // --generic volpath runs this one anyway, for comparisons.
@@ -35,10 +35,10 @@
 #include "base/rng.h"
 #include "core/camera/sampler.h"
 #include "materials/bxdfs/hg_phase_function.h"
-#include "materials/subsurface_material.h"
 #include "render/dielectric_split.h"
 #include "render/radiance.h"
 #include "render/scene.h"
+#include "render/subsurface_exit.h"
 #include "render/volpath_light_sampling.h"
 
 namespace kiln {
@@ -441,7 +441,7 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
             if (bs->IsTransmission() && scene.features.subsurface > 0)
                 if (const auto* material = isect.material->GetIf<SubsurfaceMaterial>()) {
                     std::optional<SubsurfaceExit> exit =
-                        SampleSubsurfaceExit(*material, isect, ray.time, lambda, sampler);
+                        SampleSubsurfaceExit(scene, *material, isect, ray.time, lambda, sampler);
                     if (!exit) break;
                     beta = beta * Radiance::Depolarizing(exit->weight);
                     r_u *= exit->r_uFactor;
@@ -497,48 +497,6 @@ class VolPathIntegrator : private VolPathLightSampling<RadianceType> {
         r_n *= k;
     }
     static constexpr Float kRescaleAbove = 1e16f;
-
-    // Where a path below a subsurface boundary leaves the material, with the estimator's
-    // factors: weight = Sp / (p_choice pdf_hero) and r_u's factor pdf / pdf_hero (spectral MIS
-    // over the wavelengths' exit densities, pbrt-v4)
-    struct SubsurfaceExit {
-        SurfaceInteraction intr;  // wo: the shading normal (the exit BxDF's outside)
-        SampledSpectrum weight, r_uFactor;
-    };
-
-    // pbrt-v4's BSSRDF sampling: a probe segment (TabulatedBSSRDF::SampleSp), intersected with
-    // the scene; one of its hits on the same material chosen uniformly (weighted reservoir
-    // sampling with unit weights), then Sp and the density of that exit point.
-    std::optional<SubsurfaceExit> SampleSubsurfaceExit(const SubsurfaceMaterial& material,
-                                                       const SurfaceInteraction& isect, Float time,
-                                                       const SampledWavelengths& lambda,
-                                                       Sampler& sampler) const {
-        TabulatedBSSRDF bssrdf = material.GetBSSRDF(MaterialEvalContext(isect), lambda);
-        Float uc = sampler.Get1D();
-        Point2f up = sampler.Get2D();
-        std::optional<BSSRDFProbeSegment> probe = bssrdf.SampleSp(uc, up);
-        if (!probe) return std::nullopt;
-        RNG rng(Hash(sampler.Get1D()));
-        std::optional<SurfaceInteraction> chosen;
-        int hits = 0;
-        Interaction base(probe->p0, Normal3f(), Point2f(), Vector3f(), time);
-        // The probe's hits, each a candidate (a path along thousands of them stops there)
-        for (int crossings = 0; crossings < kMaxInterfaceCrossings; ++crossings) {
-            Ray r = base.SpawnRayTo(probe->p1);
-            if (r.d == Vector3f(0, 0, 0)) break;
-            std::optional<ShapeIntersection> si = scene.aggregate->Intersect(r, 1);
-            if (!si) break;
-            base = si->intr;
-            if (si->intr.material != isect.material) continue;
-            if (rng.UniformFloat() * Float(++hits) < 1) chosen = si->intr;
-        }
-        if (!chosen) return std::nullopt;
-        SampledSpectrum Sp = bssrdf.Sp(chosen->p), pdf = bssrdf.PDF_Sp(chosen->p, chosen->n);
-        if (!Sp || !pdf || pdf[0] == 0) return std::nullopt;
-        SubsurfaceExit exit{*chosen, Sp * (Float(hits) / pdf[0]), pdf / pdf[0]};
-        exit.intr.wo = Vector3f(exit.intr.shading.n);
-        return exit;
-    }
 };
 
 }  // namespace kiln
