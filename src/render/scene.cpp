@@ -29,7 +29,7 @@ std::string SceneFeatures::ToString() const {
         "light sampler %s; area lights %s, environment light %s, dispersion %s; shadow rays "
         "cross %d sheet material%s; subsurface materials %d (%d BSSRDF tables in %.3f s); "
         "polarisation %s; media %d (%d emissive, %d thermal, %d sampled as lights in %.3f s, "
-        "%d glass windows onto hot media, %d uniform ones integrated exactly along rays; "
+        "%d glass windows onto hot media%s, %d uniform ones integrated exactly along rays; "
         "absorption %s, lights sampled at %s on camera rays and after specular bounces); "
         "wavelengths %s, "
         "camera rays %s at smooth dielectrics; integrator %s%s%s%s",
@@ -45,8 +45,9 @@ std::string SceneFeatures::ToString() const {
         onOff(areaLights), onOff(environmentLight), onOff(dispersion), sheets,
         sheets == 1 ? "" : "s", subsurface, bssrdfTables, bssrdfSeconds,
         polarized ? "on (Stokes vectors, Mueller matrices)" : "off", media, emissiveMedia,
-        thermalMedia, sampledMedia, mediumSamplerSeconds, glassWindows, exactEmissionMedia,
-        weightAbsorption ? "weighting paths" : "ending paths",
+        thermalMedia, sampledMedia, mediumSamplerSeconds, glassWindows,
+        glassWindowsAgainstEnvironment ? " (weighed against the environment's radiance)" : "",
+        exactEmissionMedia, weightAbsorption ? "weighting paths" : "ending paths",
         collisionLightSampling ? "collisions" : "scatterings", wavelengths,
         splitDielectrics ? "split" : "choose a way",
         ambientOcclusion ? "ambientocclusion"

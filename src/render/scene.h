@@ -136,6 +136,7 @@ struct SceneFeatures {
     // Emissive media volpath samples as light sources (MediumEmissionSampler), and the time
     // estimating their emission took
     int sampledMedia = 0, glassWindows = 0;
+    bool glassWindowsAgainstEnvironment = false;  // GlassWindows::WeighAgainstEnvironment
     // Emissive media whose emission volpath integrates exactly along ray segments
     // (Scene::exactEmissionMedia)
     int exactEmissionMedia = 0;

@@ -680,11 +680,16 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
                     emitters, diag);
     PreprocessLights(scene, lightOrigins);
     CreateLightSampler(scene);
+    if (scene.glassWindows)
+        scene.glassWindows->WeighAgainstEnvironment(
+            scene.media, GlassWindows::EnvironmentRadiance(scene.lights, scene.infiniteLights));
     scene.varyingThermalLights = emitters.VaryingLights();
     scene.features = DecideFeatures(scene, desc, shapes, materials, emitters, options);
     if (scene.features.volumetric) CreateMediumEmitters(scene, shapes);
     scene.features.sampledMedia = scene.mediumEmission ? scene.mediumEmission->Emitters() : 0;
     scene.features.glassWindows = scene.glassWindows ? scene.glassWindows->Count() : 0;
+    scene.features.glassWindowsAgainstEnvironment =
+        scene.glassWindows && scene.glassWindows->WeighedAgainstEnvironment();
     if (scene.features.volumetric && scene.integrator.exactMediumEmission)
         scene.exactEmissionMedia = ExactEmissionMedia(scene.media);
     scene.features.exactEmissionMedia =

@@ -143,5 +143,37 @@ TEST(MediumEmission, WindowChordsIntoUniformMeltsAreIntegratedExactly) {
         "\"bool exactmediumemission\" false", 0.5);
 }
 
+// Under an environment much brighter than a small glow, window sampling is kept only where
+// the glow would add noise comparable to the environment's (GlassWindows::
+// WeighAgainstEnvironment): less of it at the floor, and the same image as without windows
+TEST(MediumEmission, WindowsAreWeighedAgainstTheEnvironment) {
+    const std::string sky = "LightSource \"infinite\" \"rgb L\" [0.02 0.02 0.02]\n";
+    auto scene = [&](bool withSky, bool windows, int seed) {
+        return SmallFlame("mis", "sampled", seed, true, windows) + (withSky ? sky : "");
+    };
+    testing::RenderedScene dark = testing::RenderText(scene(false, true, 1));
+    testing::RenderedScene lit = testing::RenderText(scene(true, true, 1));
+    ASSERT_TRUE(dark.scene->glassWindows && lit.scene->glassWindows);
+    EXPECT_FALSE(dark.scene->features.glassWindowsAgainstEnvironment);
+    EXPECT_TRUE(lit.scene->features.glassWindowsAgainstEnvironment);
+    // The floor half a unit in front of the ball (which subtends about 0.09 sr there)
+    Point3f floor(0, 0, -0.5f);
+    Float keepDark = dark.scene->glassWindows->PMF(0, floor),
+          keepLit = lit.scene->glassWindows->PMF(0, floor);
+    std::printf("window kept at the floor with probability %.4f (dark), %.4f (under the sky)\n",
+                keepDark, keepLit);
+    EXPECT_FLOAT_EQ(keepDark, 1);
+    EXPECT_GT(keepLit, 0.02f);
+    EXPECT_LT(keepLit, 0.5f);
+    // Unbiased: the same image as finding the glow by chance refractions alone
+    testing::TwoSeedNoise on =
+        testing::RenderTwoSeeds([&](int s) { return scene(true, true, s); }, 21);
+    testing::TwoSeedNoise off =
+        testing::RenderTwoSeeds([&](int s) { return scene(true, false, s); }, 23);
+    std::printf("under the sky: windows off / on image mean %.5f (standard errors %.5f, %.5f)\n",
+                off.mean / on.mean, off.se / on.mean, on.se / on.mean);
+    EXPECT_NEAR(off.mean, on.mean, 5 * std::hypot(on.se, off.se));
+}
+
 }  // namespace
 }  // namespace kiln
