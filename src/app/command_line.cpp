@@ -117,6 +117,9 @@ std::string UsageText() {
            "  --split-dielectrics S  a camera ray's first smooth dielectric: both reflection\n"
            "                        and transmission traced (on, default) or one by chance\n"
            "                        (off, as pbrt-v4)\n"
+           "  --skip-uniform-environment S  light samples go to the lights they can draw\n"
+           "                        from, not to a uniform environment that BSDF sampling\n"
+           "                        covers (on, default) or to it too (off, as pbrt-v4)\n"
            "  --wavelength-sampling W  wavelengths in scenes with hot matter: partly by the\n"
            "                        spectrum it radiates (emission, default) or by the\n"
            "                        visible density alone (visible, as pbrt-v4)\n"
@@ -183,6 +186,7 @@ const char* const kOptions[] = {"--help",
                                 "--weight-absorption",
                                 "--collision-light-sampling",
                                 "--split-dielectrics",
+                                "--skip-uniform-environment",
                                 "--wavelength-sampling",
                                 "--strategy",
                                 "--wavelengths",
@@ -379,6 +383,8 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
             o.collisionLightSampling = either("on", "off");
         } else if (a == "--split-dielectrics") {
             o.splitDielectrics = either("on", "off");
+        } else if (a == "--skip-uniform-environment") {
+            o.skipUniformEnvironment = either("on", "off");
         } else if (a == "--wavelength-sampling") {
             o.wavelengthSampling = either("emission", "visible");
         } else if (a == "--strategy") {

@@ -141,6 +141,8 @@ RenderOptions RenderOptionsFor(const CommandLineOptions& options, std::optional<
         renderOptions.collisionLightSampling = *options.collisionLightSampling == "on";
     if (options.splitDielectrics)
         renderOptions.splitDielectrics = *options.splitDielectrics == "on";
+    if (options.skipUniformEnvironment)
+        renderOptions.skipUniformEnvironment = *options.skipUniformEnvironment == "on";
     if (options.wavelengthSampling)
         renderOptions.emissionWavelengths = *options.wavelengthSampling == "emission";
     if (options.wavelengths) renderOptions.singleWavelength = *options.wavelengths == 1;

@@ -27,10 +27,12 @@ int Bucket(const Bounds3f& centroids, Point3f pc, int dim, int nBuckets) {
 
 }  // namespace
 
-BVHLightSampler::BVHLightSampler(std::span<const Light> lights, const SpectralRange& range)
+BVHLightSampler::BVHLightSampler(std::span<const Light> lights, const SpectralRange& range,
+                                 bool skipCovered)
     : bitTrails(lights.size(), kNotInTree), infinite(lights.size(), false) {
     std::vector<std::pair<int, LightBounds>> bounded;
     for (size_t i = 0; i < lights.size(); ++i) {
+        if (skipCovered && lights[i].CoveredByBSDFSampling()) continue;
         std::optional<LightBounds> lb = lights[i].Bounds(range);
         if (!lb) {
             infiniteLights.push_back(int(i));

@@ -20,7 +20,11 @@ class BVHLightSampler {
   public:
     // Lights of zero power (Light::Bounds().phi) are never chosen.
     // range: the scene's wavelengths, over which each light's power is estimated (Light::Power)
-    explicit BVHLightSampler(std::span<const Light> lights, const SpectralRange& range = {});
+    // skipCovered: for estimators that sample lights with an incomplete PDF, which draw
+    // nothing from lights BSDF sampling covers (Light::CoveredByBSDFSampling): those are then
+    // never chosen either, and their share of the samples goes to lights that can use it.
+    explicit BVHLightSampler(std::span<const Light> lights, const SpectralRange& range = {},
+                             bool skipCovered = false);
 
     std::optional<SampledLight> Sample(const LightSampleContext& ctx, Float u) const;
     // Probability that Sample(ctx, .) chooses light `index` (0 for lights of zero power).

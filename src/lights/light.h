@@ -63,6 +63,15 @@ class Light : public ClosedSet<const PointLight*, const SpotLight*, const Goniom
     LightType Type() const {
         return Dispatch([](auto l) { return l->Type(); });
     }
+    // Whether light sampling with an incomplete PDF (allowIncompletePDF, as path and volpath
+    // sample lights for MIS with BSDF sampling) draws nothing from this light: a uniform
+    // environment, whose light BSDF sampling finds as well as any light sample would.
+    bool CoveredByBSDFSampling() const {
+        return Dispatch([](auto l) {
+            using T = std::remove_cv_t<std::remove_pointer_t<decltype(l)>>;
+            return std::is_same_v<T, UniformInfiniteLight>;
+        });
+    }
     // Whether SampleLi may return samples with wiLength != 1 (pbrt-v4 compatibility for image
     // infinite lights under transforms that change lengths: LightLiSample::wiLength).
     bool HasUnnormalizedSamples() const {

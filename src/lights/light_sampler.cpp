@@ -17,11 +17,29 @@ Float UniformLightSampler::PMF(int index) const {
 }
 
 // PowerLightSampler
-PowerLightSampler::PowerLightSampler(std::span<const Light> lights, const SpectralRange& range) {
+PowerLightSampler::PowerLightSampler(std::span<const Light> lights, const SpectralRange& range,
+                                     bool skipCovered) {
     std::vector<Float> power;
     power.reserve(lights.size());
     for (const Light& light : lights) power.push_back(light.Power(range));
     *this = PowerLightSampler(std::move(power));
+    if (!skipCovered || aliasTable.Size() == 0) return;
+    // The others keep their weights (uniform if none has power); none left: no light at all
+    std::vector<Float> weights;
+    bool any = false;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        bool skip = lights[i].CoveredByBSDFSampling();
+        weights.push_back(skip ? 0 : aliasTable.PMF(int(i)));
+        any |= !skip;
+    }
+    if (!any) {
+        aliasTable = AliasTable();
+        return;
+    }
+    if (std::accumulate(weights.begin(), weights.end(), 0.0) == 0)
+        for (size_t i = 0; i < lights.size(); ++i)
+            weights[i] = lights[i].CoveredByBSDFSampling() ? 0 : 1;
+    aliasTable = AliasTable(weights);
 }
 
 PowerLightSampler::PowerLightSampler(std::vector<Float> weights) {

@@ -37,7 +37,9 @@ class UniformLightSampler {
 // preprocessed before the sampler is built (their power depends on the scene's size).
 class PowerLightSampler {
   public:
-    explicit PowerLightSampler(std::span<const Light> lights, const SpectralRange& range = {});
+    // skipCovered: as BVHLightSampler's (lights BSDF sampling covers are never chosen).
+    explicit PowerLightSampler(std::span<const Light> lights, const SpectralRange& range = {},
+                               bool skipCovered = false);
     // Probability proportional to the given non-negative weights, one per light (e.g. area,
     // for comparisons); uniform if they are all zero.
     explicit PowerLightSampler(std::vector<Float> weights);

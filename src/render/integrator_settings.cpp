@@ -82,6 +82,8 @@ PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOpti
         e.parameters.GetOneBool("collisionlightsampling", true));
     s.splitDielectrics =
         options.splitDielectrics.value_or(e.parameters.GetOneBool("splitdielectrics", true));
+    s.skipUniformEnvironment = options.skipUniformEnvironment.value_or(
+        e.parameters.GetOneBool("skipuniformenvironment", true));
     s.emissionWavelengths = options.emissionWavelengths.value_or(Choice(
         e, "wavelengthsampling", "emission",
         [](std::string_view v) -> std::optional<bool> {

@@ -13,7 +13,8 @@ struct SceneEntity;
 // PathIntegratorSettings from the Integrator entity: pbrt-v4's name and parameters ("maxdepth",
 // "regularize", "lightsampler") and kiln's ("strategy", "wavelengths", "emittersampling",
 // "mediumemission", "glasswindows", "exactmediumemission", "weightabsorption",
-// "collisionlightsampling", "splitdielectrics", "wavelengthsampling"). SceneError
+// "collisionlightsampling", "splitdielectrics", "skipuniformenvironment",
+// "wavelengthsampling"). SceneError
 // for an unknown integrator name or parameter value; a warning for integrators rendered with
 // another.
 PathIntegratorSettings CreateIntegratorSettings(SceneEntity& e, const RenderOptions& options,

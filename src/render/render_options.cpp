@@ -57,6 +57,8 @@ std::string RenderOptionsKey(const RenderOptions& o) {
            optional(o.collisionLightSampling, [](bool b) { return b ? "1" : "0"; });
     key +=
         ";splitdielectrics=" + optional(o.splitDielectrics, [](bool b) { return b ? "1" : "0"; });
+    key += ";skipuniformenvironment=" +
+           optional(o.skipUniformEnvironment, [](bool b) { return b ? "1" : "0"; });
     key += ";wavelengthsampling=" +
            optional(o.emissionWavelengths, [](bool b) { return b ? "emission" : "visible"; });
     key += ";wavelengths=" + optional(o.singleWavelength, [](bool b) { return b ? "1" : "4"; });

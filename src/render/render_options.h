@@ -60,8 +60,8 @@ struct RenderOptions {
     std::optional<double> memoryLimitBytes;
     // The integrator's choices (Integrator "lightsampler", "strategy", "emittersampling",
     // "mediumemission", "glasswindows", "exactmediumemission", "weightabsorption",
-    // "collisionlightsampling", "splitdielectrics", "wavelengthsampling", "wavelengths"), for
-    // comparisons
+    // "collisionlightsampling", "splitdielectrics", "skipuniformenvironment",
+    // "wavelengthsampling", "wavelengths"), for comparisons
     std::optional<LightSelection> lightSelection;
     std::optional<LightStrategy> strategy;
     std::optional<bool> emitterPowerSampling;
@@ -71,6 +71,7 @@ struct RenderOptions {
     std::optional<bool> weightAbsorption;        // Integrator "weightabsorption"
     std::optional<bool> collisionLightSampling;  // Integrator "collisionlightsampling"
     std::optional<bool> splitDielectrics;        // Integrator "splitdielectrics"
+    std::optional<bool> skipUniformEnvironment;  // Integrator "skipuniformenvironment"
     std::optional<bool> emissionWavelengths;     // Integrator "wavelengthsampling" "emission"
     std::optional<bool> singleWavelength;        // one wavelength per path rather than four
 };

@@ -21,12 +21,12 @@ std::string SceneFeatures::ToString() const {
                       base, sensorResponseWavelengths ? "spectrum times it" : "spectrum");
     else
         std::snprintf(wavelengths, sizeof(wavelengths), "by %s", base);
-    char buf[1200];
+    char buf[1600];
     std::snprintf(
         buf, sizeof(buf),
         "thermal emission %s (%d lights, %d emissivity tables in %.2f s%s); texture footprints "
         "at %d of %d materials; pixel loop: AOVs %s, %d wavelength%s, %s pixel positions; "
-        "light sampler %s; area lights %s, environment light %s, dispersion %s; shadow rays "
+        "light sampler %s%s; area lights %s, environment light %s, dispersion %s; shadow rays "
         "cross %d sheet material%s; subsurface materials %d (%d BSSRDF tables in %.3f s); "
         "polarisation %s; media %d (%d emissive, %d thermal, %d sampled as lights in %.3f s, "
         "%d glass windows onto hot media%s, %d uniform ones integrated exactly along rays; "
@@ -42,6 +42,8 @@ std::string SceneFeatures::ToString() const {
         : lightSelection == LightSelection::Power   ? "power"
         : lightSelection == LightSelection::Uniform ? "uniform"
                                                     : "area",
+        skipsUniformEnvironment ? " (leaving out the uniform environment BSDF sampling covers)"
+                                : "",
         onOff(areaLights), onOff(environmentLight), onOff(dispersion), sheets,
         sheets == 1 ? "" : "s", subsurface, bssrdfTables, bssrdfSeconds,
         polarized ? "on (Stokes vectors, Mueller matrices)" : "off", media, emissiveMedia,

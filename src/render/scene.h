@@ -84,6 +84,12 @@ struct PathIntegratorSettings {
     // and volpath trace both its reflection and its transmission, each weighted by its Fresnel
     // factor (true, default), rather than one of them chosen by chance (false, pbrt-v4's way)
     bool splitDielectrics = true;
+    // kiln "bool skipuniformenvironment": path and volpath sample lights with an incomplete
+    // PDF (pbrt-v4's allowIncompletePDF), which draws nothing from a uniform environment (BSDF
+    // sampling covers it); the bvh and power light samplers then leave it out, so its share of
+    // the light samples goes to the other lights (true, default) rather than being spent on
+    // it (false, pbrt-v4's way)
+    bool skipUniformEnvironment = true;
     // kiln "string wavelengthsampling": in scenes with hot matter, the film draws wavelengths
     // partly by the spectrum it radiates ("emission", default; render/scene_wavelengths.h)
     // or by pbrt-v4's visible density alone ("visible", for comparisons)
@@ -149,6 +155,9 @@ struct SceneFeatures {
     // Whether camera rays split at their first smooth dielectric
     // (PathIntegratorSettings::splitDielectrics)
     bool splitDielectrics = false;
+    // Whether the light sampler leaves out a uniform environment light the scene has
+    // (PathIntegratorSettings::skipUniformEnvironment)
+    bool skipsUniformEnvironment = false;
     // The share of the visible density (a thermal film: of its sensor's response) in the film's
     // wavelength distribution (1: it alone; less where hot matter's spectrum makes the rest:
     // scene_wavelengths.h)

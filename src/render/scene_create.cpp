@@ -504,14 +504,16 @@ void CreateAggregate(Scene& scene, SceneDescription& desc, const std::vector<Sce
 // Light selection for next-event estimation (after PreprocessLights: the power of distant and
 // infinite lights depends on the scene's size)
 void CreateLightSampler(Scene& scene) {
+    // Only path and volpath use it, sampling with an incomplete PDF
+    const bool skip = scene.integrator.skipUniformEnvironment;
     switch (scene.integrator.lightSelection) {
         case LightSelection::BVH:
-            scene.lightSampler =
-                std::make_unique<LightSampler>(BVHLightSampler(scene.lights, scene.spectralRange));
+            scene.lightSampler = std::make_unique<LightSampler>(
+                BVHLightSampler(scene.lights, scene.spectralRange, skip));
             break;
         case LightSelection::Power:
             scene.lightSampler = std::make_unique<LightSampler>(
-                PowerLightSampler(scene.lights, scene.spectralRange));
+                PowerLightSampler(scene.lights, scene.spectralRange, skip));
             break;
         case LightSelection::Uniform:
             scene.lightSampler =
@@ -706,6 +708,12 @@ static void CreateScene(Scene& scene, SceneDescription& desc, const RenderOption
     scene.features.collisionLightSampling =
         unidirectional && scene.features.volumetric && scene.integrator.collisionLightSampling;
     scene.features.splitDielectrics = unidirectional && scene.integrator.splitDielectrics;
+    if (unidirectional && scene.integrator.skipUniformEnvironment &&
+        (scene.integrator.lightSelection == LightSelection::BVH ||
+         scene.integrator.lightSelection == LightSelection::Power))
+        scene.features.skipsUniformEnvironment =
+            std::any_of(scene.lights.begin(), scene.lights.end(),
+                        [](const Light& l) { return l.CoveredByBSDFSampling(); });
     if (!scene.integrator.volumetric && !scene.media.empty())
         diag.Warn(desc.integrator.loc,
                   "integrator \"path\" ignores participating media (as pbrt-v4); use "

@@ -137,3 +137,43 @@ TEST(BVHLightSampler, HardEdgedSpotsArePickedInsideTheirCone) {
         EXPECT_EQ(sampler.PMF(outside, 1), 0);
     }
 }
+
+// Path and volpath sample lights with an incomplete PDF, which draws nothing from a uniform
+// environment (BSDF sampling covers it): with skipCovered the bvh and power samplers leave it
+// out, and the other lights get all the samples; without, it keeps pbrt-v4's share
+TEST(LightSamplers, LeaveOutTheUniformEnvironmentWhenAsked) {
+    UniformInfiniteLight sky(Transform(), Spectrum(ConstantSpectrum(1)), 1);
+    PointLight a(Transform(), Spectrum(ConstantSpectrum(1)), 1);
+    PointLight b(Translate(Vector3f(1, 0, 0)), Spectrum(ConstantSpectrum(3)), 1);
+    std::vector<Light> lights = {Light(&sky), Light(&a), Light(&b)};
+    for (const Light& l : lights) l.Preprocess(Bounds3f(Point3f(-1, -1, -1), Point3f(2, 2, 2)));
+    EXPECT_TRUE(lights[0].CoveredByBSDFSampling());
+    EXPECT_FALSE(lights[1].CoveredByBSDFSampling());
+    LightSampleContext ctx(Point3f(0.5f, 2, 0), Normal3f(0, -1, 0), Normal3f(0, -1, 0));
+
+    BVHLightSampler all(lights), skipping(lights, {}, true);
+    EXPECT_FLOAT_EQ(all.PMF(ctx, 0), 0.5f);
+    EXPECT_EQ(skipping.PMF(ctx, 0), 0);
+    EXPECT_NEAR(skipping.PMF(ctx, 1) + skipping.PMF(ctx, 2), 1, 1e-6);
+    EXPECT_NEAR(skipping.PMF(ctx, 1), 2 * all.PMF(ctx, 1), 1e-6);
+    RNG rng(5);
+    for (int i = 0; i < 1000; ++i) {
+        std::optional<SampledLight> s = skipping.Sample(ctx, rng.UniformFloat());
+        ASSERT_TRUE(s);
+        EXPECT_NE(s->index, 0);
+        EXPECT_FLOAT_EQ(s->p, skipping.PMF(ctx, s->index));
+    }
+
+    PowerLightSampler byPower(lights), byPowerSkipping(lights, {}, true);
+    EXPECT_GT(byPower.PMF(0), 0);
+    EXPECT_EQ(byPowerSkipping.PMF(0), 0);
+    EXPECT_NEAR(byPowerSkipping.PMF(2) / byPowerSkipping.PMF(1), 3, 1e-4);
+    EXPECT_NEAR(byPowerSkipping.PMF(1) + byPowerSkipping.PMF(2), 1, 1e-6);
+    ChiSquareResult r = SampleFrequencies(byPowerSkipping, lights.size());
+    EXPECT_TRUE(r.passed) << r.message;
+
+    // Only the environment: nothing to sample
+    std::vector<Light> skyOnly = {Light(&sky)};
+    EXPECT_FALSE(BVHLightSampler(skyOnly, {}, true).Sample(ctx, 0.3f));
+    EXPECT_FALSE(PowerLightSampler(skyOnly, {}, true).Sample(0.3f));
+}

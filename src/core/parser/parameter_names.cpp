@@ -181,6 +181,7 @@ constexpr std::string_view kNames[] = {
     "sigma_a",
     "sigma_s",
     "skipbad",
+    "skipuniformenvironment",
     "space",
     "specificheat",
     "splitdepth",
