@@ -3,7 +3,8 @@
 // and normal cone; thermal emitters with their temperature-dependent power, one leaf per hot
 // triangle); a light is chosen by descending the tree with probabilities proportional to each
 // child's importance at the receiving point, so nearby and bright emitters get the samples.
-// Infinite and distant lights are chosen uniformly with probability n_inf / (n_inf + 1).
+// Infinite and distant lights are chosen uniformly with probability n_inf / (n_inf + 1)
+// (lights left out by skipCovered not counted).
 #pragma once
 
 #include <cstdint>
