@@ -120,6 +120,10 @@ std::string UsageText() {
            "  --skip-uniform-environment S  light samples go to the lights they can draw\n"
            "                        from, not to a uniform environment that BSDF sampling\n"
            "                        covers (on, default) or to it too (off, as pbrt-v4)\n"
+           "  --reconstruction R    pixel samples: uniform over a pixel and spread over the\n"
+           "                        pixels within the filter's radius (spread, default) or\n"
+           "                        drawn from the filter for one pixel (importance, as\n"
+           "                        pbrt-v4)\n"
            "  --wavelength-sampling W  wavelengths in scenes with hot matter: partly by the\n"
            "                        spectrum it radiates (emission, default) or by the\n"
            "                        visible density alone (visible, as pbrt-v4)\n"
@@ -187,6 +191,7 @@ const char* const kOptions[] = {"--help",
                                 "--collision-light-sampling",
                                 "--split-dielectrics",
                                 "--skip-uniform-environment",
+                                "--reconstruction",
                                 "--wavelength-sampling",
                                 "--strategy",
                                 "--wavelengths",
@@ -385,6 +390,8 @@ CommandLineOptions ParseCommandLine(const std::vector<std::string>& givenArgs) {
             o.splitDielectrics = either("on", "off");
         } else if (a == "--skip-uniform-environment") {
             o.skipUniformEnvironment = either("on", "off");
+        } else if (a == "--reconstruction") {
+            o.reconstruction = either("spread", "importance");
         } else if (a == "--wavelength-sampling") {
             o.wavelengthSampling = either("emission", "visible");
         } else if (a == "--strategy") {

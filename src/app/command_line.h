@@ -33,6 +33,7 @@ struct CommandLineOptions {
     std::optional<std::string> collisionLightSampling;  // on | off
     std::optional<std::string> splitDielectrics;        // on | off
     std::optional<std::string> skipUniformEnvironment;  // on | off
+    std::optional<std::string> reconstruction;          // spread | importance
     std::optional<std::string> wavelengthSampling;      // emission | visible
     // --generic footprints,aovs: run those generic code paths (measuring specialisation)
     bool genericFootprints = false, genericAOVs = false, genericVolumes = false;

@@ -143,6 +143,7 @@ RenderOptions RenderOptionsFor(const CommandLineOptions& options, std::optional<
         renderOptions.splitDielectrics = *options.splitDielectrics == "on";
     if (options.skipUniformEnvironment)
         renderOptions.skipUniformEnvironment = *options.skipUniformEnvironment == "on";
+    if (options.reconstruction) renderOptions.spreadSamples = *options.reconstruction == "spread";
     if (options.wavelengthSampling)
         renderOptions.emissionWavelengths = *options.wavelengthSampling == "emission";
     if (options.wavelengths) renderOptions.singleWavelength = *options.wavelengths == 1;

@@ -12,7 +12,9 @@ BDPTIntegrator::BDPTIntegrator(const Scene& scene, PathIntegratorSettings settin
       sampleBounds(scene.job->film->SampleBounds()),
       lightSampler(std::span<const Light>(scene.lights)) {
     Point2i full = film->FullResolution();
-    splatScale = Float(double(full.x) * full.y / double(film->PixelBounds().Area()));
+    // One light subpath per camera sample, of every pixel sampled (with spread reconstruction,
+    // also those of the margin around the pixel bounds)
+    splatScale = Float(double(full.x) * full.y / double(film->SpreadPixelBounds().Area()));
     Point3f center;
     scene.aggregate->Bounds().BoundingSphere(&center, &sceneRadius);
 }

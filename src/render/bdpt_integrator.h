@@ -10,9 +10,9 @@
 // connections. Each is weighted by pbrt-v4's MISWeight: the balance heuristic over all
 // strategies that could have produced the path, in the rescaled form 1 / (1 + sum r_i), with
 // the correction for cropped films of pbrt-v4's issue 347 (light tracing from a crop has fewer
-// paths per pixel: its splats are scaled by the full image's area over the crop's and its
-// density in the heuristic by the inverse; pbrt-v4 gets the latter wrong for t = 1, see
-// MISWeight).
+// paths per pixel: its splats are scaled by the full image's area over the area sampled, the
+// crop's and, with spread reconstruction, its margin, and its density in the heuristic by the
+// inverse; pbrt-v4 gets the latter wrong for t = 1, see MISWeight).
 //
 // kiln specifics: emission found by the camera path is the scene's SurfaceLe (thermal emission
 // from the hit's own BSDF, as PathIntegrator); hot shapes are lights (ThermalAreaLight) whose
@@ -83,7 +83,9 @@ class BDPTIntegrator {
     const PerspectiveCamera* camera;
     RGBFilm* film;
     Bounds2f sampleBounds;
-    Float splatScale;  // full image area / rendered pixel bounds' area (pbrt-v4 issue 347)
+    // full image area / area of the pixels sampled (RGBFilm::SpreadPixelBounds; pbrt-v4 issue
+    // 347)
+    Float splatScale;
     Float sceneRadius = 0;
     PowerLightSampler lightSampler;
 };

@@ -59,6 +59,8 @@ std::string RenderOptionsKey(const RenderOptions& o) {
         ";splitdielectrics=" + optional(o.splitDielectrics, [](bool b) { return b ? "1" : "0"; });
     key += ";skipuniformenvironment=" +
            optional(o.skipUniformEnvironment, [](bool b) { return b ? "1" : "0"; });
+    key += ";reconstruction=" +
+           optional(o.spreadSamples, [](bool b) { return b ? "spread" : "importance"; });
     key += ";wavelengthsampling=" +
            optional(o.emissionWavelengths, [](bool b) { return b ? "emission" : "visible"; });
     key += ";wavelengths=" + optional(o.singleWavelength, [](bool b) { return b ? "1" : "4"; });

@@ -55,6 +55,10 @@ struct RenderOptions {
     // Whether the film records Stokes layers (kiln --stokes: true; Film "bool stokes"
     // otherwise).
     std::optional<bool> stokes;
+    // Pixel reconstruction (kiln --reconstruction; Film "string reconstruction" otherwise):
+    // true spreads samples over the pixels within the filter's radius, false importance-samples
+    // the filter (pbrt-v4)
+    std::optional<bool> spreadSamples;
     // kiln --memory-limit: what the scene's objects may take (base/memory_budget.h);
     // default the machine's memory.
     std::optional<double> memoryLimitBytes;

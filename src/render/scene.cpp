@@ -25,7 +25,7 @@ std::string SceneFeatures::ToString() const {
     std::snprintf(
         buf, sizeof(buf),
         "thermal emission %s (%d lights, %d emissivity tables in %.2f s%s); texture footprints "
-        "at %d of %d materials; pixel loop: AOVs %s, %d wavelength%s, %s pixel positions; "
+        "at %d of %d materials; pixel loop: AOVs %s, %d wavelength%s, %s; "
         "light sampler %s%s; area lights %s, environment light %s, dispersion %s; shadow rays "
         "cross %d sheet material%s; subsurface materials %d (%d BSSRDF tables in %.3f s); "
         "polarisation %s; media %d (%d emissive, %d thermal, %d sampled as lights in %.3f s, "
@@ -36,7 +36,9 @@ std::string SceneFeatures::ToString() const {
         onOff(thermalEmission), thermalLights, emissivityTables, emissivitySeconds,
         varyingTemperatures ? ", varying temperatures" : "", footprintMaterials, materials,
         onOff(aovs), singleWavelength ? 1 : NSpectrumSamples, singleWavelength ? "" : "s",
-        fixedPixelCenter ? "fixed" : "jittered",
+        fixedPixelCenter ? "fixed pixel positions"
+        : spreadSamples  ? "samples spread over the pixels within the filter's radius"
+                         : "pixel positions importance-sampled from the filter",
         bidirectional                               ? "power (bdpt)"
         : lightSelection == LightSelection::BVH     ? "bvh"
         : lightSelection == LightSelection::Power   ? "power"

@@ -118,8 +118,10 @@ struct SceneFeatures {
     // material or temperature texture filters with them
     int materials = 0, footprintMaterials = 0;
     // The pixel loop's instantiation (renderer.cpp): first-hit AOVs only when the film writes
-    // them, one or four wavelengths per path, jittered or fixed pixel positions
-    bool aovs = false, singleWavelength = false, fixedPixelCenter = false;
+    // them, one or four wavelengths per path, jittered or fixed pixel positions, samples spread
+    // over the pixels within the filter's radius or importance-sampled from the filter
+    // (PixelReconstruction)
+    bool aovs = false, singleWavelength = false, fixedPixelCenter = false, spreadSamples = false;
     // kiln --generic: footprints at every hit, AOV work for every camera ray (to measure what
     // the choices save)
     bool genericFootprints = false, genericAOVs = false;

@@ -37,9 +37,13 @@ namespace {
 // charge to the scene's budget recorded
 void CreateJobFilm(Scene& scene, RenderJob& job, const RenderOptions& options, Diagnostics& diag) {
     const Scene::JobRecipe& r = scene.jobRecipe;
-    RGBFilm::Request request{options.cropWindow, options.pixelBounds, r.stokes,
-                             r.cameraTransform.CameraFromRender(),
-                             r.cameraTransform.WorldFromRender()};
+    RGBFilm::Request request{options.cropWindow, options.pixelBounds, r.stokes};
+    if (options.spreadSamples)
+        request.reconstruction = *options.spreadSamples ? PixelReconstruction::Spread
+                                                        : PixelReconstruction::FilterImportance;
+    request.pixelJitter = !scene.disablePixelJitter;
+    request.cameraFromRender = r.cameraTransform.CameraFromRender();
+    request.worldFromRender = r.cameraTransform.WorldFromRender();
     double before = job.arena.Budget().Committed();
     job.film = RGBFilm::Create(r.film.name, r.film.parameters, r.exposureTime, *scene.filter,
                                r.colorSpace, r.film.loc, job.arena, diag, request);
@@ -52,8 +56,10 @@ void CreateJobSamplerAndShader(Scene& scene, RenderJob& job, const RenderOptions
                                Diagnostics& diag) {
     const Scene::JobRecipe& r = scene.jobRecipe;
     std::optional<int> seed = options.seed ? options.seed : r.seed;
-    job.sampler = Sampler::Create(r.sampler.name, r.sampler.parameters, job.film->FullResolution(),
-                                  r.sampler.loc, diag, options.samplesPerPixel, seed);
+    // Spread reconstruction samples pixels beyond the bounds too (RGBFilm::SamplerResolution)
+    job.sampler =
+        Sampler::Create(r.sampler.name, r.sampler.parameters, job.film->SamplerResolution(),
+                        r.sampler.loc, diag, options.samplesPerPixel, seed);
     job.shader = std::make_unique<SceneShader>(&*scene.camera, job.sampler->SamplesPerPixel(),
                                                r.genericFootprints);
 }
@@ -77,6 +83,7 @@ void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const RenderOptio
                                        options.stokes,
                                        options.genericFootprints,
                                        desc.camera.cameraTransform};
+    scene.disablePixelJitter = desc.disablePixelJitter;  // the film's reconstruction needs it
     scene.job = std::make_unique<RenderJob>(arena.Budget());
     CreateJobFilm(scene, *scene.job, options, diag);
     scene.camera = Camera::Create(desc.camera.name, desc.camera.parameters,
@@ -91,7 +98,6 @@ void CreateCameraAndFilm(Scene& scene, SceneDescription& desc, const RenderOptio
     }
     CreateJobSamplerAndShader(scene, *scene.job, options, diag);
     scene.integrator = CreateIntegratorSettings(desc.integrator, options, diag);
-    scene.disablePixelJitter = desc.disablePixelJitter;
     if (desc.accelerator.name != "bvh" && desc.accelerator.name != "kdtree")
         diag.Warn(desc.accelerator.loc,
                   "unknown accelerator \"" + desc.accelerator.name + "\"; kiln uses Embree");
@@ -582,6 +588,7 @@ SceneFeatures DecideFeatures(const Scene& scene, const SceneDescription& desc,
     f.aovs = scene.job->film->UsesVisibleSurface() || options.genericAOVs;
     f.singleWavelength = scene.integrator.singleWavelength;
     f.fixedPixelCenter = scene.disablePixelJitter;
+    f.spreadSamples = scene.job->film->Reconstruction() == PixelReconstruction::Spread;
     f.polarized = scene.emissivityTables->polarized;  // decided in Scene::Create
     f.lightSelection = scene.integrator.lightSelection;
     f.media = int(scene.media.size());

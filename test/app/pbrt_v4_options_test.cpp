@@ -24,7 +24,8 @@ class PbrtV4Options : public testing::KilnCommandTest {
     void SetUp() override {
         KilnCommandTest::SetUp();
         WriteScene(
-            "Film \"rgb\" \"integer xresolution\" 32 \"integer yresolution\" 24\n"
+            "Film \"rgb\" \"integer xresolution\" 32 \"integer yresolution\" 24 \"bool savefp16\" "
+            "false\n"
             "Sampler \"independent\"\nLookAt 0 0 -4 0 0 0 0 1 0 Camera \"perspective\"\n"
             "WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.3 0.3 0.3]\n"
             "Material \"diffuse\" \"float temperature\" 1500\nShape \"sphere\"\n");
@@ -82,11 +83,12 @@ TEST_F(PbrtV4Options, StatsAndLogLevels) {
     for (const char* expect : {"Statistics:", "Parsing and scene creation", "Rendering",
                                "Peak resident set size", "Lights (thermal)"})
         EXPECT_NE(log.find(expect), std::string::npos) << expect << "\n" << log;
-    // 32 x 24 pixels x 3 samples
+    // 34 x 26 pixels x 3 samples: 32 x 24 and the pixels around them whose samples reach
+    // them (RGBFilm::SpreadMargin, one pixel for pbrt-v4's default Gaussian)
     std::string paths = "Camera paths";
     size_t at = log.find(paths);
     ASSERT_NE(at, std::string::npos);
-    EXPECT_EQ(std::stol(log.substr(log.find_first_not_of(' ', at + paths.size()))), 32 * 24 * 3);
+    EXPECT_EQ(std::stol(log.substr(log.find_first_not_of(' ', at + paths.size()))), 34 * 26 * 3);
     // A scene warning (a known parameter in the wrong place) shows, unless the level is error
     std::ofstream(dir / "warn.pbrt", std::ios::app)
         << testing::ReadAll((dir / "scene.pbrt").string()) << "Shape \"sphere\" \"float fov\" 3\n";

@@ -15,12 +15,10 @@
 namespace kiln {
 namespace {
 
+// The image's mean luminance and its standard error (testing::BlockStats)
 RunningStats PixelLuminance(const testing::RenderedScene& r) {
-    RunningStats stats;
-    Bounds2i b = r.scene->job->film->PixelBounds();
-    for (int y = b.pMin.y; y < b.pMax.y; ++y)
-        for (int x = b.pMin.x; x < b.pMax.x; ++x) stats.Add(testing::PixelY(*r.scene, {x, y}));
-    return stats;
+    return testing::BlockStats(r.scene->job->film->PixelBounds(),
+                               [&](Point2i p) { return testing::PixelY(*r.scene, p); });
 }
 
 std::string AOScene(const std::string& integrator, const std::string& world) {
@@ -57,12 +55,10 @@ TEST(AmbientOcclusion, WhiteIsTheFilmsWhite) {
     text.insert(text.find("Integrator"), "ColorSpace \"aces2065-1\"\n");
     testing::RenderedScene r = testing::RenderText(text);
     RunningStats channel[3];
-    Bounds2i b = r.scene->job->film->PixelBounds();
-    for (int y = b.pMin.y; y < b.pMax.y; ++y)
-        for (int x = b.pMin.x; x < b.pMax.x; ++x) {
-            RGB rgb = r.scene->job->film->GetPixelRGB({x, y});
-            for (int c = 0; c < 3; ++c) channel[c].Add(rgb[c]);
-        }
+    for (int c = 0; c < 3; ++c)
+        channel[c] = testing::BlockStats(r.scene->job->film->PixelBounds(), [&](Point2i p) {
+            return r.scene->job->film->GetPixelRGB(p)[c];
+        });
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(channel[c].Mean(), 1, 4 * channel[c].StandardError() + 3e-3) << "channel " << c;
 }

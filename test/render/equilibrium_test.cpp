@@ -23,6 +23,10 @@ namespace {
 struct Case {
     const char* name;
     const char* material;
+    // A residual measured at high spp where the mesh geometry reads below B(T) (1: none), and
+    // the samples per pixel that make the test's 4 standard errors smaller than 0.5 %
+    double meshMean = 1;
+    int spp = 256;
 };
 // What ctest prints for a parameter (instead of its bytes)
 inline void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
@@ -64,8 +68,9 @@ class Equilibrium : public ::testing::TestWithParam<std::tuple<Case, bool>> {};
 TEST_P(Equilibrium, CavityRendersTheBlackbody) {
     auto [c, meshes] = GetParam();
     const double T = meshes ? 5000 : 1000;
-    testing::ExpectBlackbodyImage(testing::RenderText(Cavity(c, meshes, T, 256)), T,
-                                  std::string(c.name) + (meshes ? ", meshes" : ", spheres"));
+    testing::ExpectBlackbodyImage(testing::RenderText(Cavity(c, meshes, T, c.spp)), T,
+                                  std::string(c.name) + (meshes ? ", meshes" : ", spheres"),
+                                  meshes ? c.meshMean : 1);
 }
 
 const Case kCases[] = {
@@ -136,8 +141,11 @@ const Case kCases[] = {
     // eta^2 B (1 - E): thermal/dielectric_emissivity.h; a body holding a hot melt rendered
     // 3-13 % dark without it at roughness 0.1-0.6). At 4096 spp the sphere reads 1.00056 (se
     // 0.00028) but the mesh, whose interpolated shading normals bend the refraction, 0.99646 (se
-    // 0.00037): a residual the 256 spp here cannot see and that kiln has not traced yet
-    {"rough glass, nothing inside", "\"dielectric\" \"float eta\" 1.5 \"float roughness\" 0.3"},
+    // 0.00037; 0.9961 +- 0.0003 over 16 seeds at 256 spp): a residual that kiln has not traced
+    // yet. The mesh is held to that value (a change either way fails), at 512 spp: this body's
+    // glow is the noisiest of the cavities
+    {"rough glass, nothing inside", "\"dielectric\" \"float eta\" 1.5 \"float roughness\" 0.3",
+     0.99646, 512},
 };
 
 // Polarised transport: the cavity must also be unpolarised. Reflection from metals polarises

@@ -28,13 +28,11 @@ std::string FurnaceScene(Float albedo, const std::string& sampler) {
     return s.str();
 }
 
-// Mean pixel luminance and its standard error (pixels are independent estimates).
+// Mean pixel luminance and its standard error (testing::BlockStats: neighbouring pixels
+// share samples).
 RunningStats PixelLuminance(const Scene& scene) {
-    RunningStats stats;
-    Bounds2i b = scene.job->film->PixelBounds();
-    for (int y = b.pMin.y; y < b.pMax.y; ++y)
-        for (int x = b.pMin.x; x < b.pMax.x; ++x) stats.Add(testing::PixelY(scene, {x, y}));
-    return stats;
+    return testing::BlockStats(scene.job->film->PixelBounds(),
+                               [&](Point2i p) { return testing::PixelY(scene, p); });
 }
 
 class FurnaceTest : public ::testing::TestWithParam<Float> {};

@@ -60,12 +60,10 @@ std::string Sheets(std::vector<std::string> materials, std::optional<Float> came
     return s.str();
 }
 
+// The image's mean luminance and its standard error (testing::BlockStats)
 RunningStats PixelStats(const Scene& scene) {
-    Bounds2i b = scene.job->film->PixelBounds();
-    RunningStats stats;
-    for (int y = b.pMin.y; y < b.pMax.y; ++y)
-        for (int x = b.pMin.x; x < b.pMax.x; ++x) stats.Add(testing::PixelY(scene, {x, y}));
-    return stats;
+    return testing::BlockStats(scene.job->film->PixelBounds(),
+                               [&](Point2i p) { return testing::PixelY(scene, p); });
 }
 Float MeanY(const Scene& scene) { return Float(PixelStats(scene).Mean()); }
 

@@ -128,46 +128,76 @@ inline Float PixelY(const Scene& scene, Point2i p) {
     return scene.job->film->ColorSpace()->ToXYZ(rgb).Y;
 }
 
+// The blocks of about 4 x 4 pixels (4 to 7 on a side) that BlockStats averages over bounds:
+// their indices along an axis for a pixel's offset from the bounds' start.
+inline int BlockIndex(int offset, int extent, int nBlocks) {
+    return int(int64_t(offset) * nBlocks / extent);
+}
+inline int BlocksAlong(int extent) { return std::max(1, extent / 4); }
+
+// A per-pixel value (value(Point2i)) over pixel bounds b, for the image's mean and its
+// standard error: the statistics of the means of blocks of about 4 x 4 pixels. A spread film
+// (RGBFilm::SpreadSample) counts each sample for the pixels within the filter's radius, so
+// neighbouring pixels' noise is correlated and per-pixel statistics would understate the
+// mean's standard error; blocks several radii wide are nearly independent. Mean() is the
+// mean of the block means (the pixel mean when the blocks are equal).
+template <typename PixelValue>
+RunningStats BlockStats(Bounds2i b, PixelValue value) {
+    const int w = b.pMax.x - b.pMin.x, h = b.pMax.y - b.pMin.y;
+    const int nx = BlocksAlong(w), ny = BlocksAlong(h);
+    std::vector<double> sum(size_t(nx) * ny, 0.0), count(size_t(nx) * ny, 0.0);
+    for (int y = b.pMin.y; y < b.pMax.y; ++y)
+        for (int x = b.pMin.x; x < b.pMax.x; ++x) {
+            size_t k = size_t(BlockIndex(y - b.pMin.y, h, ny)) * nx +
+                       size_t(BlockIndex(x - b.pMin.x, w, nx));
+            sum[k] += double(value(Point2i(x, y)));
+            count[k] += 1;
+        }
+    RunningStats s;
+    for (size_t k = 0; k < sum.size(); ++k) s.Add(sum[k] / count[k]);
+    return s;
+}
+
 // The mean of a thermal film's channel ("L", "T") over its pixels, with its standard error
+// (BlockStats)
 inline RunningStats ThermalChannelStats(const RenderedScene& r, const char* channel) {
     Image img = r.scene->job->film->GetImage(nullptr);
     int c = img.ChannelIndex(channel);
     EXPECT_GE(c, 0) << channel;
-    RunningStats s;
-    for (int y = 0; y < img.Resolution().y; ++y)
-        for (int x = 0; x < img.Resolution().x; ++x) s.Add(img.GetChannel({x, y}, c));
-    return s;
+    return BlockStats(Bounds2i{{0, 0}, img.Resolution()},
+                      [&](Point2i p) { return img.GetChannel(p, c); });
 }
 
 // An equilibrium cavity render at temperature T (label: what it holds): no warnings, and the
-// image mean B(T) within 4 standard errors of the pixel noise (plus 1e-3), the test able to see
-// a 0.5 % error.
-inline void ExpectBlackbodyImage(const RenderedScene& r, double T, const std::string& label) {
+// image mean B(T) (times `expected`, a measured residual) within 4 standard errors of the noise
+// (plus 1e-3; BlockStats), the test able to see a 0.5 % error.
+inline void ExpectBlackbodyImage(const RenderedScene& r, double T, const std::string& label,
+                                 double expected = 1) {
     for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
     const double B = BlackbodyLuminance(T);
-    RunningStats s;
-    Bounds2i b = r.scene->job->film->PixelBounds();
-    for (int y = b.pMin.y; y < b.pMax.y; ++y)
-        for (int x = b.pMin.x; x < b.pMax.x; ++x) s.Add(PixelY(*r.scene, {x, y}) / B);
+    RunningStats s = BlockStats(r.scene->job->film->PixelBounds(),
+                                [&](Point2i p) { return PixelY(*r.scene, p) / B; });
     double se = s.StandardError();
     std::printf("%-38s %5.0f K: mean %.5f of B(T), standard error %.5f\n", label.c_str(), T,
                 s.Mean(), se);
     EXPECT_LT(4 * se, 0.005);
-    EXPECT_NEAR(s.Mean(), 1, 4 * se + 1e-3);
+    EXPECT_NEAR(s.Mean(), expected, 4 * se + 1e-3);
 }
 
-// A render's noise from two seeds: the image's mean luminance over both, its standard error, and
-// the per-pixel variance (half the mean squared difference of the two renders). sceneText(seed)
-// gives the scene; seeds seed and seed + 1.
+// A render's noise from two seeds: the image's mean luminance over both, its standard error
+// (from the two renders' difference in blocks, as BlockStats), and the per-pixel variance (half
+// the mean squared difference of the two renders). sceneText(seed) gives the scene; seeds seed
+// and seed + 1.
 struct TwoSeedNoise {
     double mean, se, variance;
 };
 template <typename SceneText>
 TwoSeedNoise RenderTwoSeeds(SceneText sceneText, int seed) {
     std::vector<double> a, b;
+    Bounds2i bounds;
     for (auto [image, s] : {std::pair{&a, seed}, std::pair{&b, seed + 1}}) {
         RenderedScene r = RenderText(sceneText(s));
-        Bounds2i bounds = r.scene->job->film->PixelBounds();
+        bounds = r.scene->job->film->PixelBounds();
         for (int y = bounds.pMin.y; y < bounds.pMax.y; ++y)
             for (int x = bounds.pMin.x; x < bounds.pMax.x; ++x)
                 image->push_back(PixelY(*r.scene, {x, y}));
@@ -179,7 +209,15 @@ TwoSeedNoise RenderTwoSeeds(SceneText sceneText, int seed) {
         sq += (a[i] - b[i]) * (a[i] - b[i]);
     }
     double n = double(a.size()), variance = sq / (2 * n);
-    return {(sumA + sumB) / (2 * n), std::sqrt(variance / (2 * n)), variance};
+    // The mean over both images has a quarter of the variance of the difference's mean, which
+    // the blocks of the difference (mean 0) estimate
+    const int w = bounds.pMax.x - bounds.pMin.x;
+    RunningStats d = BlockStats(Bounds2i{{0, 0}, {w, int(a.size()) / w}}, [&](Point2i p) {
+        size_t i = size_t(p.y) * size_t(w) + size_t(p.x);
+        return a[i] - b[i];
+    });
+    double meanSquare = d.Variance() * (d.Count() - 1) / d.Count() + Sqr(d.Mean());
+    return {(sumA + sumB) / (2 * n), std::sqrt(meanSquare / d.Count()) / 2, variance};
 }
 
 // The scene rendered with `integrator` (the technique on, seeds 1, 2) and with `pbrtWay` (seeds

@@ -15,7 +15,10 @@ namespace {
 
 std::string SkyScene(double T, const std::string& film, int spp) {
     std::ostringstream s;
-    s << "Film \"spectral\" \"integer xresolution\" 8 \"integer yresolution\" 8 " << film << "\n"
+    // Too few pixels for blocks (testing::BlockStats): each pixel its own samples
+    s << "Film \"spectral\" \"integer xresolution\" 8 \"integer yresolution\" 8 "
+         "\"string reconstruction\" \"importance\" "
+      << film << "\n"
       << "Sampler \"zsobol\" \"integer pixelsamples\" " << spp << "\n"
       << "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\"\nWorldBegin\n"
       << "LightSource \"infinite\" \"float temperature\" " << T << "\n";

@@ -39,10 +39,8 @@ std::pair<double, double> MeanAndError(const std::string& scene) {
     testing::RenderedScene r = testing::RenderText(scene);
     for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
     EXPECT_EQ(r.scene->job->film->NonFiniteSampleCount(), 0);
-    RunningStats s;
-    Bounds2i b = r.scene->job->film->PixelBounds();
-    for (int y = b.pMin.y; y < b.pMax.y; ++y)
-        for (int x = b.pMin.x; x < b.pMax.x; ++x) s.Add(testing::PixelY(*r.scene, {x, y}));
+    RunningStats s = testing::BlockStats(r.scene->job->film->PixelBounds(),
+                                         [&](Point2i p) { return testing::PixelY(*r.scene, p); });
     return {s.Mean(), s.StandardError()};
 }
 

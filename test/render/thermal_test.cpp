@@ -21,6 +21,8 @@ namespace {
 
 // Luminance Y = int B ybar / int ybar of a blackbody, W m^-2 sr^-1 nm^-1 (the film's
 // convention), by the same 1 nm sum the film's colour matching uses.
+// Pixel luminance statistics (pixels are independent estimates: the cavity's film gives each
+// pixel its own samples)
 RunningStats ImageLuminance(const Scene& scene) {
     RunningStats stats;
     Bounds2i b = scene.job->film->PixelBounds();
@@ -33,7 +35,10 @@ RunningStats ImageLuminance(const Scene& scene) {
 // copper sphere, a coated body and a rough platinum disk, everything at temperature T.
 std::string Cavity(double T, const std::string& model, int spp) {
     std::ostringstream s;
-    s << "Film \"rgb\" \"integer xresolution\" 12 \"integer yresolution\" 12\n"
+    // Each pixel its own samples (too few pixels for testing::BlockStats; the test below
+    // takes the pixels' spread as the noise of independent estimates)
+    s << "Film \"rgb\" \"integer xresolution\" 12 \"integer yresolution\" 12 "
+         "\"string reconstruction\" \"importance\"\n"
       << "Sampler \"zsobol\" \"integer pixelsamples\" " << spp << "\n"
       << "Integrator \"path\" \"integer maxdepth\" 400\n"
       << "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 70\n"

@@ -77,4 +77,16 @@ inline CameraSample GetCameraSample(Sampler& sampler, Point2i pPixel, const Filt
     return cs;
 }
 
+// The same with the film position uniform over pixel pPixel and filter weight 1, for films that
+// spread each sample over the pixels near it (PixelReconstruction::Spread).
+inline CameraSample GetUniformCameraSample(Sampler& sampler, Point2i pPixel) {
+    Point2f u = sampler.GetPixel2D();
+    CameraSample cs;
+    cs.pFilm = Point2f(pPixel.x + u.x, pPixel.y + u.y);
+    cs.filterWeight = 1;
+    cs.time = sampler.Get1D();
+    cs.pLens = sampler.Get2D();
+    return cs;
+}
+
 }  // namespace kiln

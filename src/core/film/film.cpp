@@ -192,6 +192,24 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
         }
     }
     o.stokes = stokes;
+    // Pixel reconstruction: spread, except on a film with AOV layers (their per-pixel
+    // statistics, Variance and RelativeVariance, are of the pixel's own samples in pbrt-v4),
+    // without jitter (every sample at its pixel's centre) or with a filter wider than
+    // kMaxSpreadRadius
+    std::string reconstruction =
+        params.GetOneString("reconstruction", aovs ? "importance" : "spread");
+    if (reconstruction != "spread" && reconstruction != "importance")
+        throw SceneError(params.Loc("reconstruction"),
+                         "unknown reconstruction \"" + reconstruction +
+                             "\" (expected \"spread\" or \"importance\")",
+                         reconstruction);
+    Vector2f radius = filter.Radius();
+    o.reconstruction = request.reconstruction.value_or(reconstruction == "spread"
+                                                           ? PixelReconstruction::Spread
+                                                           : PixelReconstruction::FilterImportance);
+    if (!request.pixelJitter.value_or(true) || radius.x > kMaxSpreadRadius ||
+        radius.y > kMaxSpreadRadius)
+        o.reconstruction = PixelReconstruction::FilterImportance;
     // A thermal film's "sensor" is its band (ThermalSensor); its pixel sensor is not used
     PixelSensor sensor = o.thermal
                              ? PixelSensor(colorSpace, 0, 1)
@@ -223,59 +241,6 @@ Bounds2f RGBFilm::SampleBounds() const {
 size_t RGBFilm::PixelIndex(Point2i p) const {
     const Bounds2i& b = opts.pixelBounds;
     return size_t(p.y - b.pMin.y) * size_t(b.pMax.x - b.pMin.x) + size_t(p.x - b.pMin.x);
-}
-
-void RGBFilm::AddSample(Point2i pPixel, const SampledSpectrum& L, const Stokes* S,
-                        const SampledWavelengths& lambda, const VisibleSurface* visibleSurface,
-                        Float weight) {
-    // Reject NaN/Inf radiance and weights, and radiance so large that its sensor response
-    // overflows float (a finite spectrum near 1e38 times the matching functions): count them,
-    // remember the first pixel. Nothing of a rejected sample reaches any layer.
-    size_t idx = PixelIndex(pPixel);
-    auto reject = [&] {
-        nonFiniteCount.fetch_add(1, std::memory_order_relaxed);
-        int64_t expected = -1;
-        firstNonFinite.compare_exchange_strong(expected, int64_t(idx));
-    };
-    if (!(std::isfinite(weight) && L.IsFinite() && (!S || S->IsFinite()))) return reject();
-    // Sensor response, clamped to maxComponentValue preserving ratios (pbrt-v4).
-    RGB rgb = Response(L, lambda);
-    auto finite = [](const RGB& c) {
-        return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
-    };
-    if (!finite(rgb)) return reject();
-    Float m = std::max({rgb.r, rgb.g, rgb.b}), scale = 1;
-    if (m > opts.maxComponentValue) scale = opts.maxComponentValue / m;
-    rgb = rgb * scale;
-    std::array<RGB, 3> stokes;
-    bool withStokes = S && !stokesPixels.empty();
-    if (withStokes)
-        for (int k = 1; k < 4; ++k) {
-            stokes[k - 1] = Response((*S)[k], lambda) * scale;
-            if (!finite(stokes[k - 1])) return reject();
-        }
-    Pixel& px = pixels[idx];
-    for (int c = 0; c < 3; ++c) px.rgbSum[c] += double(weight) * rgb[c];
-    px.weightSum += weight;
-    if (withStokes) {
-        StokesPixel& sp = stokesPixels[idx];
-        for (int k = 0; k < 3; ++k)
-            for (int c = 0; c < 3; ++c) sp.rgbSum[k][c] += double(weight) * stokes[k][c];
-    }
-    if (!buckets.Empty()) {
-        // Spectral radiance clamped to maxComponentValue on its own (pbrt-v4)
-        Float lm = L.MaxComponentValue();
-        buckets.Add(idx, lm > opts.maxComponentValue ? L * (opts.maxComponentValue / lm) : L,
-                    lambda, weight);
-    }
-
-    if (!aovs.Empty() && visibleSurface && visibleSurface->set) {
-        // Albedo as the colour of the reflectance under the colour space's illuminant (an
-        // albedo of 1 gives RGB (1, 1, 1)).
-        SampledSpectrum lit = visibleSurface->albedo * colorSpace->Illuminant().Sample(lambda);
-        RGB a = colorSpace->ToRGB(SpectrumToXYZ(lit, lambda));
-        aovs.Add(idx, *visibleSurface, a, rgb, weight);
-    }
 }
 
 void RGBFilm::EnableSplats() {

@@ -9,6 +9,7 @@
 // Pixel RGB values are linear in the film's output colour space.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -75,6 +76,18 @@ Point2f DaylightChromaticity(Float T);
 // Bradford von Kries chromatic adaptation matrix (XYZ -> XYZ) from white srcW to white dstW.
 ColorMatrix WhiteBalance(Point2f srcW, Point2f dstW);
 
+// How pixel samples become pixel values (Film "string reconstruction"). Both estimate the
+// same filtered image, sum(f L) / sum(f) over the samples near a pixel centre:
+//   FilterImportance ("importance", pbrt-v4): a sample's position is drawn from the filter
+//     around its pixel's centre and it counts for that pixel alone, with weight f / pdf.
+//   Spread ("spread", kiln's default, as pbrt-v3's film tiles and Mitsuba 3's image blocks): a
+//     sample is drawn uniformly over its pixel and counts for every pixel whose centre lies
+//     within the filter's radius, with weight f. Each pixel then averages the samples of its
+//     neighbours as well: with pbrt-v4's default Gaussian (radius 1.5, sigma 0.5) about a third
+//     of the per-pixel variance for the same samples, the noise correlated over the filter's
+//     footprint instead of independent per pixel.
+enum class PixelReconstruction { FilterImportance, Spread };
+
 // RGBFilm Definition
 class RGBFilm {
   public:
@@ -113,6 +126,9 @@ class RGBFilm {
         std::optional<Bounds2f> cropWindow;
         std::optional<Bounds2i> pixelBounds;
         std::optional<bool> stokes;
+        std::optional<PixelReconstruction> reconstruction;  // replaces "reconstruction"
+        // false (Option "disablepixeljitter"): samples at pixel centres, never spread
+        std::optional<bool> pixelJitter;
         Transform cameraFromRender, worldFromRender;
     };
     static RGBFilm* Create(const std::string& type, const ParameterDictionary& params,
@@ -135,6 +151,7 @@ class RGBFilm {
         int spectralBuckets = 0;  // 0: no spectral layer
         Float lambdaMin = Lambda_min, lambdaMax = Lambda_max;
         std::optional<ThermalSensor> thermal;  // film "thermal"
+        PixelReconstruction reconstruction = PixelReconstruction::FilterImportance;
     };
     // outputFromRender: render space to the AOV layers' space (opts.aovSpace).
     RGBFilm(const Options& options, const PixelSensor& sensor, const Filter& filter,
@@ -154,6 +171,19 @@ class RGBFilm {
 
     Point2i FullResolution() const { return opts.fullResolution; }
     Bounds2i PixelBounds() const { return opts.pixelBounds; }
+
+    // Pixel reconstruction (PixelReconstruction). With Spread, the pixels whose samples reach
+    // the pixel bounds: the bounds grown by SpreadMargin() on each side (pixels up to the
+    // filter's radius beyond the edge, as pbrt-v4's filter offsets reach), and the resolution
+    // a sampler must cover to give each of them its own samples when pixel p is passed to it
+    // as p + SpreadMargin().
+    PixelReconstruction Reconstruction() const { return opts.reconstruction; }
+    Vector2i SpreadMargin() const;
+    Bounds2i SpreadPixelBounds() const;
+    Point2i SamplerResolution() const;
+    // Filters whose radius exceeds this (pixels, either axis) are importance-sampled whatever
+    // "reconstruction" says: a spread sample costs (2 radius)^2 pixel updates.
+    static constexpr Float kMaxSpreadRadius = 4;
     // Raster-space area over which samples contribute (pixel bounds grown by the filter
     // radius minus half a pixel, pbrt-v4).
     Bounds2f SampleBounds() const;
@@ -201,6 +231,19 @@ class RGBFilm {
     void AddSample(Point2i pPixel, const Stokes& S, const SampledWavelengths& lambda,
                    const VisibleSurface* visibleSurface, Float weight) {
         AddSample(pPixel, S[0], &S, lambda, visibleSurface, weight);
+    }
+
+    // A sample taken uniformly over its pixel at raster position pFilm (Spread
+    // reconstruction): added, like AddSample, to every pixel of the bounds whose centre lies
+    // within the filter's radius of pFilm, with weight f(pFilm - centre). Thread-safe as long
+    // as no other thread writes those pixels (renderer.cpp: tiles in four phases).
+    void SpreadSample(Point2f pFilm, const SampledSpectrum& L, const SampledWavelengths& lambda,
+                      const VisibleSurface* visibleSurface) {
+        SpreadSample(pFilm, L, nullptr, lambda, visibleSurface);
+    }
+    void SpreadSample(Point2f pFilm, const Stokes& S, const SampledWavelengths& lambda,
+                      const VisibleSurface* visibleSurface) {
+        SpreadSample(pFilm, S[0], &S, lambda, visibleSurface);
     }
 
     // Splats (pbrt-v4's RGBFilm::AddSplat, for light tracing): radiance arriving at raster
@@ -267,9 +310,26 @@ class RGBFilm {
         }
         return sensor.ToSensorRGB(L, lambda);
     }
+    // A sample's contribution as every layer records it (clamped to maxComponentValue)
+    struct SampleResponse {
+        RGB rgb;
+        std::array<RGB, 3> stokes;  // S1..S3 (withStokes)
+        bool withStokes = false;
+        SampledSpectrum L;  // for the spectral buckets
+        RGB albedo;         // for the AOV layers (visibleSurface set)
+    };
+    // The response, or nullopt for a sample that must be rejected (non-finite)
+    std::optional<SampleResponse> Respond(const SampledSpectrum& L, const Stokes* S,
+                                          const SampledWavelengths& lambda,
+                                          const VisibleSurface* visibleSurface) const;
+    void Accumulate(size_t index, const SampleResponse& r, const SampledWavelengths& lambda,
+                    const VisibleSurface* visibleSurface, Float weight);
+    void Reject(size_t index);
     void AddSample(Point2i pPixel, const SampledSpectrum& L, const Stokes* S,
                    const SampledWavelengths& lambda, const VisibleSurface* visibleSurface,
                    Float weight);
+    void SpreadSample(Point2f pFilm, const SampledSpectrum& L, const Stokes* S,
+                      const SampledWavelengths& lambda, const VisibleSurface* visibleSurface);
 
     Options opts;
     PixelSensor sensor;

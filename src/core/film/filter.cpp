@@ -63,9 +63,8 @@ GaussianFilter::GaussianFilter(Vector2f radius, Float sigma)
       expY(Float(Gaussian(radius.y, 0, sigma))),
       sampler(Filter(this)) {}
 
-Float GaussianFilter::Evaluate(Point2f p) const {
-    return std::max<Float>(0, Float(Gaussian(p.x, 0, sigma)) - expX) *
-           std::max<Float>(0, Float(Gaussian(p.y, 0, sigma)) - expY);
+Float GaussianFilter::Evaluate1D(int axis, Float x) const {
+    return std::max<Float>(0, Float(Gaussian(x, 0, sigma)) - (axis ? expY : expX));
 }
 
 Float GaussianFilter::Integral() const {

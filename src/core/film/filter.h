@@ -50,9 +50,10 @@ class BoxFilter {
   public:
     explicit BoxFilter(Vector2f radius = Vector2f(0.5f, 0.5f)) : radius(radius) {}
     Vector2f Radius() const { return radius; }
-    Float Evaluate(Point2f p) const {
-        return (std::abs(p.x) <= radius.x && std::abs(p.y) <= radius.y) ? 1 : 0;
+    Float Evaluate1D(int axis, Float x) const {
+        return std::abs(x) <= (axis ? radius.y : radius.x) ? 1 : 0;
     }
+    Float Evaluate(Point2f p) const { return Evaluate1D(0, p.x) * Evaluate1D(1, p.y); }
     Float Integral() const { return 2 * radius.x * 2 * radius.y; }
     FilterSample Sample(Point2f u) const {
         return {Point2f(Lerp(u.x, -radius.x, radius.x), Lerp(u.y, -radius.y, radius.y)), 1};
@@ -68,7 +69,8 @@ class GaussianFilter {
   public:
     GaussianFilter(Vector2f radius, Float sigma = 0.5f);
     Vector2f Radius() const { return radius; }
-    Float Evaluate(Point2f p) const;
+    Float Evaluate1D(int axis, Float x) const;
+    Float Evaluate(Point2f p) const { return Evaluate1D(0, p.x) * Evaluate1D(1, p.y); }
     Float Integral() const;
     FilterSample Sample(Point2f u) const { return sampler.Sample(u); }
 
@@ -84,9 +86,10 @@ class MitchellFilter {
   public:
     MitchellFilter(Vector2f radius, Float b = 1.f / 3.f, Float c = 1.f / 3.f);
     Vector2f Radius() const { return radius; }
-    Float Evaluate(Point2f p) const {
-        return Mitchell1D(2 * p.x / radius.x) * Mitchell1D(2 * p.y / radius.y);
+    Float Evaluate1D(int axis, Float x) const {
+        return Mitchell1D(2 * x / (axis ? radius.y : radius.x));
     }
+    Float Evaluate(Point2f p) const { return Evaluate1D(0, p.x) * Evaluate1D(1, p.y); }
     Float Integral() const { return radius.x * radius.y / 4; }
     FilterSample Sample(Point2f u) const { return sampler.Sample(u); }
 
@@ -103,9 +106,10 @@ class LanczosSincFilter {
   public:
     LanczosSincFilter(Vector2f radius, Float tau = 3.f);
     Vector2f Radius() const { return radius; }
-    Float Evaluate(Point2f p) const {
-        return WindowedSinc(p.x, radius.x, tau) * WindowedSinc(p.y, radius.y, tau);
+    Float Evaluate1D(int axis, Float x) const {
+        return WindowedSinc(x, axis ? radius.y : radius.x, tau);
     }
+    Float Evaluate(Point2f p) const { return Evaluate1D(0, p.x) * Evaluate1D(1, p.y); }
     // Separable; each factor integrated numerically once at construction.
     Float Integral() const { return integral; }
     FilterSample Sample(Point2f u) const { return sampler.Sample(u); }
@@ -123,10 +127,10 @@ class TriangleFilter {
   public:
     explicit TriangleFilter(Vector2f radius = Vector2f(2, 2)) : radius(radius) {}
     Vector2f Radius() const { return radius; }
-    Float Evaluate(Point2f p) const {
-        return std::max<Float>(0, radius.x - std::abs(p.x)) *
-               std::max<Float>(0, radius.y - std::abs(p.y));
+    Float Evaluate1D(int axis, Float x) const {
+        return std::max<Float>(0, (axis ? radius.y : radius.x) - std::abs(x));
     }
+    Float Evaluate(Point2f p) const { return Evaluate1D(0, p.x) * Evaluate1D(1, p.y); }
     Float Integral() const { return Sqr(radius.x) * Sqr(radius.y); }
     FilterSample Sample(Point2f u) const {
         return {Point2f(SampleTent(u.x, radius.x), SampleTent(u.y, radius.y)), 1};
@@ -149,6 +153,10 @@ class Filter : public ClosedSet<const BoxFilter*, const GaussianFilter*, const M
     }
     Float Evaluate(Point2f p) const {
         return Dispatch([&](auto f) { return f->Evaluate(p); });
+    }
+    // Every filter is separable: Evaluate(p) = Evaluate1D(0, p.x) * Evaluate1D(1, p.y).
+    Float Evaluate1D(int axis, Float x) const {
+        return Dispatch([&](auto f) { return f->Evaluate1D(axis, x); });
     }
     // Integral of f over its support (pixel^2).
     Float Integral() const {

@@ -157,6 +157,7 @@ constexpr std::string_view kNames[] = {
     "preset",
     "radius",
     "randomization",
+    "reconstruction",
     "reflectance",
     "reflectedtemperature",
     "regularize",
