@@ -140,10 +140,12 @@ TEST(VolumeTest, ShadowRaysThroughASlabFollowBeerLambert) {
         auto [ratio, se] = MeanRatio(*slab.scene, *open.scene);
         std::printf("shadow transmittance %.5f (expected %.5f, se %.5f)\n", ratio, std::exp(-c.tau),
                     se);
-        // Open: both media read about 1 % above Beer-Lambert (16 seeds, either pixel
-        // reconstruction: homogeneous 1.0088, grid 1.0106 of exp(-tau), each +- 0.0015), an excess
-        // the per-pixel standard errors this test used before could not see; cause not found.
-        // Held to it, so that a change either way fails.
+        // Both media read about 1 % above Beer-Lambert (16 seeds, either pixel reconstruction:
+        // homogeneous 1.0088, grid 1.0106 of exp(-tau), each +- 0.0015), an excess the per-pixel
+        // standard errors this test used before could not see. pbrt-v4 renders the same scene at
+        // 1.0082 of it (homogeneous, three seeds), and a pure absorber of the same sigma_t
+        // reads 1.0008 +- 0.0009 in kiln: it comes with the scattering, and kiln matches
+        // pbrt-v4; its cause is not traced. Held to it, so that a change either way fails.
         constexpr double kMeasuredExcess = 1.0097;
         EXPECT_NEAR(ratio, kMeasuredExcess * std::exp(-c.tau), 4 * se + 0.002);
         EXPECT_LT(4 * se, 0.02);
