@@ -48,11 +48,10 @@ TEST(UniformEnvironment, LeftOutOfLightSamplingByDefaultAndSwitchable) {
                           &RenderOptions::skipUniformEnvironment);
 }
 
-// Under path, less noise on the lit floor: per-pixel variance 0.22 of pbrt-v4's way here
-// (seeds 1, 2 against 3, 4; the same seeds both ways give 0.47, or 0.55 with each pixel its
-// own samples). In the haze under volpath the
-// scattering's noise dominates: the same image, no less noise (measured 1.01), which the bound
-// there only keeps from growing.
+// Under path, less noise on the lit floor: per-pixel variance 0.52 of pbrt-v4's way (seeds 1 to
+// 4 both ways; 0.55 with each pixel its own samples). In the haze under volpath the scattering's
+// noise dominates: the same image, no less noise (measured 0.98), which the bound there only
+// keeps from growing.
 TEST(UniformEnvironment, SameImageAsSamplingItWithLessNoise) {
     for (bool volumetric : {false, true})
         testing::ExpectSameImageWithLessNoise(
@@ -60,7 +59,7 @@ TEST(UniformEnvironment, SameImageAsSamplingItWithLessNoise) {
             [&](const std::string& integrator, int seed) {
                 return FloorUnderSky(integrator, seed, volumetric);
             },
-            "\"bool skipuniformenvironment\" false", volumetric ? 1.3 : 0.5);
+            "\"bool skipuniformenvironment\" false", volumetric ? 1.3 : 0.7);
 }
 
 }  // namespace
