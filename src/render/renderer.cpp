@@ -23,15 +23,16 @@ namespace kiln {
 
 namespace {
 
-// What the pixel loop does differently per scene, fixed for the whole render: each
-// combination is its own instantiation of the loop, so a render pays for none of the options
-// it does not use (no per-sample tests).
 // Where a pixel's samples lie and which pixels they count for
 enum class PixelPlacement {
     FilterImportance,  // drawn from the filter around the pixel's centre; that pixel alone
     Centre,            // Option "disablepixeljitter": at the centre, that pixel alone
     Spread             // uniform over the pixel; every pixel within the filter's radius
 };
+
+// What the pixel loop does differently per scene, fixed for the whole render: each
+// combination is its own instantiation of the loop, so a render pays for none of the options
+// it does not use (no per-sample tests).
 struct PixelFeatures {
     bool aovs;              // the film writes albedo/normal/depth layers (first-hit data)
     bool singleWavelength;  // one wavelength per path (comparisons) instead of 4
