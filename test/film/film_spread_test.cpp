@@ -77,6 +77,15 @@ TEST(FilmSpread, TheReconstructionIsChosenOnceAtCreation) {
     GaussianFilter wide(Vector2f(6, 1.5f));
     f.filter = Filter(&wide);
     EXPECT_EQ(f.Make(SmallRes())->Reconstruction(), PixelReconstruction::FilterImportance);
+    // A box narrower than a pixel too: most samples spread over the pixel would reach no
+    // pixel centre
+    BoxFilter narrow(Vector2f(0.5f, 0.1f));
+    f.filter = Filter(&narrow);
+    EXPECT_EQ(f.Make(SmallRes())->Reconstruction(), PixelReconstruction::FilterImportance);
+    BoxFilter pixel(Vector2f(0.5f, 0.5f));
+    f.filter = Filter(&pixel);
+    EXPECT_EQ(f.Make(SmallRes())->Reconstruction(), PixelReconstruction::Spread);
+    EXPECT_EQ(f.Make(SmallRes())->SpreadMargin(), Vector2i(0, 0));
     // The triangle's radius 2 reaches two pixels beyond
     TriangleFilter tri(Vector2f(2, 2));
     f.filter = Filter(&tri);

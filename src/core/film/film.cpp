@@ -194,8 +194,9 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
     o.stokes = stokes;
     // Pixel reconstruction: spread, except on a film with AOV layers (their per-pixel
     // statistics, Variance and RelativeVariance, are of the pixel's own samples in pbrt-v4),
-    // without jitter (every sample at its pixel's centre) or with a filter wider than
-    // kMaxSpreadRadius
+    // without jitter (every sample at its pixel's centre), or with a filter wider than
+    // kMaxSpreadRadius or narrower than its pixel (radius below 1/2: most samples spread
+    // uniformly over the pixel would reach no pixel centre)
     std::string reconstruction =
         params.GetOneString("reconstruction", aovs ? "importance" : "spread");
     if (reconstruction != "spread" && reconstruction != "importance")
@@ -208,7 +209,7 @@ RGBFilm* RGBFilm::Create(const std::string& type, const ParameterDictionary& par
                                                            ? PixelReconstruction::Spread
                                                            : PixelReconstruction::FilterImportance);
     if (!request.pixelJitter.value_or(true) || radius.x > kMaxSpreadRadius ||
-        radius.y > kMaxSpreadRadius)
+        radius.y > kMaxSpreadRadius || radius.x < 0.5f || radius.y < 0.5f)
         o.reconstruction = PixelReconstruction::FilterImportance;
     // A thermal film's "sensor" is its band (ThermalSensor); its pixel sensor is not used
     PixelSensor sensor = o.thermal

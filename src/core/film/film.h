@@ -182,7 +182,8 @@ class RGBFilm {
     Bounds2i SpreadPixelBounds() const;
     Point2i SamplerResolution() const;
     // Filters whose radius exceeds this (pixels, either axis) are importance-sampled whatever
-    // "reconstruction" says: a spread sample costs (2 radius)^2 pixel updates.
+    // "reconstruction" says: a spread sample costs (2 radius)^2 pixel updates. So are filters
+    // narrower than a pixel (radius below 1/2, either axis).
     static constexpr Float kMaxSpreadRadius = 4;
     // Raster-space area over which samples contribute (pixel bounds grown by the filter
     // radius minus half a pixel, pbrt-v4).
