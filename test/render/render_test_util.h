@@ -139,7 +139,8 @@ inline int BlocksAlong(int extent) { return std::max(1, extent / 4); }
 // standard error: the statistics of the means of blocks of about 4 x 4 pixels. A spread film
 // (RGBFilm::SpreadSample) counts each sample for the pixels within the filter's radius, so
 // neighbouring pixels' noise is correlated and per-pixel statistics would understate the
-// mean's standard error; blocks several radii wide are nearly independent. Mean() is the
+// mean's standard error; blocks several filter radii wide are nearly independent (4 pixels:
+// for filters up to pbrt-v4's default Gaussian, radius 1.5). Mean() is the
 // mean of the block means (the pixel mean when the blocks are equal).
 template <typename PixelValue>
 RunningStats BlockStats(Bounds2i b, PixelValue value) {
