@@ -104,7 +104,8 @@ class PythonScene {
     py::array_t<float> Render(std::optional<int> spp, std::optional<int> seed, int threads,
                               std::optional<std::array<Float, 4>> crop, std::optional<int> frame,
                               std::optional<double> time, double fps,
-                              std::optional<std::string> emission, std::optional<bool> stokes) {
+                              std::optional<std::string> emission, std::optional<bool> stokes,
+                              std::optional<std::string> reconstruction) {
         RenderOptions options = created;
         options.samplesPerPixel = spp;
         options.seed = seed;
@@ -132,6 +133,13 @@ class PythonScene {
         } else
             options.emission.reset();
         options.stokes = stokes;
+        options.spreadSamples.reset();
+        if (reconstruction) {
+            if (*reconstruction != "spread" && *reconstruction != "importance")
+                throw py::value_error("reconstruction \"" + *reconstruction +
+                                      "\": expected spread or importance");
+            options.spreadSamples = *reconstruction == "spread";
+        }
         if (threads < 0) throw py::value_error("threads must be >= 0 (0: all)");
 
         // What was built at load changes: create the scene again from the description
@@ -319,7 +327,8 @@ void RegisterScene(py::module_& m) {
         .def("render", &PythonScene::Render, py::kw_only(), py::arg("spp") = py::none(),
              py::arg("seed") = py::none(), py::arg("threads") = 0, py::arg("crop") = py::none(),
              py::arg("frame") = py::none(), py::arg("time") = py::none(), py::arg("fps") = 24.0,
-             py::arg("emission") = py::none(), py::arg("stokes") = py::none())
+             py::arg("emission") = py::none(), py::arg("stokes") = py::none(),
+             py::arg("reconstruction") = py::none())
         .def("set_temperature", &PythonScene::SetTemperature, py::arg("name"), py::arg("kelvin"),
              py::kw_only(), py::arg("kind") = "")
         .def("set_shape_temperature", &PythonScene::SetShapeTemperature, py::arg("index"),

@@ -99,11 +99,34 @@ def test_render_agrees_with_the_kiln_binary(scene_file, tmp_path):
     assert same.metadata["samples_per_pixel"] == 64 and same.metadata["seed"] == 1
     np.testing.assert_allclose(same.array(["R", "G", "B"]), ours, rtol=1e-3, atol=1e-7)
     theirs = kiln.load_string(scene_text()).render(spp=64, seed=2)
-    d = (ours - theirs).reshape(-1, 3)
+    # Means of 4 x 4 blocks: the film spreads each sample over the pixels within the filter's
+    # radius, so neighbouring pixels' differences are correlated
+    h, w = ours.shape[0] // 4 * 4, ours.shape[1] // 4 * 4
+    d = (ours - theirs)[:h, :w].reshape(h // 4, 4, w // 4, 4, 3).mean(axis=(1, 3)).reshape(-1, 3)
     n = d.shape[0]
     for c in range(3):
         z = d[:, c].mean() / (d[:, c].std(ddof=1) / math.sqrt(n))
         assert abs(z) < 4.5, f"channel {c}: mean difference {z:.2f} standard errors from 0"
+
+
+def test_reconstruction_spread_or_as_pbrt_v4(scene_file):
+    """Samples spread over the pixels within the filter's radius (default) or drawn from the
+    filter for one pixel (pbrt-v4): the same image, less per-pixel noise spread."""
+    scene = kiln.load(scene_file)
+    spread = [scene.render(spp=16, seed=s) for s in (1, 2)]
+    importance = [scene.render(spp=16, seed=s, reconstruction="importance") for s in (1, 2)]
+    def mean_and_error(a, b):
+        # the mean of both seeds; its standard error from 4 x 4 blocks of their difference
+        h, w = a.shape[0] // 4 * 4, a.shape[1] // 4 * 4
+        d = (a - b)[:h, :w].reshape(h // 4, 4, w // 4, 4, 3).mean(axis=(1, 3))
+        return (a.mean() + b.mean()) / 2, math.sqrt((d ** 2).mean() / d[..., 0].size) / 2
+    var_spread = ((spread[0] - spread[1]) ** 2).mean() / 2
+    var_importance = ((importance[0] - importance[1]) ** 2).mean() / 2
+    assert var_spread < 0.7 * var_importance
+    (m_s, e_s), (m_i, e_i) = mean_and_error(*spread), mean_and_error(*importance)
+    assert abs(m_s - m_i) < 5 * math.hypot(e_s, e_i)
+    with pytest.raises(ValueError, match="reconstruction"):
+        scene.render(spp=1, reconstruction="splat")
 
 
 def test_set_temperature_recreates_without_reading_the_file(scene_file):
