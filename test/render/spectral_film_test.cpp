@@ -13,11 +13,14 @@
 namespace kiln {
 namespace {
 
-std::string SkyScene(double T, const std::string& film, int spp) {
+// 8 x 8 pixels, each its own samples (too few pixels for testing::BlockStats), or 16 x 16 with
+// samples spread over the pixels within the filter's radius
+std::string SkyScene(double T, const std::string& film, int spp, bool spread = false) {
     std::ostringstream s;
-    // Too few pixels for blocks (testing::BlockStats): each pixel its own samples
-    s << "Film \"spectral\" \"integer xresolution\" 8 \"integer yresolution\" 8 "
-         "\"string reconstruction\" \"importance\" "
+    s << "Film \"spectral\" "
+      << (spread ? "\"integer xresolution\" 16 \"integer yresolution\" 16 "
+                 : "\"integer xresolution\" 8 \"integer yresolution\" 8 "
+                   "\"string reconstruction\" \"importance\" ")
       << film << "\n"
       << "Sampler \"zsobol\" \"integer pixelsamples\" " << spp << "\n"
       << "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\"\nWorldBegin\n"
@@ -25,9 +28,11 @@ std::string SkyScene(double T, const std::string& film, int spp) {
     return s.str();
 }
 
-void ExpectBandRadiance(const std::string& film, double lambdaMin, double lambdaMax, int n) {
+void ExpectBandRadiance(const std::string& film, double lambdaMin, double lambdaMax, int n,
+                        bool spread = false) {
     const double T = 2500;
-    testing::RenderedScene r = testing::RenderText(SkyScene(T, film, 256));
+    testing::RenderedScene r = testing::RenderText(SkyScene(T, film, spread ? 64 : 256, spread));
+    ASSERT_EQ(r.scene->features.spreadSamples, spread);
     for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
     Image image = r.scene->job->film->GetImage(nullptr);
     ASSERT_EQ(image.NChannels(), 3 + n);
@@ -35,9 +40,14 @@ void ExpectBandRadiance(const std::string& film, double lambdaMin, double lambda
         double l0 = lambdaMin + b * (lambdaMax - lambdaMin) / n;
         double l1 = lambdaMin + (b + 1) * (lambdaMax - lambdaMin) / n;
         double expected = planck_band_radiance(l0, l1, T) / (l1 - l0);
-        RunningStats s;
-        for (int y = 0; y < 8; ++y)
-            for (int x = 0; x < 8; ++x) s.Add(image.GetChannel({x, y}, 3 + b) / expected);
+        RunningStats s = testing::BlockStats(Bounds2i{{0, 0}, image.Resolution()}, [&](Point2i p) {
+            return image.GetChannel(p, 3 + b) / expected;
+        });
+        if (!spread) {  // each pixel an independent estimate
+            s = RunningStats();
+            for (int y = 0; y < 8; ++y)
+                for (int x = 0; x < 8; ++x) s.Add(image.GetChannel({x, y}, 3 + b) / expected);
+        }
         SCOPED_TRACE(image.ChannelNames()[size_t(3 + b)]);
         EXPECT_NEAR(s.Mean(), 1, 4 * s.StandardError() + 1e-4);
         EXPECT_LT(s.StandardError(), 0.02);
@@ -48,6 +58,11 @@ TEST(SpectralFilm, BucketsAreTheBandRadianceOfASkyAtATemperature) {
     ExpectBandRadiance("", 360, 830, 16);
     ExpectBandRadiance("\"integer nbuckets\" 5 \"float lambdamin\" 500 \"float lambdamax\" 600",
                        500, 600, 5);
+}
+
+// The buckets take spread samples with the same weights as R, G, B
+TEST(SpectralFilm, BucketsOfSpreadSamplesAreTheBandRadianceToo) {
+    ExpectBandRadiance("", 360, 830, 16, true);
 }
 
 TEST(SpectralFilm, ChannelsAreNamedAsPbrtV4NamesThem) {
