@@ -742,6 +742,8 @@ void Scene::SetJob(const RenderOptions& options, Diagnostics& diag) {
     CreateJobFilm(*this, *next, options, diag);
     CreateJobSamplerAndShader(*this, *next, options, diag);
     if (features.bidirectional) next->film->EnableSplats();
+    // The job's film decides the reconstruction (a job may ask for another, kiln's Python API)
+    features.spreadSamples = next->film->Reconstruction() == PixelReconstruction::Spread;
     job = std::move(next);
 }
 

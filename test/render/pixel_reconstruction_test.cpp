@@ -36,6 +36,16 @@ const char* const kImportance = "\"string reconstruction\" \"importance\"";
 TEST(PixelReconstruction, SpreadByDefaultAndSwitchable) {
     testing::ExpectSwitch(LitFloor, kImportance, &SceneFeatures::spreadSamples,
                           &RenderOptions::spreadSamples);
+    // A later job of the same scene (Scene::SetJob) may ask for the other
+    testing::RenderedScene r = testing::RenderText(LitFloor("", 1));
+    Diagnostics diag(nullptr);
+    RenderOptions importance;
+    importance.spreadSamples = false;
+    r.scene->SetJob(importance, diag);
+    EXPECT_FALSE(r.scene->features.spreadSamples);
+    EXPECT_EQ(r.scene->job->film->Reconstruction(), PixelReconstruction::FilterImportance);
+    r.scene->SetJob(RenderOptions{}, diag);
+    EXPECT_TRUE(r.scene->features.spreadSamples);
 }
 
 // The Gaussian's per-pixel variance for independent sample noise is integral(f^2) /

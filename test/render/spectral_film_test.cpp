@@ -40,14 +40,14 @@ void ExpectBandRadiance(const std::string& film, double lambdaMin, double lambda
         double l0 = lambdaMin + b * (lambdaMax - lambdaMin) / n;
         double l1 = lambdaMin + (b + 1) * (lambdaMax - lambdaMin) / n;
         double expected = planck_band_radiance(l0, l1, T) / (l1 - l0);
-        RunningStats s = testing::BlockStats(Bounds2i{{0, 0}, image.Resolution()}, [&](Point2i p) {
-            return image.GetChannel(p, 3 + b) / expected;
-        });
-        if (!spread) {  // each pixel an independent estimate
-            s = RunningStats();
+        // Blocks of spread pixels (neighbours share samples); independent pixels otherwise
+        auto value = [&](Point2i p) { return image.GetChannel(p, 3 + b) / expected; };
+        RunningStats s;
+        if (spread)
+            s = testing::BlockStats(Bounds2i{{0, 0}, image.Resolution()}, value);
+        else
             for (int y = 0; y < 8; ++y)
-                for (int x = 0; x < 8; ++x) s.Add(image.GetChannel({x, y}, 3 + b) / expected);
-        }
+                for (int x = 0; x < 8; ++x) s.Add(value({x, y}));
         SCOPED_TRACE(image.ChannelNames()[size_t(3 + b)]);
         EXPECT_NEAR(s.Mean(), 1, 4 * s.StandardError() + 1e-4);
         EXPECT_LT(s.StandardError(), 0.02);
