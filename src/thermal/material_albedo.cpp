@@ -186,7 +186,7 @@ SampledSpectrum BSDFReflectance::DirectionalAlbedo(Vector3f wo,
 SampledSpectrum BSDFReflectance::EquilibriumScale(Vector3f wo, const SampledWavelengths&) const {
     // Radiance in a body of index n is n^2 times that outside in equilibrium; pbrt-v4's
     // dielectrics face vacuum (their eta is relative)
-    if (CosTheta(wo) < 0 && bsdf && material && material->Is<DielectricMaterial>())
+    if (bsdf && bsdf.PointsInside(wo) && material && material->Is<DielectricMaterial>())
         if (const DielectricBxDF* d = bsdf.GetBxDF().GetIf<DielectricBxDF>())
             return SampledSpectrum(Sqr(d->Eta()));
     return SampledSpectrum(1.f);

@@ -90,7 +90,8 @@ class BSDFReflectance {
     // A(wo) in [0, 1] (the tables carry quadrature and interpolation errors of ~1e-5)
     SampledSpectrum DirectionalAlbedo(Vector3f wo, const SampledWavelengths& lambda) const;
     ReflectedPolarization LinearPolarization(Vector3f wo) const;
-    // eta^2 of a dielectric seen from inside (wo.z < 0), else 1 (surface_emission.h)
+    // eta^2 of a dielectric seen from inside (BSDF::PointsInside: below the geometric surface
+    // where the shading normal differs), else 1 (surface_emission.h)
     SampledSpectrum EquilibriumScale(Vector3f wo, const SampledWavelengths& lambda) const;
 
   private:

@@ -170,10 +170,9 @@ inline RunningStats ThermalChannelStats(const RenderedScene& r, const char* chan
 }
 
 // An equilibrium cavity render at temperature T (label: what it holds): no warnings, and the
-// image mean B(T) (times `expected`, a measured residual) within 4 standard errors of the noise
-// (plus 1e-3; BlockStats), the test able to see a 0.5 % error.
-inline void ExpectBlackbodyImage(const RenderedScene& r, double T, const std::string& label,
-                                 double expected = 1) {
+// image mean B(T) within 4 standard errors of the noise (plus 1e-3; BlockStats), the test able
+// to see a 0.5 % error.
+inline void ExpectBlackbodyImage(const RenderedScene& r, double T, const std::string& label) {
     for (const auto& w : r.warnings) ADD_FAILURE() << w.message;
     const double B = BlackbodyLuminance(T);
     RunningStats s = BlockStats(r.scene->job->film->PixelBounds(),
@@ -182,7 +181,7 @@ inline void ExpectBlackbodyImage(const RenderedScene& r, double T, const std::st
     std::printf("%-38s %5.0f K: mean %.5f of B(T), standard error %.5f\n", label.c_str(), T,
                 s.Mean(), se);
     EXPECT_LT(4 * se, 0.005);
-    EXPECT_NEAR(s.Mean(), expected, 4 * se + 1e-3);
+    EXPECT_NEAR(s.Mean(), 1, 4 * se + 1e-3);
 }
 
 // A render's noise from two seeds: the image's mean luminance over both, its standard error

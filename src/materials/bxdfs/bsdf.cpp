@@ -12,7 +12,7 @@ BSDF::BSDF(Normal3f ns, Vector3f dpdus, const BxDF& bxdf, Normal3f ngeom)
         Vector3f g = Normalize(Vector3f(ngeom));
         if (AbsDot(g, z) < 1 - 1e-6f) {
             fold = true;
-            ng = g;
+            ng = Dot(g, z) < 0 ? -g : g;
         }
     }
     Vector3f x = GramSchmidt(dpdus, z);
@@ -50,7 +50,16 @@ Value BSDF::f(Vector3f woRender, Vector3f wiRender, TransportMode mode) const {
         if constexpr (polarized) fm = fm * FoldMueller(wiRender);
         f += fm * (AbsCosTheta(mi) / AbsCosTheta(wi));
     }
+    if (!reflect && f) f = f * CrossingScale(wo, woRender, mode);
     return f;
+}
+
+Float BSDF::CrossingScale(Vector3f wo, Vector3f woRender, TransportMode mode) const {
+    if (!fold || mode != TransportMode::Radiance || (wo.z > 0) == (Dot(woRender, ng) > 0)) return 1;
+    Float eta = bxdf.RefractiveRatio();
+    if (eta == 1) return 1;
+    Float etap = wo.z > 0 ? eta : 1 / eta;
+    return Sqr(Sqr(etap));
 }
 
 template <typename Value>
@@ -76,6 +85,12 @@ std::optional<BSDFSampleOf<Value>> BSDF::Sample_f(Vector3f woRender, Float u, Po
         if constexpr (polarized) bs->f = bs->f * FoldMueller(w);
         bs->f = bs->f * (AbsCosTheta(RenderToLocal(bs->wi)) / cosW);
         bs->wi = w;
+    }
+    if (!reflect) {
+        if (Float scale = CrossingScale(wo, woRender, mode); scale != 1) {
+            bs->f = bs->f * scale;
+            bs->eta = 1 / bs->eta;  // the crossing the light makes
+        }
     }
     // A direction can come from either of its two pre-images: the density that MIS needs is
     // PDF()'s sum, not this sample's own

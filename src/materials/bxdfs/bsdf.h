@@ -17,6 +17,17 @@
 // light and BSDF sampling (MIS). A deliberate difference from pbrt-v4, visible only where
 // shading and geometric normals differ strongly.
 //
+// Folding puts wi on the right side for wo, but wo itself can lie on one side of the geometric
+// surface and the other of the shading one (near silhouettes of smooth-shaded meshes). For a
+// dielectric the BxDF then takes wo's medium for the other one: in Radiance mode it scales a
+// transmission by 1 / eta'^2 for light crossing the wrong way (eta' = eta seen from inside,
+// 1 / eta seen from outside). kiln scales it for the crossing the light makes, from wi's side
+// of the geometric surface to wo's: the BxDF's value times eta'^4, eta' the shading frame's. A
+// surface in equilibrium with n^2 B in its body then still sends n^2 B on wo's geometric side
+// (with PointsInside deciding which side its emission is on); pbrt-v4 (no such case: it
+// scales by the shading side) renders a closed cavity holding a smooth-shaded glass mesh 0.4 %
+// dark. Importance mode has no 1 / eta'^2 and is unchanged.
+//
 // Polarised transport (Value = MuellerMatrix): f and Sample_f return Mueller matrices between
 // the implicit frames of render-space directions (spectral/polarization.h): light arriving
 // along -wi with reference axis StokesBasis(-wi), leaving along wo with StokesBasis(wo). A
@@ -69,11 +80,20 @@ class BSDF {
     }
     const BxDF& GetBxDF() const { return bxdf; }
 
+    // Whether wLocal (shading frame) points into the body: below the geometric surface where
+    // the BSDF folds, else below the shading one.
+    bool PointsInside(Vector3f wLocal) const {
+        return fold ? Dot(LocalToRender(wLocal), ng) < 0 : wLocal.z < 0;
+    }
+
   private:
     // Mirror image of w about the geometric tangent plane.
     Vector3f Mirror(Vector3f w) const { return w - 2 * Dot(w, ng) * ng; }
     // Whether w leaves on wo's side of the geometric surface.
     bool SameSide(Vector3f wo, Vector3f w) const { return Dot(wo, ng) * Dot(w, ng) > 0; }
+    // The factor (above) for a transmission from local wo, which lies on woRender's geometric
+    // side: 1 unless the shading frame puts wo on the other side of a refracting BxDF.
+    Float CrossingScale(Vector3f wo, Vector3f woRender, TransportMode mode) const;
     // A BxDF's Mueller matrix for local wo, wi re-expressed in the implicit frames of woRender
     // and wiRender.
     MuellerMatrix ToRenderFrames(const MuellerMatrix& M, Vector3f woRender, Vector3f wiRender,
@@ -84,7 +104,7 @@ class BSDF {
 
     BxDF bxdf;
     Frame shadingFrame;
-    Vector3f ng;        // geometric normal when folding, else zero
+    Vector3f ng;        // geometric normal when folding (on the shading normal's side), else zero
     bool fold = false;  // the shading normal differs from the geometric one
     bool valid = false;
 };

@@ -112,6 +112,17 @@ class BxDF : public BxDFSet {
     void Regularize() {
         Dispatch([](auto& b) { b.Regularize(); });
     }
+    // The refractive index of the -z side over the +z side, for BxDFs whose transmission in
+    // Radiance mode carries the 1 / eta'^2 of radiance crossing between media (dielectrics);
+    // 1 for the others (thin sheets, diffuse transmission, hair: the same medium either side).
+    Float RefractiveRatio() const {
+        return Dispatch([](const auto& b) -> Float {
+            if constexpr (std::is_same_v<std::decay_t<decltype(b)>, DielectricBxDF>)
+                return b.Eta();
+            else
+                return 1;
+        });
+    }
 
     // Monte Carlo estimate of the directional albedo (reflection plus transmission) from wo,
     // using one Sample_f call per (uc[i], u2[i]) pair (pbrt-v4's BxDF::rho).
