@@ -201,7 +201,18 @@ int BDPTIntegrator::RandomWalk(SampledWavelengths& lambda, Ray ray, Sampler& sam
         if (!bs || bs->pdf == 0 || !bs->f) break;
         pdfFwd = bs->pdfIsProportional ? bsdf.PDF(wo, bs->wi, mode) : bs->pdf;
         anyNonSpecularBounces |= !bs->IsSpecular();
-        beta *= bs->f * AbsDot(bs->wi, isect.shading.n) / bs->pdf;
+        if (mode == TransportMode::Importance && !bs->IsSpecular() && bsdf.Folds() &&
+            !bsdf.GetBxDF().EstimatesStochastically()) {
+            // The adjoint (BDPTVertex::AdjointF) over the density of the sampled direction
+            Float pdf = bsdf.PDF(wo, bs->wi, mode);
+            if (pdf == 0) break;
+            beta *= BDPTVertex::AdjointF(bsdf, isect, wo, bs->wi) *
+                    (AbsDot(bs->wi, isect.shading.n) / pdf);
+        } else {
+            beta *= bs->f * AbsDot(bs->wi, isect.shading.n) / bs->pdf;
+            if (mode == TransportMode::Importance)
+                beta *= BDPTVertex::ShadingNormalAdjoint(isect, wo, bs->wi);
+        }
         ray = isect.SpawnRay(bs->wi);
         TransportMode reverse =
             mode == TransportMode::Radiance ? TransportMode::Importance : TransportMode::Radiance;

@@ -57,11 +57,36 @@ struct BDPTVertex {
         return false;
     }
 
-    // The BSDF from this surface vertex towards next (0 if they coincide).
+    // The BSDF from this surface vertex towards next (0 if they coincide); in Importance mode
+    // the adjoint (AdjointF).
     SampledSpectrum f(const BDPTVertex& next, TransportMode mode) const {
         Vector3f wi = next.p() - p();
         if (LengthSquared(wi) == 0) return SampledSpectrum(0);
-        return bsdf.f(si.wo, Normalize(wi), mode);
+        wi = Normalize(wi);
+        if (mode == TransportMode::Importance) return AdjointF(bsdf, si, si.wo, wi);
+        return bsdf.f(si.wo, wi, mode);
+    }
+    // What a surface scatters towards wi of the light arriving along -wo from a light: the
+    // adjoint of the BSDF the camera's paths see, f(wi, wo) in Radiance mode, times
+    // ShadingNormalAdjoint. pbrt-v4's Importance mode gives f(wi, wo) as f(wo, wi) without the
+    // directions' swap; a folding BSDF (bsdf.h) mirrors wi, not wo, so it needs the swap.
+    // (The layered BxDFs fold with Importance mode: their f is a stochastic estimate.)
+    static SampledSpectrum AdjointF(const BSDF& bsdf, const SurfaceInteraction& si, Vector3f wo,
+                                    Vector3f wi) {
+        bool swap = bsdf.Folds() && !bsdf.GetBxDF().EstimatesStochastically();
+        SampledSpectrum value = swap ? bsdf.f(wi, wo, TransportMode::Radiance)
+                                     : bsdf.f(wo, wi, TransportMode::Importance);
+        return value ? value * ShadingNormalAdjoint(si, wo, wi) : value;
+    }
+    // Light carried from a light along -wo and scattered towards wi at a surface with shading
+    // normals (Veach 1997, Sec. 5.3): the adjoint BSDF is f(wi, wo) |wo.ns| |wi.ng| /
+    // (|wo.ng| |wi.ns|), the cosines at the surface of the radiance equation being the shading
+    // normal's on the side of the light and the geometric normal's (the area measure's) on the
+    // other. Light subpaths carry this factor at each surface; 1 where ns = ng.
+    static Float ShadingNormalAdjoint(const SurfaceInteraction& si, Vector3f wo, Vector3f wi) {
+        Float num = AbsDot(wo, si.shading.n) * AbsDot(wi, si.n);
+        Float denom = AbsDot(wo, si.n) * AbsDot(wi, si.shading.n);
+        return denom == 0 ? 0 : num / denom;
     }
 
     // A solid-angle density at this vertex turned into an area density at next (unchanged

@@ -80,6 +80,8 @@ class BSDF {
     }
     const BxDF& GetBxDF() const { return bxdf; }
 
+    // Whether the BSDF folds (its shading normal differs from the geometric one)
+    bool Folds() const { return fold; }
     // Whether wLocal (shading frame) points into the body: below the geometric surface where
     // the BSDF folds, else below the shading one.
     bool PointsInside(Vector3f wLocal) const {

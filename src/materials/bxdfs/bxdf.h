@@ -112,6 +112,14 @@ class BxDF : public BxDFSet {
     void Regularize() {
         Dispatch([](auto& b) { b.Regularize(); });
     }
+    // Whether f is a stochastic estimate and PDF an approximation (pbrt-v4's layered BxDFs,
+    // whose samples carry the right f / pdf only): f / PDF does not weigh a sample exactly.
+    bool EstimatesStochastically() const {
+        return Dispatch([](const auto& b) {
+            using T = std::decay_t<decltype(b)>;
+            return std::is_same_v<T, CoatedDiffuseBxDF> || std::is_same_v<T, CoatedConductorBxDF>;
+        });
+    }
     // The refractive index of the -z side over the +z side, for BxDFs whose transmission in
     // Radiance mode carries the 1 / eta'^2 of radiance crossing between media (dielectrics);
     // 1 for the others (thin sheets, diffuse transmission, hair: the same medium either side).
