@@ -148,25 +148,40 @@ const Case kCases[] = {
 // inside the shading one: the BSDF must scale a refraction there for the crossing the light
 // really makes, and the surface emit on its geometric side (bsdf.h). Scaling by the shading
 // frame's side, as pbrt-v4 does, this cavity rendered 1.031 of B(T) (with the finer mesh of
-// the cases above and eta 1.5, 0.996). Unpolarised and polarised.
-TEST(Equilibrium, SmoothShadedGlassMesh) {
-    const double T = 5000;
+// the cases above and eta 1.5, 0.996). Unpolarised and polarised; and under volpath holding
+// a hot scattering melt (eta 1.5, roughness 0.3: 1.0105 before).
+std::string GlassMeshCavity(double T, const char* integrator, const char* glass, const char* melt) {
     std::ostringstream s;
     s << "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 24\n"
       << "Sampler \"zsobol\" \"integer pixelsamples\" 512\n"
-      << "Integrator \"path\" \"integer maxdepth\" 500\n"
+      << "Integrator \"" << integrator << "\" \"integer maxdepth\" 500\n"
       << "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
       << "WorldBegin\nAttribute \"shape\" \"float temperature\" " << T << "\n"
       << "Material \"diffuse\" \"rgb reflectance\" [0.5 0.5 0.5]\n"
-      << testing::MeshSphere(6, 12, 8, 0, 0, 0, true)
-      << "Material \"dielectric\" \"float eta\" 2.4 \"float roughness\" 0.5\n"
-      << testing::MeshSphere(1.2, 6, 4, 0, 0, 0.3, false);
-    testing::ExpectBlackbodyImage(testing::RenderText(s.str()), T, "coarse glass mesh");
+      << testing::MeshSphere(6, 12, 8, 0, 0, 0, true);
+    if (*melt)
+        s << "MakeNamedMedium \"melt\" " << melt << " \"float temperature\" " << T << "\n"
+          << "MediumInterface \"melt\" \"\"\n";
+    s << "Material " << glass << "\n" << testing::MeshSphere(1.2, 6, 4, 0, 0, 0.3, false);
+    return s.str();
+}
+
+TEST(Equilibrium, SmoothShadedGlassMesh) {
+    const double T = 5000;
+    const char* glass = "\"dielectric\" \"float eta\" 2.4 \"float roughness\" 0.5";
+    std::string scene = GlassMeshCavity(T, "path", glass, "");
+    testing::ExpectBlackbodyImage(testing::RenderText(scene), T, "coarse glass mesh");
     RenderOptions stokes;
     stokes.stokes = true;
-    testing::RenderedScene r = testing::RenderText(s.str(), 0, stokes);
+    testing::RenderedScene r = testing::RenderText(scene, 0, stokes);
     ASSERT_TRUE(r.scene->features.polarized);
     testing::ExpectBlackbodyImage(r, T, "coarse glass mesh, polarised");
+    testing::ExpectBlackbodyImage(
+        testing::RenderText(GlassMeshCavity(
+            T, "volpath", "\"dielectric\" \"float eta\" 1.5 \"float roughness\" 0.3",
+            "\"string type\" \"homogeneous\" \"rgb sigma_a\" [0.8 1.5 3] \"rgb sigma_s\" "
+            "[0.5 0.5 0.5]")),
+        T, "coarse glass mesh holding a melt, volpath");
 }
 
 // Polarised transport: the cavity must also be unpolarised. Reflection from metals polarises
