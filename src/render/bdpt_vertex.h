@@ -68,9 +68,10 @@ struct BDPTVertex {
     }
     // What a surface scatters towards wi of the light arriving along -wo from a light: the
     // adjoint of the BSDF the camera's paths see, f(wi, wo) in Radiance mode, times
-    // ShadingNormalAdjoint. pbrt-v4's Importance mode gives f(wi, wo) as f(wo, wi) without the
-    // directions' swap; a folding BSDF (bsdf.h) mirrors wi, not wo, so it needs the swap.
-    // (The layered BxDFs fold with Importance mode: their f is a stochastic estimate.)
+    // ShadingNormalAdjoint. Where the BSDF does not fold, Importance mode's f(wo, wi) is that
+    // value (pbrt-v4's convention); a folding BSDF (bsdf.h) mirrors its second direction, so
+    // it is evaluated with the two swapped. (The layered BxDFs keep Importance mode: their f
+    // is a stochastic estimate, and f over PDF would not weigh their samples exactly.)
     static SampledSpectrum AdjointF(const BSDF& bsdf, const SurfaceInteraction& si, Vector3f wo,
                                     Vector3f wi) {
         bool swap = bsdf.Folds() && !bsdf.GetBxDF().EstimatesStochastically();

@@ -24,9 +24,10 @@
 // 1 / eta seen from outside). kiln scales it for the crossing the light makes, from wi's side
 // of the geometric surface to wo's: the BxDF's value times eta'^4, eta' the shading frame's. A
 // surface in equilibrium with n^2 B in its body then still sends n^2 B on wo's geometric side
-// (with PointsInside deciding which side its emission is on); pbrt-v4 (no such case: it
-// scales by the shading side) renders a closed cavity holding a smooth-shaded glass mesh 0.4 %
-// dark. Importance mode has no 1 / eta'^2 and is unchanged.
+// (with PointsInside deciding which side its emission is on). Scaling by the shading frame's
+// side (pbrt-v4's way), a closed cavity holding a smooth-shaded rough glass mesh rendered
+// 0.996 (eta 1.5, 60 triangles) to 1.032 (eta 2.4, 24 triangles) of B(T). Importance mode has
+// no 1 / eta'^2 and is unchanged.
 //
 // Polarised transport (Value = MuellerMatrix): f and Sample_f return Mueller matrices between
 // the implicit frames of render-space directions (spectral/polarization.h): light arriving
