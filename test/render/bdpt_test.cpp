@@ -73,7 +73,7 @@ TEST(BDPT, SmoothShadedMeshCavityRendersTheBlackbody) {
         {"\"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\" "
          "\"float roughness\" 0.05",
          64, 10},
-        {"\"dielectric\" \"float eta\" 2.4 \"float roughness\" 0.5", 512, 30},
+        {"\"dielectric\" \"float eta\" 2.4 \"float roughness\" 0.5", 256, 30},
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.material);
