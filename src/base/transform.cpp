@@ -87,12 +87,28 @@ bool Transform::IsSingular() const {
     return false;
 }
 
-bool Transform::SwapsHandedness() const {
-    double det =
-        double(m.m[0][0]) * (double(m.m[1][1]) * m.m[2][2] - double(m.m[1][2]) * m.m[2][1]) -
-        double(m.m[0][1]) * (double(m.m[1][0]) * m.m[2][2] - double(m.m[1][2]) * m.m[2][0]) +
-        double(m.m[0][2]) * (double(m.m[1][0]) * m.m[2][1] - double(m.m[1][1]) * m.m[2][0]);
-    return det < 0;
+double Transform::LinearDeterminant() const {
+    return double(m.m[0][0]) * (double(m.m[1][1]) * m.m[2][2] - double(m.m[1][2]) * m.m[2][1]) -
+           double(m.m[0][1]) * (double(m.m[1][0]) * m.m[2][2] - double(m.m[1][2]) * m.m[2][0]) +
+           double(m.m[0][2]) * (double(m.m[1][0]) * m.m[2][1] - double(m.m[1][1]) * m.m[2][0]);
+}
+
+bool Transform::SwapsHandedness() const { return LinearDeterminant() < 0; }
+
+Float Transform::SimilarityScale() const {
+    // The columns of the linear part: equal lengths, mutually orthogonal
+    double c[3][3];
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) c[j][i] = m.m[i][j];
+    auto dot = [&](int a, int b) {
+        return c[a][0] * c[b][0] + c[a][1] * c[b][1] + c[a][2] * c[b][2];
+    };
+    double s2 = dot(0, 0), tol = 1e-5 * s2;
+    if (!(s2 > 0) || !std::isfinite(s2)) return 0;
+    if (std::abs(dot(1, 1) - s2) > tol || std::abs(dot(2, 2) - s2) > tol ||
+        std::abs(dot(0, 1)) > tol || std::abs(dot(0, 2)) > tol || std::abs(dot(1, 2)) > tol)
+        return 0;
+    return Float(std::sqrt(s2));
 }
 
 static Point3f ApplyPoint(const SquareMatrix4& m, Point3f p) {

@@ -30,6 +30,11 @@ class Transform {
     bool IsIdentity() const { return m.IsIdentity(); }
     bool operator==(const Transform& t) const { return t.m == m; }
     bool SwapsHandedness() const;
+    // The determinant of the linear (upper-left 3x3) part
+    double LinearDeterminant() const;
+    // s for a similarity (rotation or reflection, uniform scale s > 0, translation): lengths
+    // scale by s in every direction (within 1e-5); 0 for any other map.
+    Float SimilarityScale() const;
     // No finite inverse (e.g. Scale 0, or a matrix whose inverse overflows): points and
     // vectors still transform, but normals and the inverse give NaN.
     bool IsSingular() const;

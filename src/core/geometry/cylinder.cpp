@@ -11,7 +11,24 @@ Cylinder::Cylinder(const Transform* renderFromObject, const Transform* objectFro
       radius(radius),
       zMin(std::min(zMin, zMax)),
       zMax(std::max(zMin, zMax)),
-      phiMax(Radians(Clamp(phiMaxDegrees, 0, 360))) {}
+      phiMax(Radians(Clamp(phiMaxDegrees, 0, 360))) {
+    if (similarityScale > 0) {
+        area = ObjectArea() * Sqr(similarityScale);
+        return;
+    }
+    // The mean of AreaScale over phi (the normal does not depend on z)
+    constexpr int n = 256;
+    double sum = 0;
+    for (int i = 0; i < n; ++i) {
+        Float phi = (i + 0.5f) / n * phiMax;
+        sum += AreaScale(Normal3f(std::cos(phi), std::sin(phi), 0));
+    }
+    area = Float(ObjectArea() * sum / n);
+}
+
+Float Cylinder::PDF(const Interaction& intr) const {
+    return AreaDensity((*objectFromRender)(intr.p));
+}
 
 Bounds3f Cylinder::Bounds() const {
     return (*renderFromObject)(
@@ -104,7 +121,7 @@ std::optional<ShapeSample> Cylinder::Sample(Point2f u) const {
     Normal3f n = SafeNormalize((*renderFromObject)(Normal3f(pObj.x, pObj.y, 0)));
     if (reverseOrientation) n = -n;
     Point2f uv(phi / phiMax, (z - zMin) / (zMax - zMin));
-    return ShapeSample{Interaction((*renderFromObject)(pObj), n, uv), 1 / Area()};
+    return ShapeSample{Interaction((*renderFromObject)(pObj), n, uv), AreaDensity(pObj)};
 }
 
 std::optional<ShapeSample> Cylinder::Sample(const ShapeSampleContext& ctx, Point2f u) const {
@@ -117,7 +134,8 @@ std::optional<ShapeSample> Cylinder::Sample(const ShapeSampleContext& ctx, Point
 Float Cylinder::PDF(const ShapeSampleContext& ctx, Vector3f wi) const {
     auto isect = Intersect(ctx.SpawnRay(wi));
     if (!isect) return 0;
-    Float pdf = (1 / Area()) / (AbsDot(isect->intr.n, -wi) / DistanceSquared(ctx.p, isect->intr.p));
+    Float pdf =
+        PDF(isect->intr) / (AbsDot(isect->intr.n, -wi) / DistanceSquared(ctx.p, isect->intr.p));
     return std::isinf(pdf) ? 0 : pdf;
 }
 

@@ -11,7 +11,8 @@ Disk::Disk(const Transform* renderFromObject, const Transform* objectFromRender,
       height(height),
       radius(radius),
       innerRadius(innerRadius),
-      phiMax(Radians(Clamp(phiMaxDegrees, 0, 360))) {}
+      phiMax(Radians(Clamp(phiMaxDegrees, 0, 360))),
+      areaScale(AreaScale(Normal3f(0, 0, 1))) {}
 
 Bounds3f Disk::Bounds() const {
     return (*renderFromObject)(

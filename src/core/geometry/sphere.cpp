@@ -13,7 +13,28 @@ Sphere::Sphere(const Transform* renderFromObject, const Transform* objectFromRen
       zMax(Clamp(std::max(zMin, zMax), -radius, radius)),
       thetaZMin(std::acos(Clamp(std::min(zMin, zMax) / radius, -1, 1))),
       thetaZMax(std::acos(Clamp(std::max(zMin, zMax) / radius, -1, 1))),
-      phiMax(Radians(Clamp(phiMaxDegrees, 0, 360))) {}
+      phiMax(Radians(Clamp(phiMaxDegrees, 0, 360))) {
+    if (similarityScale > 0) {
+        area = ObjectArea() * Sqr(similarityScale);
+        return;
+    }
+    // The mean of AreaScale over the object-space area (Sample(u) is area-uniform there)
+    constexpr int n = 64;
+    double sum = 0;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            Float z = Lerp((i + 0.5f) / n, this->zMin, this->zMax), phi = (j + 0.5f) / n * phiMax;
+            Float rz = SafeSqrt(Sqr(radius) - Sqr(z));
+            sum += AreaScale(
+                Normal3f(rz * std::cos(phi) / radius, rz * std::sin(phi) / radius, z / radius));
+        }
+    area = Float(ObjectArea() * sum / (n * n));
+}
+
+Float Sphere::ConeRadius() const {
+    bool whole = zMin <= -radius && zMax >= radius && phiMax >= 2 * Pi;
+    return whole ? similarityScale * radius : 0;
+}
 
 Bounds3f Sphere::Bounds() const {
     return (*renderFromObject)(
@@ -110,7 +131,14 @@ std::optional<ShapeSample> Sphere::Sample(Point2f u) const {
     if (reverseOrientation) n = -n;
     Float theta = SafeACos(pObj.z / radius);
     Point2f uv(phi / phiMax, (theta - thetaZMin) / (thetaZMax - thetaZMin));
-    return ShapeSample{Interaction((*renderFromObject)(pObj), n, uv), 1 / Area()};
+    Float pdf =
+        1 / (ObjectArea() * AreaScale(Normal3f(pObj.x / radius, pObj.y / radius, pObj.z / radius)));
+    return ShapeSample{Interaction((*renderFromObject)(pObj), n, uv), pdf};
+}
+
+Float Sphere::PDF(const Interaction& intr) const {
+    Vector3f nObj = SafeNormalize(Vector3f((*objectFromRender)(intr.p)));
+    return 1 / (ObjectArea() * AreaScale(Normal3f(nObj)));
 }
 
 // Sample(u) is itself a bijective area-uniform map: u = ((z - zmin) / (zmax - zmin), phi / phimax)
@@ -129,13 +157,15 @@ Point2f Sphere::InvertParametric(Point3f p) const {
 std::optional<ShapeSample> Sphere::Sample(const ShapeSampleContext& ctx, Point2f u) const {
     Point3f pCenter = (*renderFromObject)(Point3f(0, 0, 0));
     Point3f pOrigin = ctx.OffsetRayOrigin(pCenter - ctx.p);
-    if (DistanceSquared(pOrigin, pCenter) <= Sqr(radius)) {
+    const Float R = ConeRadius();
+    if (R == 0 || DistanceSquared(pOrigin, pCenter) <= Sqr(R)) {
         auto ss = Sample(u);
         if (!ss) return std::nullopt;
+        ss->intr.time = ctx.time;
         return AreaSampleToSolidAngle(ctx, *ss);
     }
     // Sample a direction uniformly in the cone subtended by the sphere.
-    Float sinThetaMax = radius / Distance(ctx.p, pCenter);
+    Float sinThetaMax = R / Distance(ctx.p, pCenter);
     Float sin2ThetaMax = Sqr(sinThetaMax);
     Float cosThetaMax = SafeSqrt(1 - sin2ThetaMax), oneMinusCosThetaMax = 1 - cosThetaMax;
     Float cosTheta = (cosThetaMax - 1) * u[0] + 1;
@@ -154,7 +184,7 @@ std::optional<ShapeSample> Sphere::Sample(const ShapeSampleContext& ctx, Point2f
     Vector3f w = SphericalDirection(sinAlpha, cosAlpha, phi);
     Frame frame = Frame::FromZ(Normalize(pCenter - ctx.p));
     Normal3f n(frame.FromLocal(-w));
-    Point3f p = pCenter + radius * Vector3f(n);
+    Point3f p = pCenter + R * Vector3f(n);
     if (reverseOrientation) n = -n;
     Point3f pObj = (*objectFromRender)(p);
     Float theta = SafeACos(pObj.z / radius);
@@ -167,14 +197,15 @@ std::optional<ShapeSample> Sphere::Sample(const ShapeSampleContext& ctx, Point2f
 Float Sphere::PDF(const ShapeSampleContext& ctx, Vector3f wi) const {
     Point3f pCenter = (*renderFromObject)(Point3f(0, 0, 0));
     Point3f pOrigin = ctx.OffsetRayOrigin(pCenter - ctx.p);
-    if (DistanceSquared(pOrigin, pCenter) <= Sqr(radius)) {
+    const Float R = ConeRadius();
+    if (R == 0 || DistanceSquared(pOrigin, pCenter) <= Sqr(R)) {
         auto isect = Intersect(ctx.SpawnRay(wi));
         if (!isect) return 0;
         Float pdf =
-            (1 / Area()) / (AbsDot(isect->intr.n, -wi) / DistanceSquared(ctx.p, isect->intr.p));
+            PDF(isect->intr) / (AbsDot(isect->intr.n, -wi) / DistanceSquared(ctx.p, isect->intr.p));
         return std::isinf(pdf) ? 0 : pdf;
     }
-    Float sin2ThetaMax = Sqr(radius) / DistanceSquared(ctx.p, pCenter);
+    Float sin2ThetaMax = Sqr(R) / DistanceSquared(ctx.p, pCenter);
     Float cosThetaMax = SafeSqrt(1 - sin2ThetaMax), oneMinusCosThetaMax = 1 - cosThetaMax;
     if (sin2ThetaMax < 0.00068523f) oneMinusCosThetaMax = sin2ThetaMax / 2;
     // Zero outside the cone (pbrt-v4 leaves this to the caller).
