@@ -121,6 +121,38 @@ TEST(TransformedQuadrics, CylinderAndDiskAreasAndDensities) {
     }
 }
 
+// A transform that swaps handedness keeps the surface's outside outside: hit and sampled
+// normals point away from the sphere's centre and the cylinder's axis, and along the mirrored
+// object-space normal for the disk (pbrt-v4 turns mirrored quadrics inside out).
+TEST(TransformedQuadrics, MirrorsKeepNormalsOutward) {
+    for (const Transform& t : {Scale(-1, 1, 1), Rotate(20, Vector3f(0, 0, 1)) * Scale(1, -2, 1)}) {
+        Placement xf(t);
+        Sphere s(&xf.render, &xf.object, false, 1, -1, 1, 360);
+        Cylinder c(&xf.render, &xf.object, false, 1, -1, 1, 360);
+        Disk d(&xf.render, &xf.object, false, 0, 1, 0, 360);
+        RNG rng(23);
+        for (int i = 0; i < 200; ++i) {
+            Point2f u(rng.UniformFloat(), rng.UniformFloat());
+            // Rays from far outside towards a sampled point: the hit's normal faces the ray
+            // for the sphere and the cylinder's outside
+            for (const Shape& shape : {Shape(&s), Shape(&c), Shape(&d)}) {
+                auto ss = shape.Sample(u);
+                ASSERT_TRUE(ss);
+                Point3f pObj = xf.object(ss->intr.p);
+                Normal3f outward = shape.Is<Disk>()     ? Normal3f(0, 0, 1)
+                                   : shape.Is<Sphere>() ? Normal3f(pObj.x, pObj.y, pObj.z)
+                                                        : Normal3f(pObj.x, pObj.y, 0);
+                Vector3f expected = Normalize(Vector3f(xf.render(outward)));
+                EXPECT_GT(Dot(Vector3f(ss->intr.n), expected), 0.999f);
+                Ray r(ss->intr.p + expected * 3.f, -expected);
+                auto hit = shape.Intersect(r);
+                ASSERT_TRUE(hit);
+                EXPECT_GT(Dot(Vector3f(hit->intr.n), expected), 0.999f);
+            }
+        }
+    }
+}
+
 TEST(TransformedQuadrics, SimilarityScale) {
     EXPECT_FLOAT_EQ(Transform().SimilarityScale(), 1);
     EXPECT_NEAR((Rotate(33, Vector3f(1, 2, 3)) * Scale(2.5f, 2.5f, 2.5f)).SimilarityScale(), 2.5f,

@@ -187,7 +187,8 @@ TEST(Equilibrium, SmoothShadedGlassMesh) {
 // Cavities of transformed quadrics (quadrics.h): a sphere under a uniform scale, one under a
 // non-uniform scale holding an ellipsoid, and a tube closed by two disks under a non-uniform
 // scale. Sampling these emitters with object-space densities (pbrt-v4's) rendered them 0.966,
-// 0.974 and 0.984 of B(T).
+// 0.974 and 0.984 of B(T). And a rough glass sphere under a mirroring transform, which
+// pbrt-v4's normals turn inside out (quadrics.h): 1.20 of B(T).
 TEST(Equilibrium, TransformedQuadrics) {
     const double T = 5000;
     const char* cavities[] = {
@@ -206,6 +207,10 @@ TEST(Equilibrium, TransformedQuadrics) {
         "  Shape \"disk\" \"float radius\" 5 AttributeEnd\n"
         "Material \"dielectric\" \"float eta\" 1.5 \"float roughness\" 0.2\n"
         "AttributeBegin Translate 0 0 0.5 Shape \"sphere\" \"float radius\" 0.8 AttributeEnd\n",
+        "Shape \"sphere\" \"float radius\" 6\n"
+        "Material \"dielectric\" \"float eta\" 1.5 \"float roughness\" 0.3\n"
+        "AttributeBegin Translate 0 0 0.5 Scale -1 1 1 Shape \"sphere\" \"float radius\" 0.9 "
+        "AttributeEnd\n",
     };
     for (const char* cavity : cavities) {
         SCOPED_TRACE(cavity);

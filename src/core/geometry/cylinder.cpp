@@ -79,7 +79,7 @@ SurfaceInteraction Cylinder::InteractionFromHit(Point3f pHit, Vector3f woObject,
     Normal3f dndu, dndv;
     WeingartenNormalDerivatives(dpdu, dpdv, d2Pduu, Vector3f(0, 0, 0), Vector3f(0, 0, 0), &dndu,
                                 &dndv);
-    bool flip = reverseOrientation ^ transformSwapsHandedness;
+    bool flip = reverseOrientation;  // not the handedness: see QuadricBase
     SurfaceInteraction si(pHit, Point2f(u, v), woObject, dpdu, dpdv, dndu, dndv, time, flip);
     return TransformInteraction(*renderFromObject, si);
 }

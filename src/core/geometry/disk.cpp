@@ -44,7 +44,7 @@ SurfaceInteraction Disk::InteractionFromHit(Point3f pHit, Vector3f woObject, Flo
     Vector3f dpdv = rHit > 0 ? Vector3f(pHit.x, pHit.y, 0) * (innerRadius - radius) / rHit
                              : Vector3f(innerRadius - radius, 0, 0);
     if (rHit == 0) dpdu = Vector3f(0, phiMax * 1e-6f * radius, 0);
-    bool flip = reverseOrientation ^ transformSwapsHandedness;
+    bool flip = reverseOrientation;  // not the handedness: see QuadricBase
     SurfaceInteraction si(pHit, Point2f(u, v), woObject, dpdu, dpdv, Normal3f(0, 0, 0),
                           Normal3f(0, 0, 0), time, flip);
     return TransformInteraction(*renderFromObject, si);

@@ -27,7 +27,13 @@ namespace kiln {
 struct QuadricBase {
     const Transform* renderFromObject;
     const Transform* objectFromRender;
-    bool reverseOrientation, transformSwapsHandedness;
+    // Whether the normals point inwards (ReverseOrientation). Normals are computed in object
+    // space and transformed as normals, which keeps an outward normal outward under any
+    // transform, mirrors included; pbrt-v4 also flips them where the transform swaps
+    // handedness (a rule for normals computed from render-space tangents), which turns a
+    // mirrored quadric inside out: a one-sided area light on it emits inwards, and a closed
+    // cavity holding a mirrored rough glass sphere rendered 1.20 of B(T).
+    bool reverseOrientation;
 
     // s of a similarity renderFromObject (Transform::SimilarityScale), else 0
     Float similarityScale;
@@ -38,7 +44,6 @@ struct QuadricBase {
         : renderFromObject(renderFromObject),
           objectFromRender(objectFromRender),
           reverseOrientation(reverseOrientation),
-          transformSwapsHandedness(renderFromObject->SwapsHandedness()),
           similarityScale(renderFromObject->SimilarityScale()),
           absDeterminant(std::abs(renderFromObject->LinearDeterminant())) {}
 

@@ -97,7 +97,7 @@ SurfaceInteraction Sphere::InteractionFromHit(Point3f pHit, Vector3f woObject, F
     Vector3f d2Pdvv = -Sqr(thetaZMax - thetaZMin) * Vector3f(pHit);
     Normal3f dndu, dndv;
     WeingartenNormalDerivatives(dpdu, dpdv, d2Pduu, d2Pduv, d2Pdvv, &dndu, &dndv);
-    bool flip = reverseOrientation ^ transformSwapsHandedness;
+    bool flip = reverseOrientation;  // not the handedness: see QuadricBase
     SurfaceInteraction si(pHit, Point2f(u, v), woObject, dpdu, dpdv, dndu, dndv, time, flip);
     return TransformInteraction(*renderFromObject, si);
 }
