@@ -310,17 +310,36 @@ SampledSpectrum BDPTIntegrator::Connect(SampledWavelengths& lambda, BDPTVertex* 
                 else if (IsTransmissive(flags) && !IsReflective(flags))
                     ctx.p = pt.si.OffsetRayOrigin(-pt.si.wo);
                 std::optional<LightLiSample> ls = light.SampleLi(ctx, u, lambda);
-                if (ls && ls->pdf > 0 && (ls->deferredL || ls->L)) {
+                // The density per steradian at the vertex itself, where the strategy and its
+                // MIS weight are evaluated (SampleLi's is at ctx.p, moved off the surface):
+                // through the point's density per area. Near a concave emitter a point close
+                // to the vertex and nearly tangent otherwise weighs up to a hundred times too
+                // much.
+                Float pdf = ls ? ls->pdf : 0;
+                Vector3f wi = ls ? ls->wi : Vector3f();
+                if (ls && pdf > 0 && ls->pLight.n != Normal3f(0, 0, 0)) {
+                    Vector3f dc = ls->pLight.p - ctx.p, dv = ls->pLight.p - pt.p();
+                    Float d2c = LengthSquared(dc), d2v = LengthSquared(dv);
+                    Float cosV = d2v > 0 ? AbsDot(ls->pLight.n, dv) / std::sqrt(d2v) : 0;
+                    if (d2c > 0 && cosV > 0) {
+                        Float cosC = AbsDot(ls->pLight.n, dc) / std::sqrt(d2c);
+                        pdf *= cosC / d2c * d2v / cosV;
+                        wi = dv / std::sqrt(d2v);
+                    } else {
+                        pdf = 0;
+                    }
+                }
+                if (ls && pdf > 0 && std::isfinite(pdf) && (ls->deferredL || ls->L)) {
                     sampled.type = BDPTVertexType::Light;
                     sampled.light = chosen->index;
                     sampled.lightType = light.Type();
                     sampled.si.p = ls->pLight.p;
                     sampled.si.n = ls->pLight.n;
                     sampled.si.uv = ls->pLight.uv;
-                    sampled.beta = SampledSpectrum(1 / (ls->pdf * chosen->p));
+                    sampled.beta = SampledSpectrum(1 / (pdf * chosen->p));
                     sampled.pdfFwd = PDFLightOrigin(sampled, pt);
                     L = pt.beta * pt.f(sampled, TransportMode::Radiance) * sampled.beta;
-                    if (pt.IsOnSurface()) L *= AbsDot(ls->wi, pt.ns());
+                    if (pt.IsOnSurface()) L *= AbsDot(wi, pt.ns());
                     if (L && !Unoccluded(pt.si, ls->pLight)) L = SampledSpectrum(0);
                     if (L) {
                         SampledSpectrum Li =
