@@ -119,11 +119,7 @@ TEST(CurveRender, HotFilamentInACavityRendersTheBlackbody) {
     // as a light) inside a closed diffuse cavity, everything at T
     for (double T : {1500.0, 3000.0}) {
         std::ostringstream s;
-        s << "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 24\n"
-          << "Sampler \"zsobol\" \"integer pixelsamples\" 256\n"
-          << "Integrator \"path\" \"integer maxdepth\" 500\n"
-          << "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
-          << "WorldBegin\nAttribute \"shape\" \"float temperature\" " << T << "\n"
+        s << testing::CavityPreamble(T, 256)
           << "Material \"diffuse\" \"rgb reflectance\" [0.6 0.5 0.4]\n"
           << "Shape \"sphere\" \"float radius\" 6\n"
           << "Material \"conductor\" \"spectrum eta\" \"metal-W-eta\" \"spectrum k\" "

@@ -152,11 +152,7 @@ const Case kCases[] = {
 // a hot scattering melt (eta 1.5, roughness 0.3: 1.0105 before).
 std::string GlassMeshCavity(double T, const char* integrator, const char* glass, const char* melt) {
     std::ostringstream s;
-    s << "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 24\n"
-      << "Sampler \"zsobol\" \"integer pixelsamples\" 512\n"
-      << "Integrator \"" << integrator << "\" \"integer maxdepth\" 500\n"
-      << "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
-      << "WorldBegin\nAttribute \"shape\" \"float temperature\" " << T << "\n"
+    s << testing::CavityPreamble(T, 512, integrator)
       << "Material \"diffuse\" \"rgb reflectance\" [0.5 0.5 0.5]\n"
       << testing::MeshSphere(6, 12, 8, 0, 0, 0, true);
     if (*melt)
@@ -214,15 +210,9 @@ TEST(Equilibrium, TransformedQuadrics) {
     };
     for (const char* cavity : cavities) {
         SCOPED_TRACE(cavity);
-        std::ostringstream s;
-        s << "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 24\n"
-          << "Sampler \"zsobol\" \"integer pixelsamples\" 256\n"
-          << "Integrator \"path\" \"integer maxdepth\" 500\n"
-          << "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
-          << "WorldBegin\nAttribute \"shape\" \"float temperature\" " << T << "\n"
-          << "Material \"diffuse\" \"rgb reflectance\" [0.5 0.5 0.5]\n"
-          << cavity;
-        testing::ExpectBlackbodyImage(testing::RenderText(s.str()), T, "transformed quadrics");
+        std::string scene = testing::CavityPreamble(T, 256) +
+                            "Material \"diffuse\" \"rgb reflectance\" [0.5 0.5 0.5]\n" + cavity;
+        testing::ExpectBlackbodyImage(testing::RenderText(scene), T, "transformed quadrics");
     }
 }
 

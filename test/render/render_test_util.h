@@ -69,6 +69,19 @@ inline double BlackbodyLuminance(double T) {
     return sum / CIE_Y_integral;
 }
 
+// The start of a cavity scene: a 24 x 24 film, zsobol at spp, the integrator with maxdepth 500,
+// a camera at (0, 0, -3) looking at the origin (fov 40), and everything at temperature T from
+// WorldBegin on. The walls and their contents follow.
+inline std::string CavityPreamble(double T, int spp, const char* integrator = "path") {
+    std::ostringstream s;
+    s << "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 24\n"
+      << "Sampler \"zsobol\" \"integer pixelsamples\" " << spp << "\n"
+      << "Integrator \"" << integrator << "\" \"integer maxdepth\" 500\n"
+      << "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
+      << "WorldBegin\nAttribute \"shape\" \"float temperature\" " << T << "\n";
+    return s.str();
+}
+
 // A closed UV sphere of triangles with per-vertex normals (inward for a wall) and uv.
 inline std::string MeshSphere(double r, int nu, int nv, double cx, double cy, double cz,
                               bool inward) {
