@@ -18,7 +18,7 @@ namespace {
 
 // A closed cavity at temperature T: dark textured diffuse walls (albedo <= 0.3, so that
 // maxdepth 10 leaves out less than 1e-4 of the radiance) around an object of `material`;
-// spheres, or smooth-shaded meshes (the walls of 176 triangles, the object of 24, normals
+// spheres, or smooth-shaded meshes (the walls of 168 triangles, the object of 36, normals
 // interpolated from the spheres', so their shading normals depart far from the geometric ones)
 std::string Cavity(const std::string& material, double T, int spp, bool meshes = false,
                    int maxDepth = 10) {

@@ -143,7 +143,7 @@ const Case kCases[] = {
      512},
 };
 
-// A coarse smooth-shaded mesh of rough glass (24 triangles, normals interpolated from the
+// A coarse smooth-shaded mesh of rough glass (36 triangles, normals interpolated from the
 // sphere's), so that many directions near its silhouettes lie outside the geometric surface but
 // inside the shading one: the BSDF must scale a refraction there for the crossing the light
 // really makes, and the surface emit on its geometric side (bsdf.h). Scaling by the shading

@@ -26,7 +26,7 @@
 // surface in equilibrium with n^2 B in its body then still sends n^2 B on wo's geometric side
 // (with PointsInside deciding which side its emission is on). Scaling by the shading frame's
 // side (pbrt-v4's way), a closed cavity holding a smooth-shaded rough glass mesh rendered
-// 0.996 (eta 1.5, 60 triangles) to 1.032 (eta 2.4, 24 triangles) of B(T). Importance mode has
+// 0.996 (eta 1.5, 100 triangles) to 1.032 (eta 2.4, 36 triangles) of B(T). Importance mode has
 // no 1 / eta'^2 and is unchanged.
 //
 // Polarised transport (Value = MuellerMatrix): f and Sample_f return Mueller matrices between
