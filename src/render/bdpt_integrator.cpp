@@ -201,8 +201,8 @@ int BDPTIntegrator::RandomWalk(SampledWavelengths& lambda, Ray ray, Sampler& sam
         if (!bs || bs->pdf == 0 || !bs->f) break;
         pdfFwd = bs->pdfIsProportional ? bsdf.PDF(wo, bs->wi, mode) : bs->pdf;
         anyNonSpecularBounces |= !bs->IsSpecular();
-        if (mode == TransportMode::Importance && !bs->IsSpecular() && bsdf.Folds() &&
-            !bsdf.GetBxDF().EstimatesStochastically()) {
+        if (mode == TransportMode::Importance && !bs->IsSpecular() &&
+            BDPTVertex::AdjointSwaps(bsdf)) {
             // The adjoint (BDPTVertex::AdjointF) over the density of the sampled direction
             Float pdf = bsdf.PDF(wo, bs->wi, mode);
             if (pdf == 0) break;

@@ -74,10 +74,13 @@ struct BDPTVertex {
     // is a stochastic estimate, and f over PDF would not weigh their samples exactly.)
     static SampledSpectrum AdjointF(const BSDF& bsdf, const SurfaceInteraction& si, Vector3f wo,
                                     Vector3f wi) {
-        bool swap = bsdf.Folds() && !bsdf.GetBxDF().EstimatesStochastically();
-        SampledSpectrum value = swap ? bsdf.f(wi, wo, TransportMode::Radiance)
-                                     : bsdf.f(wo, wi, TransportMode::Importance);
+        SampledSpectrum value = AdjointSwaps(bsdf) ? bsdf.f(wi, wo, TransportMode::Radiance)
+                                                   : bsdf.f(wo, wi, TransportMode::Importance);
         return value ? value * ShadingNormalAdjoint(si, wo, wi) : value;
+    }
+    // Whether AdjointF evaluates bsdf with its directions swapped
+    static bool AdjointSwaps(const BSDF& bsdf) {
+        return bsdf.Folds() && !bsdf.GetBxDF().EstimatesStochastically();
     }
     // Light carried from a light along -wo and scattered towards wi at a surface with shading
     // normals (Veach 1997, Sec. 5.3): the adjoint BSDF is f(wi, wo) |wo.ns| |wi.ng| /
