@@ -74,19 +74,22 @@ bool InsidePolkaDot(Point2f st) {
 FloatDotsTexture* FloatDotsTexture::Create(const TextureParameterDictionary& params,
                                            const Transform& renderFromTexture, const FileLoc& loc,
                                            ObjectArena& arena) {
+    // The dots show "outside" and the rest "inside", as pbrt-v4 renders them (its Create passes
+    // the two to a constructor that takes them in the other order; docs/pbrt-v4-support.md)
     return arena.New<FloatDotsTexture>(TextureMapping2D::Create(params, renderFromTexture, loc),
-                                       params.GetFloatTexture("inside", 1, arena),
-                                       params.GetFloatTexture("outside", 0, arena));
+                                       params.GetFloatTexture("outside", 0, arena),
+                                       params.GetFloatTexture("inside", 1, arena));
 }
 
 SpectrumDotsTexture* SpectrumDotsTexture::Create(const TextureParameterDictionary& params,
                                                  const Transform& renderFromTexture,
                                                  SpectrumType type, const FileLoc& loc,
                                                  ObjectArena& arena) {
+    // Swapped as for FloatDotsTexture above
     return arena.New<SpectrumDotsTexture>(
         TextureMapping2D::Create(params, renderFromTexture, loc),
-        params.GetSpectrumTexture("inside", Spectrum(ConstantSpectrum(1)), type, arena),
-        params.GetSpectrumTexture("outside", Spectrum(ConstantSpectrum(0)), type, arena));
+        params.GetSpectrumTexture("outside", Spectrum(ConstantSpectrum(0)), type, arena),
+        params.GetSpectrumTexture("inside", Spectrum(ConstantSpectrum(1)), type, arena));
 }
 
 // MarbleTexture Method Definitions
