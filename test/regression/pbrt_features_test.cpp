@@ -2,11 +2,11 @@
 // input, singular transforms, loopsubdiv, curves and hair, alpha, bump and normal maps, displaced
 // PLY meshes, coated materials, RGL measured BRDFs; the spherical and realistic cameras, bdpt's
 // caustics, motion blur, a NanoVDB volume, goniometric and projection lights, ambient occlusion,
-// procedural textures, whose references are pbrt-v4's renders) in test/regression/pbrt_features,
-// each rendered 16 times at 32 spp with independent seeds and compared within the Monte Carlo
-// noise with its stored reference (noise_comparison.h; how the references were made:
-// pbrt_features/README.md). The comparison must also reject the renders scaled by 1.1. Each
-// scene's warnings are the expected ones. Analytic checks of the same features:
+// procedural textures, a temperature grid, whose references are pbrt-v4's renders) in
+// test/regression/pbrt_features, each rendered 16 times at 32 spp with independent seeds and
+// compared within the Monte Carlo noise with its stored reference (noise_comparison.h; how the
+// references were made: pbrt_features/README.md). The comparison must also reject the renders
+// scaled by 1.1. Each scene's warnings are the expected ones. Analytic checks of the same features:
 // render/surface_detail_test.cpp, render/curve_render_test.cpp, geometry/curve_test.cpp and the
 // others named in the README.
 #include <gtest/gtest.h>
@@ -85,7 +85,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Feature{"nanovdb", 0, 16384}, Feature{"measured", 0, 4096},
                       Feature{"measured-aniso", 0, 4096}, Feature{"goniometric", 0, 4096},
                       Feature{"projection", 0, 4096}, Feature{"ambientocclusion", 0, 4096},
-                      Feature{"procedural", 0, 4096}),
+                      Feature{"procedural", 0, 4096}, Feature{"gridtemperature", 0, 4096}),
     [](const ::testing::TestParamInfo<Feature>& info) {
         std::string name = info.param.scene;
         std::replace(name.begin(), name.end(), '-', '_');
