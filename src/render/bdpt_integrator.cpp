@@ -374,7 +374,17 @@ SampledSpectrum BDPTIntegrator::Connect(SampledWavelengths& lambda, BDPTVertex* 
 Float BDPTIntegrator::MISWeight(BDPTVertex* lightVertices, BDPTVertex* cameraVertices,
                                 BDPTVertex& sampled, int s, int t) const {
     if (s + t == 2) return 1;
-    auto remap0 = [](Float f) { return f != 0 ? f : Float(1); };
+    // The ratio of a vertex's reverse to forward density. A density is 0 where the vertex it
+    // is sampled from scatters specularly (RandomWalk zeroes it): taken as 1 there (pbrt-v4's
+    // remap0; the delta flags keep those strategies out of the sum). A reverse density that is
+    // 0 otherwise is a strategy that cannot make the path (a folding BSDF, bsdf.h, scatters
+    // between some pairs of directions it samples in one order only) and ends the chain:
+    // remapped to 1 it was counted, and a closed cavity of smooth-shaded diffuse walls of
+    // albedo 0.8 rendered 0.9915 of B(T).
+    auto RevOverFwd = [](const BDPTVertex& v, bool revFromDelta) {
+        Float rev = v.pdfRev != 0 || !revFromDelta ? v.pdfRev : 1;
+        return rev / (v.pdfFwd != 0 ? v.pdfFwd : 1);
+    };
 
     BDPTVertex* qs = s > 0 ? &lightVertices[s - 1] : nullptr;
     BDPTVertex* pt = t > 0 ? &cameraVertices[t - 1] : nullptr;
@@ -412,14 +422,14 @@ Float BDPTIntegrator::MISWeight(BDPTVertex* lightVertices, BDPTVertex* cameraVer
     // Other strategies along the camera subpath
     Float sumRi = 0, ri = 1;
     for (int i = t - 1; i > 0; --i) {
-        ri *= remap0(cameraVertices[i].pdfRev) / remap0(cameraVertices[i].pdfFwd);
+        ri *= RevOverFwd(cameraVertices[i], i + 1 < t && cameraVertices[i + 1].delta);
         if (i == 1) ri /= splatScale;
         if (!cameraVertices[i].delta && !cameraVertices[i - 1].delta) sumRi += ri;
     }
     // ... and along the light subpath
     ri = 1;
     for (int i = s - 1; i >= 0; --i) {
-        ri *= remap0(lightVertices[i].pdfRev) / remap0(lightVertices[i].pdfFwd);
+        ri *= RevOverFwd(lightVertices[i], i + 1 < s && lightVertices[i + 1].delta);
         bool deltaLightVertex =
             i > 0 ? lightVertices[i - 1].delta : lightVertices[0].IsDeltaLight();
         if (!lightVertices[i].delta && !deltaLightVertex) sumRi += ri;
