@@ -58,7 +58,8 @@ class WindyTexture {
 bool InsidePolkaDot(Point2f st);
 
 // FloatDotsTexture Definition
-// "inside" (1) in the dots, "outside" (0) elsewhere; 2D mapping parameters.
+// The texture `inside` in the dots, `outside` elsewhere; 2D mapping parameters. Create gives the
+// dots the parameter "outside" (0) and the rest "inside" (1), as pbrt-v4 renders them.
 class FloatDotsTexture {
   public:
     // The dots themselves are not antialiased; the textures inside and outside may be
