@@ -67,8 +67,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 for (int x = 0; x < image.Resolution().x; ++x)
                     for (int c = 0; c < image.NChannels(); ++c) {
                         float v = image.GetChannel({x, y}, c);
-                        // PFM stores floats as they are: infinities and NaNs are data there,
-                        // and the texture code that reads them refuses them
+                        // PFM stores floats as they are: infinities and NaNs are data there
+                        // (area and environment lights refuse such images; reflectance,
+                        // roughness and temperature textures of all-NaN or all-infinite PFMs
+                        // rendered finite pixels, the infinite ones as pbrt-v4 renders them)
                         Check(std::isfinite(v) || extension == "pfm");
                     }
         } catch (const std::runtime_error&) {
