@@ -207,6 +207,30 @@ ConductorSpec GetConductor(const TextureParameterDictionary& params, const std::
     return c;
 }
 
+// pbrt-v4's spectra given as wavelength-value pairs are 0 outside the wavelengths they list: a
+// conductor whose "eta" and "k" are both 0 at a wavelength the render samples is a perfect
+// mirror there in kiln (FrComplex's eta = 0 limit), where pbrt-v4's complex Fresnel divides by
+// zero and drops every sample that meets it. Warned once, at the first such wavelength.
+void WarnZeroConductorConstants(const ConductorSpec& c, const TextureParameterDictionary& params,
+                                const std::string& prefix, const FileLoc& loc, Diagnostics& diag) {
+    auto constant = [](const std::optional<SpectrumTexture>& t) -> const Spectrum* {
+        const auto* texture = t ? t->GetIf<SpectrumConstantTexture>() : nullptr;
+        return texture ? &texture->Value() : nullptr;
+    };
+    const Spectrum *eta = constant(c.eta), *k = constant(c.k);
+    if (!eta || !k) return;
+    for (int nm = int(Lambda_min); nm <= int(Lambda_max); ++nm)
+        if ((*eta)(Float(nm)) == 0 && (*k)(Float(nm)) == 0) {
+            diag.Warn(params.Loc(prefix + "eta", loc),
+                      "a conductor's \"" + prefix + "eta\" and \"" + prefix + "k\" are both 0 at " +
+                          std::to_string(nm) +
+                          " nm (a spectrum is 0 outside the wavelengths it lists): kiln "
+                          "reflects all light there; pbrt-v4 drops those samples as "
+                          "not-a-number");
+            return;
+        }
+}
+
 }  // namespace
 
 Material Material::Create(const std::string& type, const TextureParameterDictionary& params,
@@ -253,6 +277,7 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
             params.GetSpectrumTexture("reflectance", Constant(0.5f), SpectrumType::Albedo, arena)));
     if (type == "conductor") {
         ConductorSpec c = GetConductor(params, "", loc, arena);
+        WarnZeroConductorConstants(c, params, "", loc, diag);
         auto [u, v] = GetRoughness(params, "", arena);
         return make(arena.New<ConductorMaterial>(c.eta, c.k, c.reflectance, u, v, remap()));
     }
@@ -288,6 +313,7 @@ Material Material::Create(const std::string& type, const TextureParameterDiction
     if (type == "coatedconductor") {
         auto [iu, iv] = GetRoughness(params, "interface.", arena);
         ConductorSpec c = GetConductor(params, "conductor.", loc, arena);
+        WarnZeroConductorConstants(c, params, "conductor.", loc, diag);
         auto [cu, cv] = GetRoughness(params, "conductor.", arena);
         CoatedConductorMaterial::Params p{
             iu,

@@ -102,6 +102,27 @@ TEST(Materials, ConductorNamedMetals) {
     EXPECT_FALSE(m->Reflectance());
 }
 
+// Spectra given as wavelength-value pairs are 0 outside them: a conductor whose eta and k are
+// both 0 at some rendered wavelength is a perfect mirror there, which kiln says (pbrt-v4 drops
+// such samples as not-a-number); the named metals, k alone 0 (a dielectric-like conductor) and
+// coated conductors' own "conductor." constants are checked alike.
+TEST(Materials, ConductorWithZeroConstantsSomewhereWarns) {
+    Fixture f;
+    f.Make("conductor", Dict({Strings("spectrum", "eta", {"metal-Ag-eta"}),
+                              Strings("spectrum", "k", {"metal-Ag-k"})}));
+    f.Make("conductor", Dict({Floats("spectrum", "eta", {300, 1.5f, 900, 1.5f}),
+                              Floats("spectrum", "k", {300, 0, 900, 0})}));
+    EXPECT_EQ(f.diag.WarningCount(), 0);
+    f.Make("conductor", Dict({Floats("spectrum", "eta", {400, 1.5f, 700, 1.5f}),
+                              Floats("spectrum", "k", {400, 3, 700, 3})}));
+    ASSERT_EQ(f.diag.WarningCount(), 1);
+    EXPECT_NE(f.diag.Warnings()[0].message.find("both 0 at 360 nm"), std::string::npos)
+        << f.diag.Warnings()[0].message;
+    f.Make("coatedconductor", Dict({Floats("spectrum", "conductor.eta", {300, 0.2f, 800, 0.2f}),
+                                    Floats("spectrum", "conductor.k", {300, 3, 800, 3})}));
+    EXPECT_EQ(f.diag.WarningCount(), 2);
+}
+
 TEST(Materials, ConductorReflectance) {
     Fixture f;
     Material m = f.Make("conductor", Dict({Rgb("reflectance", 0.64f, 0.64f, 0.64f)}));
