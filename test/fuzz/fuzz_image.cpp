@@ -1,11 +1,12 @@
 // libFuzzer target: the image files textures, environment maps and masks are read from, through
 // kiln's own readers: TGA and PFM (kiln's parsers), PNG and JPEG (libpng and libjpeg behind
 // kiln's code). The first byte picks the extension the rest is written under (tga, pfm, png,
-// jpg); the file is read as a texture is, by Image::Read with a 64 MB budget, then as an sRGB
-// and a linear 8-bit image would be. Every input must end in an image whose samples are finite
-// or in an exception naming the file, never a crash, a hang or an allocation a header merely
-// claims. Inputs no kiln reader takes (a PNG with alpha, which OpenImageIO reads) are skipped:
-// OpenImageIO is not instrumented.
+// jpg; kiln tells formats by content, so a PFM named .png is still read as a PFM); the file is
+// read as a texture is, by Image::Read with a 64 MB budget, then as an sRGB and a linear 8-bit
+// image would be. Every input must end in an image (its samples finite, except a PFM's, which
+// stores floats as they are) or in an exception naming the file, never a crash, a hang or an
+// allocation a header merely claims. Inputs no kiln reader takes (a PNG with alpha, which
+// OpenImageIO reads) are skipped: OpenImageIO is not instrumented.
 #include <unistd.h>
 
 #include <cmath>
@@ -31,12 +32,23 @@ void Check(bool ok) {
     if (!ok) __builtin_trap();
 }
 
-// Whether one of kiln's own readers takes the file (Image::Read would then use it).
+// Whether one of kiln's own readers takes the file (Image::Read would then use it, trying them
+// in this order: formats are told by content, not by the extension).
 bool KilnReads(const std::string& file) {
     try {
         return OpenPng(file) || OpenPfm(file) || OpenTga(file) || OpenJpeg(file);
     } catch (const std::exception&) {
         return true;  // a reader took it and found it damaged: Image::Read must say so too
+    }
+}
+
+// Whether Image::Read reads the file as a PFM (the only format here that stores floats as
+// they are).
+bool ReadsAsPfm(const std::string& file) {
+    try {
+        return !OpenPng(file) && OpenPfm(file);
+    } catch (const std::exception&) {
+        return false;
     }
 }
 
@@ -57,6 +69,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         std::remove(file.c_str());
         return 0;
     }
+    const bool pfm = ReadsAsPfm(file);
     for (std::optional<ColorEncoding> encoding :
          {std::optional<ColorEncoding>(), std::optional<ColorEncoding>(ColorEncoding::Linear())}) {
         try {
@@ -71,7 +84,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                         // (area and environment lights refuse such images; reflectance,
                         // roughness and temperature textures of all-NaN or all-infinite PFMs
                         // rendered finite pixels, the infinite ones as pbrt-v4 renders them)
-                        Check(std::isfinite(v) || extension == "pfm");
+                        Check(std::isfinite(v) || pfm);
                     }
         } catch (const std::runtime_error&) {
         }
